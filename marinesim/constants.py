@@ -1,0 +1,7 @@
+"""Physical constants (SI). Files that state their own g and rho override these for that file."""
+
+G = 9.80665
+"""Standard gravity, m/s^2 (CONVENTIONS.md)."""
+
+RHO_SEAWATER = 1025.0
+"""Sea-water density, kg/m^3."""

@@ -1,0 +1,337 @@
+"""The ocean: seeded wave components on FFT cascades, fields per frame, point sampling.
+
+Every grid cell ``q`` of every tile is one Airy component (docs/CONVENTIONS.md)
+``eta = Re{a exp(i(w t - q.x))}``, travelling towards ``q``, with ``w = w(|q|)`` from the
+dispersion relation. Its complex amplitude is ``a = sqrt(E) xi``: ``E`` the cell's variance
+(:func:`~marinesim.sea.cascades.cell_variances`), ``xi`` a seeded complex Gaussian with
+``<|xi|^2> = 2`` (or ``sqrt(2) exp(i phi)`` for deterministic amplitudes with random phases).
+
+The field of a tile is ``f(x) = sum_q F[q] exp(+i q.x)``, one inverse FFT, with the Hermitian
+spectrum ``C[q] = (a[-q] e^{iwt} + conj(a[q]) e^{-iwt}) / 2`` for the height and
+
+- horizontal (choppy) displacement ``D = i lambda (q/|q|) C`` (Gerstner: crests sharpen),
+- slopes ``i q C``,
+- displacement derivatives ``dDx/dx = -lambda qx^2/|q| C`` (and ``yy``, ``xy``) giving the
+  Jacobian ``J = (1 + dDx/dx)(1 + dDy/dy) - (dDx/dy)^2`` (J < ~0.3: the surface folds, foam),
+
+the eight real fields packed two per complex FFT (``F + iG`` is the spectrum of ``f + ig``).
+Only the cells of each tile's band are touched per frame.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from marinesim.errors import ParameterError, require_at_least, require_finite, require_positive
+from marinesim.sea.cascades import Tile, cell_variances, choose_tiles, regular_tile
+from marinesim.sea.dispersion import omega_from_k
+from marinesim.sea.fft import InverseFFT2
+from marinesim.sea.seastate import SeaState
+
+FIELD_PAIRS = (("height", "displacement_xy"), ("displacement_x", "displacement_y"),
+               ("slope_x", "slope_y"), ("displacement_xx", "displacement_yy"))
+"""The real fields packed as (real, imaginary) parts of the four transforms per tile."""
+
+
+@dataclass(frozen=True)
+class TileFields:
+    """The fields of one tile at one time, each ``[iy, ix]`` float32 on the tile's grid.
+
+    Views into the ocean's buffers: the next :meth:`Ocean.fields` call overwrites them.
+    """
+
+    tile: Tile
+    height: np.ndarray          # m
+    displacement_x: np.ndarray  # m, horizontal (choppy) displacement, east
+    displacement_y: np.ndarray  # m, north
+    slope_x: np.ndarray         # d eta / dx
+    slope_y: np.ndarray         # d eta / dy
+    jacobian: np.ndarray        # of the horizontal map x -> x + D
+
+
+@dataclass(frozen=True)
+class Components:
+    """Wave components ``eta = Re sum a exp(i(w t - kx x - ky y))`` (rad/s, rad/m, m)."""
+
+    omega: np.ndarray
+    kx: np.ndarray
+    ky: np.ndarray
+    amplitude: np.ndarray  # complex, m
+    tile: np.ndarray       # index of the tile each component lives on
+
+    @property
+    def variance(self) -> float:
+        """Expected elevation variance ``sum |a|^2 / 2`` (m^2)."""
+        return float(np.sum(np.abs(self.amplitude) ** 2) / 2.0)
+
+    def __len__(self) -> int:
+        return self.omega.size
+
+
+@dataclass(frozen=True)
+class PointSample:
+    """Elevation (m), choppy displacement (m) and slopes at points, by direct summation."""
+
+    elevation: np.ndarray
+    displacement_x: np.ndarray
+    displacement_y: np.ndarray
+    slope_x: np.ndarray
+    slope_y: np.ndarray
+
+
+@dataclass(frozen=True)
+class _Ramp:
+    start: float
+    duration: float
+    target: np.ndarray  # amplitudes of every cell of every tile after the ramp
+
+
+class Ocean:
+    """Seeded random sea on FFT cascades; fields and point samples are pure functions of t.
+
+    ``tiles`` default to :func:`choose_tiles` (``tile_count`` cascades of ``resolution``^2).
+    ``random_amplitudes=False`` gives deterministic amplitudes ``sqrt(2 E)`` with random
+    phases. ``choppiness`` scales the horizontal displacement (1 = Gerstner).
+    """
+
+    def __init__(
+        self,
+        sea: SeaState,
+        *,
+        tiles: list[Tile] | None = None,
+        tile_count: int = 4,
+        resolution: int = 256,
+        seed: int = 0,
+        random_amplitudes: bool = True,
+        choppiness: float = 1.0,
+        fft_backend: str = "auto",
+        threads: int | None = None,
+    ) -> None:
+        if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
+            raise ParameterError(f"seed must be a non-negative integer, got {seed!r}")
+        self.sea = sea
+        self.seed = int(seed)
+        self.tiles = list(tiles) if tiles is not None else choose_tiles(sea, tile_count, resolution)
+        sizes = {t.resolution for t in self.tiles}
+        if len(sizes) != 1:
+            raise ParameterError(f"all tiles must share one resolution, got {sorted(sizes)}")
+        self.resolution = sizes.pop()
+        n = self.resolution
+        self._noise = np.stack([self._tile_noise(i, random_amplitudes) for i in range(len(self.tiles))])
+        self._amplitude0 = self._amplitudes_for(sea)
+        self._ramps: list[_Ramp] = []
+        self._fft = InverseFFT2((len(self.tiles), 4, n, n), fft_backend, threads)
+        self._jacobian = np.empty((len(self.tiles), n, n), dtype=np.float32)
+        self._scratch = np.empty_like(self._jacobian)
+        self._choppiness = require_finite("choppiness", choppiness)
+        self._index_cells()
+
+    # -- construction ---------------------------------------------------------------------
+
+    def _tile_noise(self, index: int, random_amplitudes: bool) -> np.ndarray:
+        """Seeded ``xi`` per cell: depends on (seed, tile index, N) only, not on the sea state."""
+        n = self.resolution
+        rng = np.random.default_rng([self.seed, index])
+        if not random_amplitudes:
+            return math.sqrt(2.0) * np.exp(1j * rng.uniform(0.0, 2.0 * math.pi, (n, n)))
+        return rng.standard_normal((n, n)) + 1j * rng.standard_normal((n, n))
+
+    def _amplitudes_for(self, sea: SeaState) -> np.ndarray:
+        """Complex amplitude of every cell, shape (tiles, N, N): ``sqrt(E) xi``, regular waves exact."""
+        if sea.depth != self.sea.depth:
+            raise ParameterError("the depth cannot change while the ocean runs")
+        variance = np.stack([cell_variances(tile, sea) for tile in self.tiles])
+        amplitude = np.sqrt(variance) * self._noise
+        for wave in sea.regular_waves:
+            tile = regular_tile(wave, sea, self.resolution)
+            if tile not in self.tiles:
+                raise ParameterError(
+                    f"the ocean's tiles cannot carry a regular wave of {wave.period:g} s in this "
+                    "direction (build the ocean with it, ramps change heights only)"
+                )
+            ix, iy = tile.wave_index
+            amplitude[self.tiles.index(tile), iy % self.resolution, ix % self.resolution] += (
+                0.5 * wave.height * np.exp(1j * wave.phase))
+        return amplitude
+
+    def _index_cells(self) -> None:
+        """Flat per-frame arrays over the cells that carry a wave in any state.
+
+        The cells are ordered as ``h`` representatives followed by their mirrors ``-q`` in the
+        same order, so ``C`` is computed for half of them and conjugated for the rest.
+        """
+        n = self.resolution
+        states = [self._amplitude0] + [r.target for r in self._ramps]
+        used = np.any(np.stack(states) != 0, axis=0)
+        used |= _mirror(used)
+        tile, iy, ix = np.nonzero(used)
+        mirror_iy, mirror_ix = (-iy) % n, (-ix) % n
+        first = (iy * n + ix) < (mirror_iy * n + mirror_ix)  # DC and Nyquist cells are never used
+        tile = np.concatenate([tile[first], tile[first]])
+        iy = np.concatenate([iy[first], mirror_iy[first]])
+        ix = np.concatenate([ix[first], mirror_ix[first]])
+        self._cell = (tile, iy, ix)
+        self._half = int(np.count_nonzero(first))
+        qx = np.empty(tile.size)
+        qy = np.empty(tile.size)
+        for t, spec_tile in enumerate(self.tiles):
+            on = tile == t
+            gx, gy = spec_tile.wavenumbers()
+            qx[on], qy[on] = gx[iy[on], ix[on]], gy[iy[on], ix[on]]
+        self._qx, self._qy = qx, qy
+        self._omega = omega_from_k(np.hypot(qx, qy), self.sea.depth, self.sea.g)
+        self._scatter = (tile * 4 * n * n + iy * n + ix)[None, :] + (np.arange(4) * n * n)[:, None]
+        self._set_multipliers()
+        self._fixed_amplitudes = None if self._ramps else self._half_amplitudes(self._amplitude0[self._cell])
+        self._phase = np.empty(self._half)
+        self._rotation = np.empty(self._half, dtype=np.complex64)
+        self._spectrum = np.empty(tile.size, dtype=np.complex64)
+        self._packed = np.empty((4, tile.size), dtype=np.complex64)
+
+    def _set_multipliers(self) -> None:
+        """Complex multipliers turning C into the four packed spectra (see FIELD_PAIRS)."""
+        qx, qy, lam = self._qx, self._qy, self._choppiness
+        q = np.hypot(qx, qy)
+        q = np.where(q > 0, q, 1.0)
+        multipliers = np.stack([
+            1.0 - 1j * lam * qx * qy / q,
+            1j * lam * qx / q - lam * qy / q,
+            1j * qx - qy,
+            -lam * qx**2 / q - 1j * lam * qy**2 / q,
+        ])
+        self._multipliers = multipliers.astype(np.complex64)
+
+    def _half_amplitudes(self, amplitude: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``(a[-q] / 2, conj(a[q]) / 2)`` for the representative cells: the two halves of C[q]."""
+        h = self._half
+        plus = 0.5 * amplitude[h:]
+        minus = 0.5 * np.conj(amplitude[:h])
+        return plus.astype(np.complex64), minus.astype(np.complex64)
+
+    # -- state over time ------------------------------------------------------------------
+
+    @property
+    def choppiness(self) -> float:
+        return self._choppiness
+
+    @choppiness.setter
+    def choppiness(self, value: float) -> None:
+        self._choppiness = require_finite("choppiness", value)
+        self._set_multipliers()
+
+    def ramp_to(self, sea: SeaState, start: float, duration: float) -> None:
+        """Change to ``sea`` smoothly over ``[start, start + duration]`` s (smoothstep in time).
+
+        The tiles and the seeded noise stay, so the surface changes shape without a jump: each
+        cell's amplitude moves from its old to its new value. Ramps must not overlap.
+        """
+        start = require_finite("ramp start", start)
+        duration = require_positive("ramp duration", duration)
+        if self._ramps and start < self._ramps[-1].start + self._ramps[-1].duration:
+            raise ParameterError("a sea-state ramp must start after the previous one has ended")
+        self._ramps.append(_Ramp(start, duration, self._amplitudes_for(sea)))
+        self._index_cells()
+
+    def amplitudes(self, t: float) -> np.ndarray:
+        """Complex amplitude of every cell at time ``t`` (s), shape (tiles, N, N)."""
+        amplitude = self._amplitude0
+        for ramp in self._ramps:
+            if t <= ramp.start:
+                break
+            s = min((t - ramp.start) / ramp.duration, 1.0)
+            amplitude = amplitude + (3.0 * s * s - 2.0 * s**3) * (ramp.target - amplitude)
+        return amplitude
+
+    # -- fields per frame -----------------------------------------------------------------
+
+    def fields(self, t: float) -> list[TileFields]:
+        """All fields of every tile at time ``t`` (s): one batched FFT of 4 transforms per tile."""
+        if self._fixed_amplitudes is None:
+            plus, minus = self._half_amplitudes(self.amplitudes(t)[self._cell])
+        else:
+            plus, minus = self._fixed_amplitudes
+        phase = np.multiply(self._omega[: self._half], t, out=self._phase)
+        phase -= np.floor(phase * (0.5 / math.pi)) * (2.0 * math.pi)  # keeps float32 trig exact
+        phase32 = phase.astype(np.float32)
+        rotation = self._rotation
+        np.cos(phase32, out=rotation.real)
+        np.sin(phase32, out=rotation.imag)
+        h, spectrum = self._half, self._spectrum
+        np.multiply(plus, rotation, out=spectrum[:h])
+        np.conjugate(rotation, out=rotation)
+        spectrum[:h] += minus * rotation
+        np.conjugate(spectrum[:h], out=spectrum[h:])  # C[-q] = conj(C[q])
+        np.multiply(self._multipliers, spectrum, out=self._packed)
+        self._fft.input.reshape(-1)[self._scatter] = self._packed
+        out = self._fft()
+        dxx, dyy, dxy = out[:, 3].real, out[:, 3].imag, out[:, 0].imag
+        jac, scratch = self._jacobian, self._scratch
+        np.add(dxx, 1.0, out=jac)
+        np.add(dyy, 1.0, out=scratch)
+        jac *= scratch
+        np.multiply(dxy, dxy, out=scratch)
+        jac -= scratch
+        return [
+            TileFields(tile, out[i, 0].real, out[i, 1].real, out[i, 1].imag,
+                       out[i, 2].real, out[i, 2].imag, jac[i])
+            for i, tile in enumerate(self.tiles)
+        ]
+
+    # -- components and direct summation --------------------------------------------------
+
+    def components(self, t: float = 0.0, variance_fraction: float = 1.0) -> Components:
+        """The wave components at time ``t`` (amplitudes change only during ramps).
+
+        ``variance_fraction < 1`` keeps only the largest components that together carry at
+        least that fraction of the variance (the vessel response needs far fewer than the FFT).
+        """
+        fraction = require_at_least("variance fraction", variance_fraction, 0.0)
+        if not 0.0 < fraction <= 1.0:
+            raise ParameterError(f"variance fraction must be in (0, 1], got {variance_fraction!r}")
+        amplitude = self.amplitudes(t)[self._cell]
+        power = np.abs(amplitude) ** 2
+        keep = np.flatnonzero(power > 0)
+        if fraction < 1.0:
+            order = keep[np.argsort(power[keep])[::-1]]
+            cumulative = np.cumsum(power[order])
+            count = int(np.searchsorted(cumulative, fraction * cumulative[-1])) + 1
+            keep = np.sort(order[:count])
+        return Components(self._omega[keep], self._qx[keep], self._qy[keep], amplitude[keep],
+                          self._cell[0][keep])
+
+    def sample(self, x: np.ndarray, y: np.ndarray, t: float, tiles: list[int] | None = None,
+               chunk: int = 2048) -> PointSample:
+        """Elevation, displacement and slopes at points ``(x, y)`` (m, E frame) by direct summation.
+
+        ``tiles`` restricts the sum to those tiles' components (to compare with one FFT field).
+        """
+        x = np.asarray(x, dtype=float).ravel()
+        y = np.asarray(y, dtype=float).ravel()
+        c = self.components(t)
+        if tiles is not None:
+            on = np.isin(c.tile, tiles)
+            c = Components(c.omega[on], c.kx[on], c.ky[on], c.amplitude[on], c.tile[on])
+        k = np.hypot(c.kx, c.ky)
+        lam = self._choppiness
+        fields = np.zeros((5, x.size))
+        weights = np.stack([np.ones_like(k), -1j * lam * c.kx / k, -1j * lam * c.ky / k,
+                            -1j * c.kx, -1j * c.ky]) * (c.amplitude * np.exp(1j * c.omega * t))
+        for lo in range(0, x.size, chunk):
+            hi = min(lo + chunk, x.size)
+            waves = np.exp(-1j * (np.outer(x[lo:hi], c.kx) + np.outer(y[lo:hi], c.ky)))
+            fields[:, lo:hi] = (waves @ weights.T).real.T
+        return PointSample(*fields)
+
+
+def _mirror(used: np.ndarray) -> np.ndarray:
+    """``used[t, -iy, -ix]`` (FFT index order)."""
+    return np.roll(used[:, ::-1, ::-1], 1, axis=(1, 2))
+
+
+def _positions(used: np.ndarray, cells: tuple[np.ndarray, ...]) -> np.ndarray:
+    """Position of each of ``cells`` in the C-order list ``np.nonzero(used)``."""
+    rank = np.cumsum(used.ravel()) - 1
+    return rank[np.ravel_multi_index(cells, used.shape)]
