@@ -7,7 +7,7 @@ ends at half the tile's Nyquist wave number (``|n| < N/4``): the fields are over
 which keeps bilinear texture lookups and finite differences of them accurate.
 
 Tile sizes follow from the sea state: the largest tile puts the frequency below which only
-0.1 % of m0 lies at ``|n| = 4``; each next tile is smaller by ``phi^3`` (an irrational ratio,
+0.1 % of m0 lies at ``|n| = 8`` (the peak near |n| = 19); each next tile is smaller by ``phi^3`` (an irrational ratio,
 so the tiles never share a period). A regular wave gets a tile of its own whose size makes its
 wave vector fall exactly on the grid.
 """
@@ -27,7 +27,7 @@ from marinesim.sea.spreading import LongCrested
 TILE_RATIO = ((1.0 + math.sqrt(5.0)) / 2.0) ** 3
 """Size ratio of successive tiles: phi^3 = 4.236..."""
 
-LOWEST_INDEX = 4
+LOWEST_INDEX = 8
 """Grid index |n| of the 0.1 % lower frequency quantile in the largest tile."""
 
 _GAUSS_X = np.array([-math.sqrt(0.6), 0.0, math.sqrt(0.6)])

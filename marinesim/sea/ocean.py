@@ -122,6 +122,10 @@ class Ocean:
         n = self.resolution
         self._noise = np.stack([self._tile_noise(i, random_amplitudes) for i in range(len(self.tiles))])
         self._amplitude0 = self._amplitudes_for(sea)
+        self.represented_m0 = self._represented_m0
+        """Expected variance (m^2) the tiles carry of the initial sea: sum of cell variances."""
+        self.m0_fraction = self.represented_m0 / sea.moment(0)
+        """Fraction of the sea state's m0 that the tiles carry."""
         self._ramps: list[_Ramp] = []
         self._fft = InverseFFT2((len(self.tiles), 4, n, n), fft_backend, threads)
         self._jacobian = np.empty((len(self.tiles), n, n), dtype=np.float32)
@@ -145,6 +149,7 @@ class Ocean:
             raise ParameterError("the depth cannot change while the ocean runs")
         variance = np.stack([cell_variances(tile, sea) for tile in self.tiles])
         amplitude = np.sqrt(variance) * self._noise
+        self._represented_m0 = float(variance.sum()) + sum(w.variance for w in sea.regular_waves)
         for wave in sea.regular_waves:
             tile = regular_tile(wave, sea, self.resolution)
             if tile not in self.tiles:

@@ -1,0 +1,3 @@
+from marinesim.cli import main
+
+raise SystemExit(main())
