@@ -1,0 +1,27 @@
+"""Shared sea states for the tests (real spectra, real FFTs; nothing mocked)."""
+
+import math
+
+import pytest
+
+from marinesim.angles import wave_beta_from_compass
+from marinesim.sea import Cos2s, Jonswap, SeaState, WaveSystem
+
+
+@pytest.fixture(scope="session")
+def north_sea() -> SeaState:
+    """A North Sea design-ish state: Hs 4 m, Tp 10 s, gamma 3.3, from 030 deg, cos-2s s = 15."""
+    return SeaState((WaveSystem(Jonswap(4.0, 10.0, 3.3), wave_beta_from_compass(30.0), Cos2s(15.0)),))
+
+
+@pytest.fixture(scope="session")
+def finite_depth_sea() -> SeaState:
+    return SeaState((WaveSystem(Jonswap(3.0, 9.0, 3.3), 0.7, Cos2s(10.0)),), depth=40.0)
+
+
+def close_angle_deg(a: float, b: float) -> float:
+    """Smallest difference of two compass angles (deg)."""
+    return abs((a - b + 180.0) % 360.0 - 180.0)
+
+
+__all__ = ["close_angle_deg", "math"]

@@ -1,0 +1,306 @@
+"""The ocean on FFT cascades: synthesis, statistics, kinematics, reproducibility (issue 2)."""
+
+import math
+
+import numpy as np
+import pytest
+from scipy import integrate, optimize
+
+from marinesim.angles import wave_beta_from_compass
+from marinesim.constants import G
+from marinesim.errors import ParameterError
+from marinesim.sea import (Cos2s, Jonswap, LongCrested, Ocean, PiersonMoskowitz, RegularWave, SeaState,
+                           Tma, WaveSystem, choose_tiles)
+from marinesim.sea.cascades import TILE_RATIO
+from marinesim.sea.dispersion import omega_from_k
+from marinesim.sea.summary import surface_summary
+from tests.conftest import close_angle_deg
+
+FIELD_NAMES = ("height", "displacement_x", "displacement_y", "slope_x", "slope_y")
+SAMPLE_NAMES = ("elevation", "displacement_x", "displacement_y", "slope_x", "slope_y")
+
+
+def band_m0(ocean: Ocean) -> float:
+    """Exact m0 of the represented band: integral of S(w) between the outer band edges."""
+    sea = ocean.sea
+    lo = float(omega_from_k(ocean.tiles[0].k_lo, sea.depth))
+    hi = float(omega_from_k(ocean.tiles[-1].k_hi, sea.depth))
+    wp = 2 * math.pi / sea.tp
+    value, _ = integrate.quad(lambda w: sea.density(np.array([w]))[0], lo, hi, points=[wp], limit=400)
+    return value
+
+
+def surface_variance(ocean: Ocean, t: float) -> float:
+    """Variance of the summed surface: the tiles carry disjoint wave numbers, so variances add."""
+    return sum(float(np.mean(f.height.astype(float) ** 2)) for f in ocean.fields(t))
+
+
+# -- 2. FFT synthesis equals direct summation ------------------------------------------------
+
+@pytest.mark.parametrize("t", [0.0, 3.7, 5000.25])  # a late time checks the phase reduction
+def test_fft_fields_equal_direct_summation(north_sea, t):
+    ocean = Ocean(north_sea, seed=3, choppiness=1.3)
+    fields = ocean.fields(t)
+    for i, tile_fields in enumerate(fields):
+        x, y = tile_fields.tile.coordinates()
+        pick = (slice(3, None, 23), slice(5, None, 29))
+        direct = ocean.sample(x[pick], y[pick], t, tiles=[i])
+        for name, sample_name in zip(FIELD_NAMES, SAMPLE_NAMES):
+            fft = getattr(tile_fields, name)[pick].ravel()
+            ref = getattr(direct, sample_name)
+            scale = np.sqrt(np.mean(ref**2))
+            assert np.max(np.abs(fft - ref)) < 1e-5 * scale * 10, (i, name)  # float32 FFT vs float64 sum
+            assert np.sqrt(np.mean((fft - ref) ** 2)) < 1e-5 * scale, (i, name)
+
+
+def test_jacobian_is_that_of_the_displacement_map(north_sea):
+    # an independent spectral derivative of the displacement fields gives the same Jacobian
+    ocean = Ocean(north_sea, seed=2, choppiness=1.0)
+    for f in ocean.fields(12.0)[:2]:
+        qx, qy = f.tile.wavenumbers()
+        dx_hat, dy_hat = np.fft.fft2(f.displacement_x), np.fft.fft2(f.displacement_y)
+        dxx = np.fft.ifft2(1j * qx * dx_hat).real
+        dyy = np.fft.ifft2(1j * qy * dy_hat).real
+        dxy = np.fft.ifft2(1j * qy * dx_hat).real
+        dyx = np.fft.ifft2(1j * qx * dy_hat).real
+        np.testing.assert_allclose(dxy, dyx, atol=1e-5)  # the map is a gradient: dDx/dy = dDy/dx
+        expected = (1 + dxx) * (1 + dyy) - dxy * dyx
+        assert np.max(np.abs(f.jacobian - expected)) < 1e-4
+
+
+def test_numpy_fallback_equals_pyfftw(north_sea):
+    a = Ocean(north_sea, seed=4, resolution=64, fft_backend="pyfftw").fields(9.0)
+    b = Ocean(north_sea, seed=4, resolution=64, fft_backend="numpy").fields(9.0)
+    for fa, fb in zip(a, b):
+        np.testing.assert_allclose(fa.height, fb.height, atol=1e-6 * np.abs(fb.height).max())
+        np.testing.assert_allclose(fa.jacobian, fb.jacobian, atol=1e-5)
+
+
+# -- 3. variance -----------------------------------------------------------------------------
+
+def test_cell_variances_integrate_the_spectrum(north_sea, finite_depth_sea):
+    # the tiles' expected variance is the band's m0 (a missing dw/dk Jacobian would be off x2+)
+    for sea in (north_sea, finite_depth_sea):
+        ocean = Ocean(sea, seed=0)
+        assert ocean.represented_m0 == pytest.approx(band_m0(ocean), rel=0.002)
+
+
+def test_long_crested_ray_carries_the_band(north_sea):
+    sea = SeaState((WaveSystem(PiersonMoskowitz(3.0, 8.0), 0.4),))
+    ocean = Ocean(sea, seed=0)
+    assert ocean.represented_m0 == pytest.approx(band_m0(ocean), rel=0.01)
+
+
+def test_surface_variance_over_seeds_and_times(north_sea):
+    measured, expected = [], []
+    for seed in range(16):
+        ocean = Ocean(north_sea, seed=seed)
+        per_time = [surface_variance(ocean, t) for t in (0.0, 11.3, 47.9)]
+        measured.extend(per_time)
+        # each realisation: spatial variance = sum |a|^2 / 2 (no energy lost or doubled in packing)
+        assert np.mean(per_time) == pytest.approx(ocean.components().variance, rel=0.01)
+        expected.append(band_m0(ocean))
+    # the ensemble: variance = m0 of the represented band (Hs within 1.5%)
+    assert np.mean(measured) == pytest.approx(np.mean(expected), rel=0.03)
+
+
+def test_deterministic_amplitudes_carry_exact_variance(north_sea):
+    ocean = Ocean(north_sea, seed=5, random_amplitudes=False)
+    assert ocean.components().variance == pytest.approx(ocean.represented_m0, rel=1e-9)
+    assert surface_variance(ocean, 3.0) == pytest.approx(ocean.represented_m0, rel=0.02)
+
+
+@pytest.mark.parametrize("sea", [
+    SeaState((WaveSystem(Jonswap(4.0, 10.0, 3.3), 0.3, Cos2s(15.0)),)),
+    SeaState((WaveSystem(PiersonMoskowitz(1.0, 4.0), 2.0),)),
+    SeaState((WaveSystem(Tma(3.0, 9.0, 3.3, depth=25.0), 1.0, Cos2s(5.0)),), depth=25.0),
+    SeaState((WaveSystem(Jonswap(2.5, 7.0, 3.3), 0.0, Cos2s(10.0)),
+              WaveSystem(Jonswap(1.5, 15.0, 5.0), 2.0, Cos2s(60.0)))),
+], ids=["jonswap", "pm-long-crested", "tma", "wind-sea+swell"])
+@pytest.mark.parametrize("count", [3, 4])
+def test_tiles_carry_99_percent_of_m0(sea, count):
+    ocean = Ocean(sea, tile_count=count, seed=0)
+    assert ocean.m0_fraction >= 0.99
+    assert ocean.m0_fraction <= 1.001
+
+
+def test_tiles_split_wavenumbers_once(north_sea):
+    tiles = choose_tiles(north_sea, 4, 256)
+    for a, b in zip(tiles, tiles[1:]):
+        assert a.k_hi == b.k_lo  # touching bands: no gap, no double counting
+        assert a.size / b.size == pytest.approx(TILE_RATIO)
+    assert all(t.k_hi <= (t.resolution // 4) * t.dk * (1 + 1e-12) for t in tiles)
+
+
+# -- 4. phase speed ----------------------------------------------------------------------------
+
+def phase_speed_measured(depth: float, period: float) -> tuple[float, float]:
+    beta = 0.0  # towards east: the wave vector lies on the x axis of its tile
+    sea = SeaState((RegularWave(1.0, period, beta),), depth=depth)
+    ocean = Ocean(sea, resolution=64)
+    tile = ocean.tiles[0]
+    k = math.hypot(*tile.wave_index) * tile.dk
+    x = tile.coordinates()[0][0]
+    dt = 0.2 * period
+    phases = []
+    for t in (10.0, 10.0 + dt):
+        row = ocean.fields(t)[0].height[0].astype(float)
+        phases.append(np.angle(np.sum(row * np.exp(1j * k * x))))
+    # sum eta e^{ikx} has phase +w t for a wave travelling +x: the crest moved +x by this much
+    # (a wave running the wrong way would read as 2 pi - w dt, four times the speed)
+    shift = (phases[1] - phases[0]) % (2 * math.pi) / k
+    return shift / dt, k
+
+
+@pytest.mark.parametrize("depth", [math.inf, 12.0, 4.0])
+def test_single_component_travels_at_phase_speed(depth):
+    period = 8.0
+    speed, k = phase_speed_measured(depth, period)
+    omega = 2 * math.pi / period
+    if math.isinf(depth):
+        expected = G / omega  # deep water c = g / w = 12.49 m/s at 8 s
+    else:
+        kk = optimize.brentq(lambda kk: G * kk * math.tanh(kk * depth) - omega**2, 1e-6, 10.0)
+        expected = omega / kk
+        assert expected < 0.9 * G / omega  # the test would notice deep-water dispersion
+    assert speed == pytest.approx(expected, rel=1e-3)
+    assert omega / k == pytest.approx(expected, rel=1e-9)  # the period survives placing it on a tile
+
+
+def test_regular_wave_in_any_direction_is_exact():
+    beta = wave_beta_from_compass(37.0)
+    sea = SeaState((RegularWave(2.0, 9.0, beta),))
+    ocean = Ocean(sea, resolution=128)
+    c = ocean.components()
+    assert len(c) == 1
+    assert math.degrees(abs(math.atan2(c.ky[0], c.kx[0]) - beta)) < 0.2
+    assert c.omega[0] == pytest.approx(2 * math.pi / 9.0, rel=1e-12)
+    assert abs(c.amplitude[0]) == pytest.approx(1.0)
+    # the crest passes the origin at t = 0 (phase 0): eta(0, 0, 0) = H / 2
+    assert ocean.sample(np.array([0.0]), np.array([0.0]), 0.0).elevation[0] == pytest.approx(1.0)
+
+
+# -- 5. direction ------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("from_deg, spreading", [(30.0, Cos2s(15.0)), (250.0, LongCrested()), (135.0, Cos2s(4.0))])
+def test_mean_direction_from_slopes(from_deg, spreading):
+    sea = SeaState((WaveSystem(Jonswap(3.0, 9.0, 3.3), wave_beta_from_compass(from_deg), spreading),))
+    measured = surface_summary(Ocean(sea, seed=7), t=20.0)["mean_from_deg_surface"]
+    assert close_angle_deg(measured, from_deg) < 3.0  # travelling the wrong way would be 180 off
+
+
+# -- 6. choppy waves are trochoids ---------------------------------------------------------------
+
+def test_choppy_long_crested_component_is_a_trochoid():
+    height, period = 4.0, 6.0
+    sea = SeaState((RegularWave(height, period, 0.0),))
+    ocean = Ocean(sea, resolution=256, choppiness=1.0)
+    tile = ocean.tiles[0]
+    k = math.hypot(*tile.wave_index) * tile.dk
+    f = ocean.fields(1.3)[0]
+    x = tile.coordinates()[0][0] + f.displacement_x[0]
+    z = f.height[0]
+    a = height / 2
+    # Gerstner: the horizontal motion is a sin(theta) where eta = a cos(theta): points on
+    # the surface are x0 + a sin(theta), crests are sharper than troughs
+    order = np.argsort(x)
+    x_sorted, z_sorted = x[order], z[order]
+    fine = np.linspace(x_sorted[0], x_sorted[0] + tile.size * 0.999, 200_000)
+    above = np.mean(np.interp(fine, x_sorted, z_sorted) > 0)
+    assert above == pytest.approx(0.5 - k * a / math.pi, abs=0.002)  # 0.5 + ... if the sign were wrong
+    assert above < 0.5 - 0.05
+    # the displacement is in phase quadrature, |D| = a
+    assert np.max(np.abs(f.displacement_x)) == pytest.approx(a, rel=1e-3)
+    assert np.max(np.abs(f.displacement_y)) < 1e-4
+
+
+# -- 7. reproducibility ----------------------------------------------------------------------------
+
+def test_same_seed_bit_identical_different_seed_differs(north_sea):
+    a = Ocean(north_sea, seed=11, resolution=64)
+    b = Ocean(north_sea, seed=11, resolution=64)
+    a.fields(30.0)  # calling at another time first must not matter: fields are a function of t
+    fa = [f.height.copy() for f in a.fields(7.5)]
+    fb = [f.height.copy() for f in b.fields(7.5)]
+    assert all(np.array_equal(x, y) for x, y in zip(fa, fb))
+    ca, cb = a.components(), b.components()
+    assert np.array_equal(ca.amplitude, cb.amplitude)
+    c = Ocean(north_sea, seed=12, resolution=64)
+    assert not np.allclose(c.fields(7.5)[0].height, fa[0])
+
+
+# -- components -------------------------------------------------------------------------------------
+
+def test_component_list_keeps_a_variance_fraction(north_sea):
+    ocean = Ocean(north_sea, seed=1)
+    full = ocean.components()
+    kept = ocean.components(variance_fraction=0.999)
+    assert kept.variance >= 0.999 * full.variance
+    assert len(kept) < 0.6 * len(full)
+    assert np.all(np.isin(kept.kx + 1j * kept.ky, full.kx + 1j * full.ky))
+    np.testing.assert_allclose(full.omega, omega_from_k(np.hypot(full.kx, full.ky)), rtol=1e-12)
+
+
+# -- ramps ---------------------------------------------------------------------------------------------
+
+def ramp_pair(north_sea):
+    calm = SeaState((WaveSystem(Jonswap(2.0, 10.0, 3.3), north_sea.systems[0].beta, Cos2s(15.0)),))
+    rough = SeaState((WaveSystem(Jonswap(5.0, 10.0, 3.3), north_sea.systems[0].beta + 0.5, Cos2s(15.0)),))
+    return calm, rough
+
+
+def test_ramp_changes_sea_state_without_jumps(north_sea):
+    calm, rough = ramp_pair(north_sea)
+    steady = Ocean(calm, seed=2, resolution=128)
+    ocean = Ocean(calm, seed=2, resolution=128)
+    ocean.ramp_to(rough, start=10.0, duration=20.0)
+    # before the ramp nothing changed
+    np.testing.assert_allclose(ocean.fields(5.0)[0].height, steady.fields(5.0)[0].height, atol=1e-6)
+    # after it, the variance is that of the new sea (Hs 2 -> 5 m)
+    after = Ocean(rough, seed=2, resolution=128)
+    assert ocean.components(40.0).variance == pytest.approx(after.components().variance, rel=1e-9)
+    # no jump anywhere: the change over 1 ms is small at the start, middle and end of the ramp
+    for t in (10.0, 20.0, 30.0):
+        h0 = np.concatenate([f.height.ravel().copy() for f in ocean.fields(t - 1e-3)])
+        h1 = np.concatenate([f.height.ravel() for f in ocean.fields(t + 1e-3)])
+        assert np.max(np.abs(h1 - h0)) < 0.02  # m, with ~2 m/s vertical speeds at most
+
+
+def test_bad_ramps_are_refused(north_sea):
+    calm, rough = ramp_pair(north_sea)
+    ocean = Ocean(calm, seed=2, resolution=64)
+    ocean.ramp_to(rough, start=10.0, duration=20.0)
+    with pytest.raises(ParameterError, match="previous"):
+        ocean.ramp_to(calm, start=20.0, duration=5.0)
+    with pytest.raises(ParameterError, match="depth"):
+        ocean.ramp_to(SeaState(calm.systems, depth=30.0), start=40.0, duration=5.0)
+    with pytest.raises(ParameterError, match="-1"):
+        ocean.ramp_to(calm, start=40.0, duration=-1.0)
+
+
+# -- 8. bad input -------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("kwargs, value", [
+    ({"resolution": 100}, "100"),
+    ({"resolution": 8}, "8"),
+    ({"tile_count": 0}, "0"),
+    ({"seed": -1}, "-1"),
+    ({"choppiness": float("nan")}, "nan"),
+    ({"fft_backend": "cuda"}, "cuda"),
+])
+def test_bad_ocean_parameters(north_sea, kwargs, value):
+    with pytest.raises(ParameterError, match=value):
+        Ocean(north_sea, **kwargs)
+
+
+@pytest.mark.parametrize("make, value", [
+    (lambda: SeaState((), ), "at least one"),
+    (lambda: SeaState((RegularWave(1.0, 8.0, 0.0),), depth=-2.0), "-2.0"),
+    (lambda: SeaState((RegularWave(1.0, 8.0, 0.0),), depth=float("nan")), "nan"),
+    (lambda: RegularWave(-1.0, 8.0, 0.0), "-1.0"),
+    (lambda: RegularWave(1.0, 0.0, 0.0), "0.0"),
+    (lambda: SeaState((WaveSystem(Tma(2.0, 8.0, depth=20.0), 0.0),), depth=30.0), "20"),
+])
+def test_bad_sea_states(make, value):
+    with pytest.raises(ParameterError, match=value):
+        make()
