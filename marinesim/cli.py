@@ -11,15 +11,11 @@ from pathlib import Path
 import numpy as np
 
 from marinesim import __version__
-from marinesim.angles import wave_beta_from_compass
 from marinesim.atomic import atomic_path
-from marinesim.errors import MarinesimError, ParameterError
-from marinesim.sea import (Cos2s, HalfPlaneCos2n, Jonswap, JonswapFetch, LongCrested, Mitsuyasu,
-                           Ocean, PiersonMoskowitz, RegularWave, SeaState, Tma, WaveSystem)
+from marinesim.errors import MarinesimError, ParameterError, require_finite
+from marinesim.sea import Ocean, SeaState
+from marinesim.sea.build import SPECTRUM_TYPES, SPREADING_TYPES, wave_system
 from marinesim.sea.summary import summary
-
-SPECTRA = ("jonswap", "pm", "tma", "regular")
-SPREADINGS = ("cos2s", "mitsuyasu", "cos2n-halfplane", "long-crested")
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -45,8 +41,43 @@ def _parser() -> argparse.ArgumentParser:
     )
     parser.add_argument("--version", action="version", version=f"marinesim {__version__}")
     commands = parser.add_subparsers(dest="command", metavar="COMMAND")
+    _add_run(commands)
     _add_sea(commands)
     return parser
+
+
+DEFAULT_SCENARIO = Path(__file__).resolve().parent.parent / "configs" / "default.toml"
+
+
+def _add_run(commands: argparse._SubParsersAction) -> None:
+    p = commands.add_parser(
+        "run", help="run a scenario (default configs/default.toml)",
+        description="Run a scenario. The interactive viewer is not built yet, so the run is "
+        "headless: it writes a picture of the sea, the wave elevation time series at the origin "
+        "(CSV) and its JSON sidecar, and says where they are.",
+    )
+    p.add_argument("scenario", nargs="?", type=Path, default=DEFAULT_SCENARIO, help="scenario TOML file")
+    p.add_argument("--out", type=Path, help="output folder (default out/<scenario name>)")
+    p.add_argument("--quiet", action="store_true", help="no progress bar")
+    p.set_defaults(handler=_run_scenario)
+
+
+def _run_scenario(args: argparse.Namespace) -> int:
+    from marinesim.scenario import load_scenario
+    from marinesim.scenario.headless import run_headless
+
+    scenario = load_scenario(args.scenario)
+    out_dir = args.out or Path("out") / scenario.name
+    print(f"scenario {scenario.path}: {len(scenario.sea.systems)} wave system(s), Hs {scenario.sea.hs:.2f} m, "
+          f"Tp {scenario.sea.tp:.2f} s, {scenario.run.duration_s:g} s at dt {scenario.run.dt_s:g} s, "
+          f"seed {scenario.run.seed}")
+    print("no interactive viewer in this version: running headless")
+    files = run_headless(scenario, out_dir, progress=not args.quiet)
+    print(f"wrote the sea state picture:        {files['plot']}")
+    print(f"wrote the wave elevation at (0, 0): {files['csv']}")
+    print(f"wrote its metadata:                 {files['sidecar']}")
+    print(f"wrote a plot of it:                 {files['series_plot']}")
+    return 0
 
 
 def _add_sea(commands: argparse._SubParsersAction) -> None:
@@ -57,7 +88,7 @@ def _add_sea(commands: argparse._SubParsersAction) -> None:
         "degrees the waves come FROM.",
     )
     g = p.add_argument_group("wave system")
-    g.add_argument("--spectrum", choices=SPECTRA, default="jonswap", help="spectrum type (default jonswap)")
+    g.add_argument("--spectrum", choices=SPECTRUM_TYPES, default="jonswap", help="spectrum type (default jonswap)")
     g.add_argument("--hs", type=float, default=3.0, help="significant wave height, m (default 3)")
     g.add_argument("--tp", type=float, default=9.0, help="peak period, s (default 9)")
     g.add_argument("--gamma", type=float, help="JONSWAP peak enhancement (default: DNV from Hs, Tp)")
@@ -66,7 +97,7 @@ def _add_sea(commands: argparse._SubParsersAction) -> None:
     g.add_argument("--height", type=float, default=2.0, help="regular wave height, m (default 2)")
     g.add_argument("--period", type=float, default=10.0, help="regular wave period, s (default 10)")
     g.add_argument("--from-deg", type=float, default=0.0, help="compass direction waves come from (default 0)")
-    g.add_argument("--spreading", choices=SPREADINGS,
+    g.add_argument("--spreading", choices=SPREADING_TYPES,
                    help="directional spreading (default cos2s with --spreading-s, else long-crested)")
     g.add_argument("--spreading-s", type=float,
                    help="spreading exponent: s of cos-2s, s at the peak for mitsuyasu, n for cos2n-halfplane")
@@ -92,66 +123,25 @@ def _add_sea(commands: argparse._SubParsersAction) -> None:
     p.set_defaults(handler=_run_sea)
 
 
-def _spreading(kind: str | None, s: float | None, omega_peak: float, u10: float | None,
-               g: float) -> LongCrested | Cos2s | Mitsuyasu | HalfPlaneCos2n:
-    kind = kind or ("cos2s" if s is not None else "long-crested")
-    if kind == "long-crested":
-        return LongCrested()
-    if kind == "mitsuyasu" and s is None and u10 is not None:
-        return Mitsuyasu.from_wind(u10, omega_peak, g)
-    if s is None:
-        raise ParameterError(f"--spreading {kind} needs --spreading-s")
-    if kind == "cos2s":
-        return Cos2s(s)
-    if kind == "mitsuyasu":
-        return Mitsuyasu(s, omega_peak)
-    return HalfPlaneCos2n(s)
-
-
 def sea_from_args(args: argparse.Namespace) -> SeaState:
-    """The sea state the ``sea`` options describe (conversions from compass at this edge)."""
-    depth = args.depth
-    beta = wave_beta_from_compass(args.from_deg)
-    systems: list[WaveSystem | RegularWave] = []
-    if args.spectrum == "regular":
-        systems.append(RegularWave(args.height, args.period, beta))
-    else:
-        if args.u10 is not None:
-            if args.spectrum != "jonswap":
-                raise ParameterError("--u10 gives a JONSWAP spectrum; it cannot be combined with --spectrum "
-                                     f"{args.spectrum}")
-            spectrum = JonswapFetch(args.u10, 1000.0 * _positive("--fetch-km", args.fetch_km))
-        elif args.spectrum == "pm":
-            spectrum = PiersonMoskowitz(args.hs, args.tp)
-        elif args.spectrum == "tma":
-            if math.isinf(depth):
-                raise ParameterError("--spectrum tma needs a finite --depth")
-            spectrum = Tma(args.hs, args.tp, args.gamma, depth=depth)
-        else:
-            spectrum = Jonswap(args.hs, args.tp, args.gamma)
-        spreading = _spreading(args.spreading, args.spreading_s, 2.0 * math.pi / spectrum.tp, args.u10,
-                               spectrum.g if hasattr(spectrum, "g") else 9.80665)
-        systems.append(WaveSystem(spectrum, beta, spreading))
+    """The sea state the ``sea`` options describe."""
+    systems = [wave_system(
+        args.spectrum, from_deg=args.from_deg, hs=args.hs, tp=args.tp, gamma=args.gamma, u10=args.u10,
+        fetch_km=args.fetch_km, height=args.height, period=args.period, spreading=args.spreading,
+        spreading_s=args.spreading_s, depth=args.depth,
+    )]
     if args.swell_hs is not None:
         try:
-            swell = Jonswap(args.swell_hs, args.swell_tp, args.swell_gamma)
-            swell_spreading = Cos2s(args.swell_spreading_s) if args.swell_spreading_s is not None else LongCrested()
+            systems.append(wave_system("jonswap", from_deg=args.swell_from_deg, hs=args.swell_hs,
+                                       tp=args.swell_tp, gamma=args.swell_gamma,
+                                       spreading_s=args.swell_spreading_s))
         except ParameterError as error:
             raise ParameterError(f"swell: {error}") from None
-        systems.append(WaveSystem(swell, wave_beta_from_compass(args.swell_from_deg), swell_spreading))
-    return SeaState(tuple(systems), depth=depth)
-
-
-def _positive(option: str, value: float) -> float:
-    if not value > 0 or not math.isfinite(value):
-        raise ParameterError(f"{option} must be a positive number, got {value!r}")
-    return value
+    return SeaState(tuple(systems), depth=args.depth)
 
 
 def _run_sea(args: argparse.Namespace) -> int:
-    for option in ("from_deg", "swell_from_deg", "time"):
-        if not math.isfinite(getattr(args, option)):
-            raise ParameterError(f"--{option.replace('_', '-')} must be a finite number, got {getattr(args, option)!r}")
+    require_finite("time", args.time)
     sea = sea_from_args(args)
     ocean = Ocean(sea, tile_count=args.tiles, resolution=args.resolution, seed=args.seed,
                   random_amplitudes=not args.deterministic_amplitudes, choppiness=args.choppiness)

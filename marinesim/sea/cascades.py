@@ -89,11 +89,17 @@ def check_resolution(resolution: int) -> int:
     return int(resolution)
 
 
+def check_tile_count(count: int) -> int:
+    """1 to 8 spectral cascades (raises naming the value)."""
+    if isinstance(count, bool) or not isinstance(count, (int, np.integer)) or not 1 <= count <= 8:
+        raise ParameterError(f"number of tiles must be an integer from 1 to 8, got {count!r}")
+    return int(count)
+
+
 def choose_tiles(sea: SeaState, count: int = 4, resolution: int = 256) -> list[Tile]:
     """Tiles for ``sea``: ``count`` spectral cascades (if it has spectra) + one per regular wave."""
     resolution = check_resolution(resolution)
-    if isinstance(count, bool) or not isinstance(count, (int, np.integer)) or not 1 <= count <= 8:
-        raise ParameterError(f"number of tiles must be an integer from 1 to 8, got {count!r}")
+    count = check_tile_count(count)
     tiles: list[Tile] = []
     if sea.spectral_systems:
         k_low = float(sea.wavenumber(sea.omega_quantile(0.001)))

@@ -70,6 +70,16 @@ class Components:
     def __len__(self) -> int:
         return self.omega.size
 
+    def elevation(self, x: float, y: float, times: np.ndarray, chunk: int = 256) -> np.ndarray:
+        """Elevation (m) at the fixed point (x, y) (m, E frame) at each of ``times`` (s)."""
+        times = np.asarray(times, dtype=float)
+        at_point = self.amplitude * np.exp(-1j * (self.kx * x + self.ky * y))
+        out = np.empty(times.size)
+        for lo in range(0, times.size, chunk):
+            hi = min(lo + chunk, times.size)
+            out[lo:hi] = (np.exp(1j * np.outer(times[lo:hi], self.omega)) @ at_point).real
+        return out
+
 
 @dataclass(frozen=True)
 class PointSample:

@@ -65,3 +65,21 @@ def plot_sea(ocean: Ocean, path: Path, t: float = 0.0, extent_m: float | None = 
     fig.tight_layout()
     fig.savefig(path, dpi=100)
     plt.close(fig)
+
+
+def plot_series(times: np.ndarray, values: np.ndarray, label: str, title: str, path: Path) -> None:
+    """Write a PNG of one time series (``label`` names the quantity and its unit)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(12, 3.6))
+    ax.plot(times, values, lw=0.8)
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel(label)
+    ax.set_title(title)
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+    plt.close(fig)

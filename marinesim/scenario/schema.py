@@ -1,0 +1,174 @@
+"""Scenario schema and validation. Unknown keys and bad values are refused with the key's path.
+
+```toml
+[ocean]                      # optional
+depth_m = 80.0               # absent = deep water
+tiles = 4                    # FFT cascades
+resolution = 256             # samples per tile side
+choppiness = 1.0
+
+[[sea]]                      # one or more wave systems
+type = "jonswap"             # jonswap | pm | tma | regular
+hs_m = 3.0                   # jonswap/pm/tma (jonswap also: u10_m_s + fetch_km)
+tp_s = 9.0
+gamma = 3.3                  # optional: DNV default from Hs, Tp
+from_deg = 45.0              # compass, coming from, 0..360
+spreading_s = 10.0           # absent = long-crested
+spreading = "cos2s"          # cos2s | mitsuyasu | cos2n-halfplane | long-crested
+# regular: height_m, period_s, phase_deg
+
+[run]
+duration_s = 600.0
+dt_s = 0.1
+seed = 1
+```
+"""
+
+from __future__ import annotations
+
+import math
+import tomllib
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from marinesim.errors import MarinesimError, ScenarioError, require_finite
+from marinesim.sea.build import wave_system
+from marinesim.sea.cascades import check_resolution, check_tile_count
+from marinesim.sea.seastate import SeaState
+
+SEA_KEYS: dict[str, type] = {
+    "type": str, "hs_m": float, "tp_s": float, "gamma": float, "from_deg": float, "spreading": str,
+    "spreading_s": float, "height_m": float, "period_s": float, "phase_deg": float, "u10_m_s": float,
+    "fetch_km": float,
+}
+OCEAN_KEYS: dict[str, type] = {"depth_m": float, "tiles": int, "resolution": int, "choppiness": float}
+RUN_KEYS: dict[str, type] = {"duration_s": float, "dt_s": float, "seed": int}
+SECTIONS = ("ocean", "sea", "run")
+MAX_DURATION_S = 7 * 24 * 3600.0
+
+
+@dataclass(frozen=True)
+class OceanOptions:
+    tiles: int = 4
+    resolution: int = 256
+    choppiness: float = 1.0
+
+
+@dataclass(frozen=True)
+class RunOptions:
+    duration_s: float = 600.0
+    dt_s: float = 0.1
+    seed: int = 0
+
+
+@dataclass(frozen=True)
+class Scenario:
+    """A validated scenario: the sea state, the ocean's options and the run's."""
+
+    path: Path
+    sea: SeaState
+    ocean: OceanOptions
+    run: RunOptions
+
+    @property
+    def name(self) -> str:
+        return self.path.stem
+
+
+def load_scenario(path: str | Path) -> Scenario:
+    """Read and validate ``path``; raise :class:`ScenarioError` naming the file and the key."""
+    path = Path(path)
+    try:
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
+    except FileNotFoundError:
+        raise ScenarioError(f"{path}: no such scenario file") from None
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as error:
+        raise ScenarioError(f"{path}: not valid TOML: {error}") from None
+    try:
+        return _parse(path, data)
+    except ScenarioError as error:
+        raise ScenarioError(f"{path}: {error}") from None
+
+
+def _parse(path: Path, data: dict[str, Any]) -> Scenario:
+    _known(data, SECTIONS, "")
+    ocean_table = _table(data.get("ocean", {}), "ocean")
+    run_table = _table(data.get("run", {}), "run")
+    ocean = _typed(ocean_table, OCEAN_KEYS, "ocean")
+    run = _typed(run_table, RUN_KEYS, "run")
+    depth = ocean.pop("depth_m", math.inf)
+    systems_data = data.get("sea")
+    if not isinstance(systems_data, list) or not systems_data:
+        raise ScenarioError("sea: at least one [[sea]] wave system is required")
+    systems = []
+    for i, entry in enumerate(systems_data):
+        where = f"sea[{i}]"
+        values = _typed(_table(entry, where), SEA_KEYS, where)
+        for key in ("type", "from_deg"):
+            if key not in values:
+                raise ScenarioError(f"{where}.{key}: required")
+        if not 0.0 <= values["from_deg"] <= 360.0:
+            raise ScenarioError(f"{where}.from_deg: must be a compass direction in 0..360, got {values['from_deg']!r}")
+        systems.append(_checked(where, lambda v=values: wave_system(
+            v["type"], from_deg=v["from_deg"], hs=v.get("hs_m"), tp=v.get("tp_s"), gamma=v.get("gamma"),
+            u10=v.get("u10_m_s"), fetch_km=v.get("fetch_km"), height=v.get("height_m"),
+            period=v.get("period_s"), phase_deg=v.get("phase_deg", 0.0), spreading=v.get("spreading"),
+            spreading_s=v.get("spreading_s"), depth=depth)))
+    sea = _checked("ocean.depth_m", lambda: SeaState(tuple(systems), depth=depth))
+    options = OceanOptions(**ocean)
+    run_options = RunOptions(**run)
+    _check_run(run_options)
+    _checked("ocean", lambda: _check_ocean(options))
+    return Scenario(path.resolve(), sea, options, run_options)
+
+
+def _known(table: dict, allowed: tuple[str, ...] | dict, where: str) -> None:
+    for key in table:
+        if key not in allowed:
+            at = f"{where}.{key}" if where else key
+            raise ScenarioError(f"{at}: unknown key (known: {', '.join(allowed)})")
+
+
+def _table(value: Any, where: str) -> dict:
+    if not isinstance(value, dict):
+        raise ScenarioError(f"{where}: must be a table")
+    return value
+
+
+def _typed(table: dict, schema: dict[str, type], where: str) -> dict:
+    _known(table, schema, where)
+    out = {}
+    for key, value in table.items():
+        want = schema[key]
+        ok = isinstance(value, want) and not isinstance(value, bool)
+        if want is float and isinstance(value, int) and not isinstance(value, bool):
+            value, ok = float(value), True
+        if not ok:
+            raise ScenarioError(f"{where}.{key}: expected {want.__name__}, got {value!r}")
+        if want is float and math.isnan(value):
+            raise ScenarioError(f"{where}.{key}: expected a number, got nan")
+        out[key] = value
+    return out
+
+
+def _checked(where: str, build):
+    try:
+        return build()
+    except MarinesimError as error:
+        raise ScenarioError(f"{where}: {error}") from None
+
+
+def _check_run(run: RunOptions) -> None:
+    if not 0.0 < run.duration_s <= MAX_DURATION_S:
+        raise ScenarioError(f"run.duration_s: must be in (0, {MAX_DURATION_S:g}] s, got {run.duration_s!r}")
+    if not 0.0 < run.dt_s <= run.duration_s:
+        raise ScenarioError(f"run.dt_s: must be in (0, duration_s], got {run.dt_s!r}")
+    if run.seed < 0:
+        raise ScenarioError(f"run.seed: must be >= 0, got {run.seed!r}")
+
+
+def _check_ocean(options: OceanOptions) -> None:
+    check_resolution(options.resolution)
+    check_tile_count(options.tiles)
+    require_finite("choppiness", options.choppiness)
