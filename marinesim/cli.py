@@ -17,6 +17,8 @@ from marinesim.sea import Ocean, SeaState
 from marinesim.sea.build import SPECTRUM_TYPES, SPREADING_TYPES, wave_system
 from marinesim.sea.summary import summary
 
+DEFAULT_SCENARIO = Path(__file__).resolve().parent.parent / "configs" / "default.toml"
+
 
 def main(argv: list[str] | None = None) -> int:
     parser = _parser()
@@ -44,9 +46,6 @@ def _parser() -> argparse.ArgumentParser:
     _add_run(commands)
     _add_sea(commands)
     return parser
-
-
-DEFAULT_SCENARIO = Path(__file__).resolve().parent.parent / "configs" / "default.toml"
 
 
 def _add_run(commands: argparse._SubParsersAction) -> None:

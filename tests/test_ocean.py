@@ -21,10 +21,11 @@ SAMPLE_NAMES = ("elevation", "displacement_x", "displacement_y", "slope_x", "slo
 
 
 def band_m0(ocean: Ocean) -> float:
-    """Exact m0 of the represented band: integral of S(w) between the outer band edges."""
+    """Exact m0 of the represented band: integral of S(w) between the cascades' outer band edges."""
     sea = ocean.sea
-    lo = float(omega_from_k(ocean.tiles[0].k_lo, sea.depth))
-    hi = float(omega_from_k(ocean.tiles[-1].k_hi, sea.depth))
+    cascades = [t for t in ocean.tiles if t.wave_index is None]
+    lo = float(omega_from_k(cascades[0].k_lo, sea.depth))
+    hi = float(omega_from_k(cascades[-1].k_hi, sea.depth))
     wp = 2 * math.pi / sea.tp
     value, _ = integrate.quad(lambda w: sea.density(np.array([w]))[0], lo, hi, points=[wp], limit=400)
     return value
@@ -304,3 +305,32 @@ def test_bad_ocean_parameters(north_sea, kwargs, value):
 def test_bad_sea_states(make, value):
     with pytest.raises(ParameterError, match=value):
         make()
+
+
+def test_spectrum_plus_regular_wave_share_the_ocean(north_sea):
+    # a regular wave rides on its own tile beside the cascades; both are in the component list
+    wave = RegularWave(1.0, 12.0, 0.5, phase=0.3)
+    sea = SeaState(north_sea.systems + (wave,))
+    ocean = Ocean(sea, seed=1)
+    assert len(ocean.tiles) == 5 and ocean.tiles[-1].wave_index is not None
+    c = ocean.components()
+    regular = c.tile == 4
+    assert np.count_nonzero(regular) == 1
+    assert c.amplitude[regular][0] == pytest.approx(0.5 * np.exp(0.3j))
+    assert ocean.represented_m0 == pytest.approx(band_m0(ocean) + wave.variance, rel=0.002)
+    assert ocean.m0_fraction >= 0.99
+
+
+def test_height_on_grid_is_the_summed_surface(north_sea):
+    # the plot's map of the whole surface (bilinear on each tile) matches direct summation
+    from marinesim.sea.plot import height_on_grid
+
+    ocean = Ocean(north_sea, seed=6)
+    rng = np.random.default_rng(0)
+    x, y = rng.uniform(0, 2000, 300), rng.uniform(0, 2000, 300)
+    mapped = height_on_grid(ocean.fields(4.0), x, y)
+    direct = ocean.sample(x, y, 4.0).elevation
+    sigma = north_sea.hs / 4
+    assert np.sqrt(np.mean((mapped - direct) ** 2)) < 0.05 * sigma  # bilinear on 2x oversampled tiles
+    at_origin = height_on_grid(ocean.fields(4.0), np.array(0.0), np.array(0.0))
+    assert at_origin == pytest.approx(ocean.sample(np.array([0.0]), np.array([0.0]), 4.0).elevation[0], abs=1e-4)

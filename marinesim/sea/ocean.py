@@ -131,8 +131,7 @@ class Ocean:
         self.resolution = sizes.pop()
         n = self.resolution
         self._noise = np.stack([self._tile_noise(i, random_amplitudes) for i in range(len(self.tiles))])
-        self._amplitude0 = self._amplitudes_for(sea)
-        self.represented_m0 = self._represented_m0
+        self._amplitude0, self.represented_m0 = self._amplitudes_for(sea)
         """Expected variance (m^2) the tiles carry of the initial sea: sum of cell variances."""
         self.m0_fraction = self.represented_m0 / sea.moment(0)
         """Fraction of the sea state's m0 that the tiles carry."""
@@ -153,13 +152,15 @@ class Ocean:
             return math.sqrt(2.0) * np.exp(1j * rng.uniform(0.0, 2.0 * math.pi, (n, n)))
         return rng.standard_normal((n, n)) + 1j * rng.standard_normal((n, n))
 
-    def _amplitudes_for(self, sea: SeaState) -> np.ndarray:
-        """Complex amplitude of every cell, shape (tiles, N, N): ``sqrt(E) xi``, regular waves exact."""
+    def _amplitudes_for(self, sea: SeaState) -> tuple[np.ndarray, float]:
+        """Complex amplitude of every cell, shape (tiles, N, N): ``sqrt(E) xi``, regular waves exact.
+
+        Also returns the expected variance the tiles carry (m^2): the sum of the cell variances.
+        """
         if sea.depth != self.sea.depth:
             raise ParameterError("the depth cannot change while the ocean runs")
         variance = np.stack([cell_variances(tile, sea) for tile in self.tiles])
         amplitude = np.sqrt(variance) * self._noise
-        self._represented_m0 = float(variance.sum()) + sum(w.variance for w in sea.regular_waves)
         for wave in sea.regular_waves:
             tile = regular_tile(wave, sea, self.resolution)
             if tile not in self.tiles:
@@ -170,7 +171,7 @@ class Ocean:
             ix, iy = tile.wave_index
             amplitude[self.tiles.index(tile), iy % self.resolution, ix % self.resolution] += (
                 0.5 * wave.height * np.exp(1j * wave.phase))
-        return amplitude
+        return amplitude, float(variance.sum()) + sum(w.variance for w in sea.regular_waves)
 
     def _index_cells(self) -> None:
         """Flat per-frame arrays over the cells that carry a wave in any state.
@@ -247,7 +248,7 @@ class Ocean:
         duration = require_positive("ramp duration", duration)
         if self._ramps and start < self._ramps[-1].start + self._ramps[-1].duration:
             raise ParameterError("a sea-state ramp must start after the previous one has ended")
-        self._ramps.append(_Ramp(start, duration, self._amplitudes_for(sea)))
+        self._ramps.append(_Ramp(start, duration, self._amplitudes_for(sea)[0]))
         self._index_cells()
 
     def amplitudes(self, t: float) -> np.ndarray:
@@ -345,8 +346,3 @@ def _mirror(used: np.ndarray) -> np.ndarray:
     """``used[t, -iy, -ix]`` (FFT index order)."""
     return np.roll(used[:, ::-1, ::-1], 1, axis=(1, 2))
 
-
-def _positions(used: np.ndarray, cells: tuple[np.ndarray, ...]) -> np.ndarray:
-    """Position of each of ``cells`` in the C-order list ``np.nonzero(used)``."""
-    rank = np.cumsum(used.ravel()) - 1
-    return rank[np.ravel_multi_index(cells, used.shape)]

@@ -19,11 +19,11 @@ def height_on_grid(fields: list[TileFields], x: np.ndarray, y: np.ndarray) -> np
         v = np.asarray(y) / f.tile.spacing
         i0, j0 = np.floor(u).astype(int), np.floor(v).astype(int)
         fu, fv = u - i0, v - j0
+        i1, j1 = (i0 + 1) % n, (j0 + 1) % n
+        i0, j0 = i0 % n, j0 % n
         h = f.height
-        def at(j, i):
-            return h[j % n, i % n]
-        total += ((1 - fu) * (1 - fv) * at(j0, i0) + fu * (1 - fv) * at(j0, i0 + 1)
-                  + (1 - fu) * fv * at(j0 + 1, i0) + fu * fv * at(j0 + 1, i0 + 1))
+        total += ((1 - fu) * (1 - fv) * h[j0, i0] + fu * (1 - fv) * h[j0, i1]
+                  + (1 - fu) * fv * h[j1, i0] + fu * fv * h[j1, i1])
     return total
 
 
