@@ -70,6 +70,14 @@ def test_sea_text_summary_swell_and_regular():
     (["--swell-hs", "-2"], "swell"),
     (["--spreading", "cos2s"], "spreading-s"),
     (["--plot", "/nonexistent/dir/x.png"], "/nonexistent/dir"),
+    (["--tiles", "0"], "tiles"),
+    (["--seed", "-1"], "seed"),
+    (["--choppiness", "nan"], "choppiness"),
+    (["--time", "inf"], "time"),
+    (["--u10", "15", "--fetch-km", "-1"], "fetch_km"),
+    (["--u10", "15", "--spectrum", "pm"], "u10"),
+    (["--spreading-s", "-1"], "-1"),
+    (["--spectrum", "regular", "--period", "0"], "period"),
 ])
 def test_bad_values_give_one_line_and_exit_2(args, value):
     result = run("sea", *args)
