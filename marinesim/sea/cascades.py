@@ -7,8 +7,8 @@ ends at half the tile's Nyquist wave number (``|n| < N/4``): the fields are over
 which keeps bilinear texture lookups and finite differences of them accurate.
 
 Tile sizes follow from the sea state: the largest tile puts the frequency below which only
-0.1 % of m0 lies at ``|n| = 8`` (the peak near |n| = 19); each next tile is smaller by ``phi^3`` (an irrational ratio,
-so the tiles never share a period). A regular wave gets a tile of its own whose size makes its
+0.1 % of m0 lies at ``|n| = 8`` (the peak near |n| = 19); each next tile is smaller by
+``phi^3`` (an irrational ratio, so the tiles never share a period). A regular wave gets a tile of its own whose size makes its
 wave vector fall exactly on the grid.
 """
 
