@@ -44,6 +44,8 @@ def _parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"marinesim {__version__}")
     commands = parser.add_subparsers(dest="command", metavar="COMMAND")
     _add_run(commands)
+    _add_export(commands)
+    _add_rao(commands)
     _add_sea(commands)
     return parser
 
@@ -70,12 +72,84 @@ def _run_scenario(args: argparse.Namespace) -> int:
     print(f"scenario {scenario.path}: {len(scenario.sea.systems)} wave system(s), Hs {scenario.sea.hs:.2f} m, "
           f"Tp {scenario.sea.tp:.2f} s, {scenario.run.duration_s:g} s at dt {scenario.run.dt_s:g} s, "
           f"seed {scenario.run.seed}")
+    vessel = scenario.vessel
+    if vessel is not None:
+        print(f"vessel: {vessel.rao_path.name} ({vessel.rao.source_format}), {vessel.speed_kn:.3g} kn, "
+              f"heading {vessel.heading_deg:g} deg, points: {', '.join(vessel.points) or 'none'}")
     print("no interactive viewer in this version: running headless")
     files = run_headless(scenario, out_dir, progress=not args.quiet)
-    print(f"wrote the sea state picture:        {files['plot']}")
-    print(f"wrote the wave elevation at (0, 0): {files['csv']}")
-    print(f"wrote its metadata:                 {files['sidecar']}")
-    print(f"wrote a plot of it:                 {files['series_plot']}")
+    described = {"sea_plot": "the sea state picture", "motions": "the vessel's 6-DOF motions",
+                 "sidecar": "their metadata", "motions_plot": "a plot of the motions", "rao_plot": "the RAOs",
+                 "elevation": "the wave elevation at (0, 0)", "elevation_plot": "a plot of it"}
+    width = max(len(described[key]) for key in files)
+    for key, path in files.items():
+        print(f"wrote {described[key] + ':':{width + 1}s} {path}")
+    return 0
+
+
+def _add_rao(commands: argparse._SubParsersAction) -> None:
+    from marinesim.vessel import FORMATS
+
+    p = commands.add_parser(
+        "rao", help="summarise an RAO file (ranges, long-wave limits, resonances)",
+        description="Read an RAO file (" + "; ".join(FORMATS.values()) + ") and summarise it: DOFs, "
+                    "frequency/heading/speed ranges, the long-wave-limit check per DOF, resonance periods.")
+    p.add_argument("file", type=Path, help="RAO file")
+    p.add_argument("--json", action="store_true", help="print the summary as one JSON object")
+    p.add_argument("--plot", type=Path, metavar="PATH", help="draw amplitude and phase against period (PNG)")
+    p.add_argument("--headings", default="180,135,90,45,0",
+                   help="relative headings to plot, deg, waves towards (180 = head seas; default 180,135,90,45,0)")
+    p.add_argument("--speed-kn", type=float, default=0.0, help="speed for the plot, kn (default 0)")
+    p.add_argument("--ulen", type=float, help="WAMIT length scale ULEN, m (default: from the .gdf beside)")
+    p.add_argument("--roll-damping-pct", type=float, default=0.0,
+                   help="Capytaine: extra linear roll damping, %% of critical (default 0)")
+    p.set_defaults(handler=_run_rao)
+
+
+def _run_rao(args: argparse.Namespace) -> int:
+    from marinesim.constants import KNOT
+    from marinesim.vessel import read_rao
+    from marinesim.vessel.plot import plot_rao
+    from marinesim.vessel.summary import format_rao_summary, rao_summary
+
+    table = read_rao(args.file, ulen=args.ulen, roll_damping=require_finite("roll damping", args.roll_damping_pct) / 100)
+    report = rao_summary(table)
+    print(json.dumps(report) if args.json else format_rao_summary(report))
+    if args.plot:
+        try:
+            headings = [require_finite("heading", float(v)) for v in args.headings.split(",")]
+        except ValueError:
+            raise ParameterError(f"--headings must be comma-separated degrees, got {args.headings!r}") from None
+        with atomic_path(args.plot) as temp:
+            plot_rao(table, temp, headings, require_finite("speed", args.speed_kn) * KNOT)
+        if not args.json:
+            print(f"wrote {args.plot}")
+    return 0
+
+
+def _add_export(commands: argparse._SubParsersAction) -> None:
+    p = commands.add_parser(
+        "export", help="write the vessel's motion time series (CSV + JSON sidecar)",
+        description="Compute the vessel's 6-DOF motions, velocities, accelerations, named points and the wave "
+                    "elevation for a scenario and write them atomically, with a JSON sidecar beside.")
+    p.add_argument("scenario", type=Path, help="scenario TOML file (needs a [vessel] section)")
+    p.add_argument("--out", type=Path, required=True, help="output file (e.g. motions.csv)")
+    p.add_argument("--duration", type=float, help="run length, s (default: the scenario's)")
+    p.add_argument("--dt", type=float, help="time step, s (default: the scenario's)")
+    p.add_argument("--seed", type=int, help="random seed (default: the scenario's)")
+    p.add_argument("--format", choices=("csv", "parquet"), default="csv", help="table format (default csv)")
+    p.add_argument("--quiet", action="store_true", help="no progress bar")
+    p.set_defaults(handler=_run_export)
+
+
+def _run_export(args: argparse.Namespace) -> int:
+    from marinesim.scenario import load_scenario
+    from marinesim.scenario.export import export_motions, with_run
+
+    scenario = with_run(load_scenario(args.scenario), args.duration, args.dt, args.seed)
+    result = export_motions(scenario, args.out, args.format, progress=not args.quiet)
+    print(f"wrote {result.rows} rows x {len(result.columns)} columns to {result.table} "
+          f"(metadata: {result.sidecar})")
     return 0
 
 

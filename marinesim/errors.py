@@ -22,6 +22,16 @@ class ScenarioError(MarinesimError):
     """A scenario file is unreadable, has an unknown key or an invalid value (names the key)."""
 
 
+class FileFormatError(MarinesimError):
+    """A data file (RAO table, mesh) is malformed; the message names the file, the line and what
+    was expected there."""
+
+    def __init__(self, path: object, line: int | None, message: str) -> None:
+        self.path, self.line = path, line
+        where = f"{path}, line {line}" if line is not None else f"{path}"
+        super().__init__(f"{where}: {message}")
+
+
 def require_finite(name: str, value: float) -> float:
     """Return ``value`` as float, or raise naming ``name`` if it is not a finite number."""
     try:

@@ -12,7 +12,7 @@ import pytest
 
 from marinesim.errors import ScenarioError
 from marinesim.scenario import load_scenario
-from marinesim.scenario.headless import VARIANCE_FRACTION, build_ocean
+from marinesim.scenario.export import VARIANCE_FRACTION, build_ocean
 
 ROOT = Path(__file__).resolve().parent.parent
 DEFAULT = ROOT / "configs" / "default.toml"

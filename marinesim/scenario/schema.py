@@ -17,6 +17,17 @@ spreading_s = 10.0           # absent = long-crested
 spreading = "cos2s"          # cos2s | mitsuyasu | cos2n-halfplane | long-crested
 # regular: height_m, period_s, phase_deg
 
+[vessel]                     # optional: without it the scenario is a sea only
+rao = "../rao/tanker/tanker.4"  # RAO file, relative to this scenario file
+hull = "../hulls/tanker.gdf"    # optional hull mesh (wake, rendering)
+speed_kn = 0.0               # 0..40 kn, within the RAO table's speeds if it has several
+heading_deg = 0.0            # compass, where the bow points
+ulen_m = 1.0                 # optional: WAMIT length scale (default: from the .gdf beside)
+roll_damping_pct = 5.0       # optional: extra roll damping for Capytaine datasets, % of critical
+
+[vessel.points]              # optional named points, body frame m (x fwd, y port, z up)
+bridge = [-100.0, 0.0, 30.0]
+
 [run]
 duration_s = 600.0
 dt_s = 0.1
@@ -32,10 +43,13 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from marinesim.constants import KNOT
 from marinesim.errors import MarinesimError, ScenarioError, require_finite
 from marinesim.sea.build import wave_system
 from marinesim.sea.cascades import check_resolution, check_tile_count
 from marinesim.sea.seastate import SeaState
+from marinesim.vessel.rao import RaoTable
+from marinesim.vessel.read import read_rao
 
 SEA_KEYS: dict[str, type] = {
     "type": str, "hs_m": float, "tp_s": float, "gamma": float, "from_deg": float, "spreading": str,
@@ -44,7 +58,10 @@ SEA_KEYS: dict[str, type] = {
 }
 OCEAN_KEYS: dict[str, type] = {"depth_m": float, "tiles": int, "resolution": int, "choppiness": float}
 RUN_KEYS: dict[str, type] = {"duration_s": float, "dt_s": float, "seed": int}
-SECTIONS = ("ocean", "sea", "run")
+VESSEL_KEYS: dict[str, type] = {"rao": str, "hull": str, "speed_kn": float, "heading_deg": float,
+                                "ulen_m": float, "roll_damping_pct": float, "points": dict}
+SECTIONS = ("ocean", "sea", "vessel", "run")
+MAX_SPEED_KN = 40.0
 MAX_DURATION_S = 7 * 24 * 3600.0
 
 
@@ -63,13 +80,30 @@ class RunOptions:
 
 
 @dataclass(frozen=True)
+class Vessel:
+    """The vessel of a scenario: its RAO table (read and checked), hull file, course and points."""
+
+    rao_path: Path
+    rao: RaoTable
+    hull_path: Path | None
+    speed_m_s: float
+    heading_deg: float                      # compass, where the bow points
+    points: dict[str, tuple[float, float, float]]
+
+    @property
+    def speed_kn(self) -> float:
+        return self.speed_m_s / KNOT
+
+
+@dataclass(frozen=True)
 class Scenario:
-    """A validated scenario: the sea state, the ocean's options and the run's."""
+    """A validated scenario: the sea state, the ocean's options, the vessel (if any), the run."""
 
     path: Path
     sea: SeaState
     ocean: OceanOptions
     run: RunOptions
+    vessel: Vessel | None = None
 
     @property
     def name(self) -> str:
@@ -120,7 +154,48 @@ def _parse(path: Path, data: dict[str, Any]) -> Scenario:
     run_options = RunOptions(**run)
     _check_run(run_options)
     _checked("ocean", lambda: _check_ocean(options))
-    return Scenario(path.resolve(), sea, options, run_options)
+    vessel = _vessel(path, _table(data["vessel"], "vessel")) if "vessel" in data else None
+    return Scenario(path.resolve(), sea, options, run_options, vessel)
+
+
+def _vessel(path: Path, table: dict) -> Vessel:
+    values = _typed(table, VESSEL_KEYS, "vessel")
+    if "rao" not in values:
+        raise ScenarioError("vessel.rao: required (the RAO file, relative to the scenario)")
+    speed_kn = values.get("speed_kn", 0.0)
+    if not 0.0 <= speed_kn <= MAX_SPEED_KN:
+        raise ScenarioError(f"vessel.speed_kn: must be in 0..{MAX_SPEED_KN:g} kn, got {speed_kn!r}")
+    heading = values.get("heading_deg", 0.0)
+    if not 0.0 <= heading <= 360.0:
+        raise ScenarioError(f"vessel.heading_deg: must be a compass heading in 0..360, got {heading!r}")
+    damping = values.get("roll_damping_pct", 0.0)
+    if not 0.0 <= damping < 100.0:
+        raise ScenarioError(f"vessel.roll_damping_pct: must be in 0..100 % of critical, got {damping!r}")
+    ulen = values.get("ulen_m")
+    if ulen is not None and ulen <= 0:
+        raise ScenarioError(f"vessel.ulen_m: must be > 0, got {ulen!r}")
+    points = {}
+    for name, point in values.get("points", {}).items():
+        where = f"vessel.points.{name}"
+        if not name.isidentifier():
+            raise ScenarioError(f"{where}: a point name must be a plain identifier (letters, digits, _)")
+        if (not isinstance(point, list) or len(point) != 3
+                or not all(isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in point)):
+            raise ScenarioError(f"{where}: expected [x, y, z] in metres (body frame), got {point!r}")
+        points[name] = tuple(float(v) for v in point)
+    rao_path = (path.parent / values["rao"]).resolve()
+    rao = _checked("vessel.rao", lambda: read_rao(rao_path, ulen=ulen, roll_damping=damping / 100.0))
+    low, high = rao.speed_range
+    speed = speed_kn * KNOT
+    if rao.speed.size > 1 and not low - 1e-6 <= speed <= high + 1e-6:
+        raise ScenarioError(f"vessel.speed_kn: {speed_kn:g} kn is outside the RAO table's speeds "
+                            f"{low / KNOT:.3g}..{high / KNOT:.3g} kn")
+    hull_path = None
+    if "hull" in values:
+        hull_path = (path.parent / values["hull"]).resolve()
+        if not hull_path.is_file():
+            raise ScenarioError(f"vessel.hull: no such file {hull_path}")
+    return Vessel(rao_path, rao, hull_path, speed, heading, points)
 
 
 def _known(table: dict, allowed: tuple[str, ...] | dict, where: str) -> None:
@@ -137,6 +212,7 @@ def _table(value: Any, where: str) -> dict:
 
 
 def _typed(table: dict, schema: dict[str, type], where: str) -> dict:
+    """The entries of ``table`` checked against ``schema`` (ints accepted as floats, NaN refused)."""
     _known(table, schema, where)
     out = {}
     for key, value in table.items():

@@ -1,0 +1,149 @@
+"""Capytaine results (NetCDF) -> :class:`RaoTable`, by solving the equation of motion.
+
+Capytaine writes complex variables split along a ``complex`` dimension (``re``, ``im``) and uses
+the time factor ``exp(-i w t)`` with the incident wave ``Re{A exp(i(k x cos b + k y sin b - w t))}``
+(``b`` = ``wave_direction``, travelling towards, from +x: marinesim's ``beta_rel``). Per
+frequency and direction this module solves
+
+    [-w^2 (M + A(w)) - i w (B(w) + B_roll) + K] X = F(w, b)
+
+with M the inertia matrix, A and B the added mass and radiation damping, K the hydrostatic
+stiffness and F the excitation (diffraction + Froude-Krylov), and converts once to marinesim's
+``exp(+i w t)``: ``H = conj(X)``. ``roll_damping`` adds a linear roll damping ``B_roll`` as a
+fraction of critical, ``2 sqrt(K44 (M44 + A44(w_n)))`` at the roll natural frequency: potential
+flow has no viscous roll damping, so radiation-only RAOs overpredict roll at resonance.
+The reference point is the dataset's ``rotation_center``. Needs ``xarray`` with a NetCDF engine
+(``pip install 'marinesim[capytaine]'``).
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+
+from marinesim.errors import FileFormatError, ParameterError
+from marinesim.vessel.rao import DOFS, RaoTable, make_table
+
+NEEDED = ("added_mass", "radiation_damping", "inertia_matrix", "hydrostatic_stiffness")
+
+
+def read_capytaine(path: str | Path, *, roll_damping: float = 0.0) -> RaoTable:
+    """RAOs from a Capytaine dataset; ``roll_damping`` is the extra roll damping (fraction of critical)."""
+    path = Path(path)
+    if not (math.isfinite(roll_damping) and 0.0 <= roll_damping < 1.0):
+        raise ParameterError(f"roll damping must be in [0, 1) of critical, got {roll_damping!r}")
+    dataset = _open(path)
+    missing = [name for name in NEEDED if name not in dataset]
+    has_excitation = "excitation_force" in dataset or {"diffraction_force", "Froude_Krylov_force"} <= set(dataset)
+    if missing or not has_excitation:
+        missing += [] if has_excitation else ["excitation_force (or diffraction_force + Froude_Krylov_force)"]
+        raise FileFormatError(path, None, "a Capytaine dataset needs hydrodynamic coefficients, inertia and "
+                                          f"hydrostatic stiffness to give RAOs; missing: {', '.join(missing)}")
+    speed = float(dataset["forward_speed"]) if "forward_speed" in dataset.coords else 0.0
+    if speed != 0.0:
+        raise FileFormatError(path, None, f"forward speed {speed:g} m/s: only zero-speed Capytaine results are supported")
+    if "omega" not in dataset.coords:
+        raise FileFormatError(path, None, "no 'omega' coordinate (angular frequency)")
+    frequency_dim = dataset["omega"].dims[0]
+    dataset = dataset.sortby("omega")
+
+    def matrix(name: str, per_frequency: bool) -> np.ndarray:
+        data = _dof_ordered(path, _complex(dataset[name]), ("influenced_dof", "radiating_dof"))
+        dims = ((frequency_dim,) if per_frequency else ()) + ("influenced_dof", "radiating_dof")
+        try:
+            return np.asarray(data.transpose(*dims).values)
+        except ValueError:
+            raise FileFormatError(path, None, f"{name} has dimensions {data.dims}, expected {dims}") from None
+
+    omega = np.asarray(dataset["omega"].values, dtype=float)
+    mass = matrix("inertia_matrix", False).real
+    stiffness = matrix("hydrostatic_stiffness", False).real
+    added = matrix("added_mass", True).real
+    damping = matrix("radiation_damping", True).real
+    force = _excitation(path, dataset, frequency_dim)
+    directions = np.asarray(dataset["wave_direction"].values, dtype=float)
+    for name, array in (("inertia_matrix", mass), ("hydrostatic_stiffness", stiffness), ("added_mass", added),
+                        ("radiation_damping", damping), ("excitation force", force)):
+        if not np.all(np.isfinite(array)):
+            raise FileFormatError(path, None, f"{name} has non-finite values")
+    notes = [f"Capytaine {dataset.attrs.get('capytaine_version', '?')}; equation of motion solved per frequency"]
+    extra = np.zeros((6, 6))
+    if roll_damping > 0.0:
+        extra[3, 3] = roll_damping * _critical_roll_damping(path, omega, mass, added, stiffness)
+        notes.append(f"extra linear roll damping {100 * roll_damping:g} % of critical "
+                     f"({extra[3, 3]:.4g} N m s/rad)")
+    impedance = (-omega[:, None, None] ** 2 * (mass + added) - 1j * omega[:, None, None] * (damping + extra)
+                 + stiffness)
+    try:
+        motion = np.linalg.solve(impedance[:, None], force[..., None])[..., 0]  # (omega, direction, dof)
+    except np.linalg.LinAlgError:
+        raise FileFormatError(path, None, "the equation of motion is singular at some frequency") from None
+    values = np.conj(motion).transpose(1, 0, 2)[None]
+    reference = (tuple(float(v) for v in dataset["rotation_center"].values)
+                 if "rotation_center" in dataset.coords else (0.0, 0.0, 0.0))
+    rho = float(dataset["rho"]) if "rho" in dataset.coords else 1025.0
+    g = float(dataset["g"]) if "g" in dataset.coords else 9.81
+    try:
+        return make_table(omega, directions, [0.0], values, reference_point=reference, rho=rho, g=g,
+                          source=str(path), source_format="capytaine", notes=tuple(notes))
+    except ParameterError as error:
+        raise FileFormatError(path, None, str(error)) from None
+
+
+def _open(path: Path):
+    try:
+        import xarray
+    except ImportError:
+        raise FileFormatError(path, None, "reading Capytaine NetCDF needs xarray and a NetCDF engine: "
+                                          "pip install 'marinesim[capytaine]'") from None
+    if not path.is_file():
+        raise FileFormatError(path, None, "no such file")
+    try:
+        return xarray.open_dataset(path).load()
+    except Exception as error:  # xarray raises many kinds for unreadable files
+        raise FileFormatError(path, None, f"not a readable NetCDF dataset ({type(error).__name__}: {error})") from None
+
+
+def _complex(array):
+    """Merge Capytaine's split ``complex`` dimension (``re``, ``im``) back into complex values."""
+    if "complex" not in array.dims:
+        return array
+    return array.sel(complex="re") + 1j * array.sel(complex="im")
+
+
+def _dof_ordered(path: Path, array, dims: tuple[str, ...]):
+    """``array`` with its DOF dimensions in :data:`DOFS` order (names matched case-insensitively)."""
+    for dim in dims:
+        if dim not in array.dims:
+            continue
+        names = [str(v).lower() for v in array[dim].values]
+        if sorted(names) != sorted(DOFS):
+            raise FileFormatError(path, None, f"{array.name}: {dim} is {names}, expected the six rigid-body "
+                                              f"DOFs {', '.join(DOFS)}")
+        array = array.isel({dim: [names.index(d) for d in DOFS]})
+    return array
+
+
+def _excitation(path: Path, dataset, frequency_dim: str) -> np.ndarray:
+    if "excitation_force" in dataset:
+        force = _complex(dataset["excitation_force"])
+    else:
+        force = _complex(dataset["diffraction_force"]) + _complex(dataset["Froude_Krylov_force"])
+    force.name = "excitation_force"
+    force = _dof_ordered(path, force, ("influenced_dof",))
+    return np.asarray(force.transpose(frequency_dim, "wave_direction", "influenced_dof").values, dtype=complex)
+
+
+def _critical_roll_damping(path: Path, omega: np.ndarray, mass: np.ndarray, added: np.ndarray,
+                           stiffness: np.ndarray) -> float:
+    """``2 sqrt(K44 (M44 + A44(w_n)))`` with w_n the roll natural frequency found by fixed point."""
+    k44 = stiffness[3, 3]
+    if k44 <= 0:
+        raise ParameterError(f"{path}: roll damping in % of critical needs a positive roll stiffness, got K44 = {k44:g}")
+    a44 = added[:, 3, 3]
+    natural = math.sqrt(k44 / (mass[3, 3] + a44[0]))
+    for _ in range(50):
+        natural = math.sqrt(k44 / (mass[3, 3] + float(np.interp(natural, omega, a44))))
+    return 2.0 * math.sqrt(k44 * (mass[3, 3] + float(np.interp(natural, omega, a44))))

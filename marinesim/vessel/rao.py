@@ -1,0 +1,189 @@
+"""The RAO model: six complex transfer functions over frequency, relative heading and speed.
+
+Conventions (docs/CONVENTIONS.md, "Transfer functions"): ``H_j(w, beta_rel, U)`` gives the
+response ``x_j(t) = Re{H_j a exp(i w t)}`` to the wave ``a exp(i w t)`` at the body-frame origin
+(the RAO reference point); positive phase = response leads. Translations in m/m, rotations in
+rad/m. ``w`` is the wave (not encounter) frequency; ``beta_rel`` the direction the waves travel
+towards relative to the bow (0 following, pi/2 towards port, pi head sea).
+
+Interpolation is linear on Re/Im in frequency, heading (wrapping around the circle) and speed.
+Outside the tabulated frequencies:
+
+* below the lowest, ``H = L(w) + (H(w0) - L(w0)) (w / w0)^2``: the free-floating long-wave
+  limit ``L`` (:func:`long_wave_limit`) plus the table's deviation from it, fading as w^2;
+* above the highest, the last value tapered by ``cos^2`` to zero at 1.5 times that frequency.
+
+Speeds outside a multi-speed table are clamped to its ends (scenarios refuse them up front).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from marinesim.constants import G
+from marinesim.errors import ParameterError
+
+DOFS = ("surge", "sway", "heave", "roll", "pitch", "yaw")
+ROTATIONS = (3, 4, 5)
+MIRROR_SIGN = np.array([1.0, -1.0, 1.0, -1.0, 1.0, -1.0])
+"""Sign of each DOF under the port/starboard mirror beta -> -beta: sway, roll, yaw flip."""
+TAPER_END = 1.5
+"""Above the table, RAOs taper to zero at this multiple of the highest frequency."""
+MAX_HEADING_GAP = math.pi / 2
+"""Largest gap between tabulated headings (after mirroring) that interpolation may bridge."""
+
+
+def long_wave_limit(omega: np.ndarray, beta: np.ndarray, g: float = G) -> np.ndarray:
+    """Deep-water long-wave RAO of a free-floating body, shape (n, 6).
+
+    The body follows the wave orbit and slope: surge ``-i cos beta``, sway ``-i sin beta``,
+    heave 1, roll ``-i k sin beta``, pitch ``i k cos beta`` (pitch bow down = minus the slope
+    along x), yaw 0, with ``k = w^2 / g``.
+    """
+    omega = np.asarray(omega, dtype=float)
+    beta = np.asarray(beta, dtype=float)
+    k = omega ** 2 / g
+    c, s = np.cos(beta), np.sin(beta)
+    zero = np.zeros(np.broadcast(omega, beta).shape)
+    return np.stack([-1j * c + zero, -1j * s + zero, 1.0 + zero, -1j * k * s, 1j * k * c, zero + 0j], axis=-1)
+
+
+@dataclass(frozen=True)
+class RaoTable:
+    """Tabulated RAOs in the internal convention, headings covering the whole circle.
+
+    ``values[s, b, w, j]``: speed ``speed[s]`` (m/s), heading ``beta[b]`` (rad, increasing in
+    [0, 2 pi)), frequency ``omega[w]`` (rad/s, increasing), DOF j in :data:`DOFS` order.
+    Build with :func:`make_table`, which completes half-range tables by symmetry.
+    """
+
+    omega: np.ndarray
+    beta: np.ndarray
+    speed: np.ndarray
+    values: np.ndarray
+    reference_point: tuple[float, float, float]
+    rho: float
+    g: float
+    source: str
+    source_format: str
+    notes: tuple[str, ...] = field(default=())
+    mirrored: bool = False
+
+    def __call__(self, omega: np.ndarray, beta: np.ndarray, speed: float = 0.0) -> np.ndarray:
+        """Interpolated RAOs, shape (n, 6), at wave frequencies ``omega`` (rad/s, > 0) and
+        relative headings ``beta`` (rad, any range) for forward speed ``speed`` (m/s)."""
+        omega = np.asarray(omega, dtype=float).ravel()
+        beta = np.mod(np.asarray(beta, dtype=float).ravel(), 2.0 * math.pi)
+        table = self._at_speed(speed)
+        w_lo, w_hi = self.omega[0], self.omega[-1]
+        inside = _bilinear(self.omega, self._beta_wrapped, table, np.clip(omega, w_lo, w_hi), beta)
+        below = omega < w_lo
+        if np.any(below):
+            fade = (omega[below] / w_lo) ** 2
+            at_edge = inside[below]
+            inside[below] = (long_wave_limit(omega[below], beta[below], self.g)
+                             + (at_edge - long_wave_limit(np.full(fade.size, w_lo), beta[below], self.g))
+                             * fade[:, None])
+        above = omega > w_hi
+        if np.any(above):
+            x = np.clip((omega[above] - w_hi) / ((TAPER_END - 1.0) * w_hi), 0.0, 1.0)
+            inside[above] *= (np.cos(0.5 * math.pi * x) ** 2)[:, None]
+        return inside
+
+    @property
+    def _beta_wrapped(self) -> np.ndarray:
+        return np.append(self.beta, self.beta[0] + 2.0 * math.pi)
+
+    def _at_speed(self, speed: float) -> np.ndarray:
+        """Table (nb + 1, nw, 6) at ``speed``, with the first heading repeated at the end."""
+        if self.speed.size == 1:
+            table = self.values[0]
+        else:
+            u = float(np.clip(speed, self.speed[0], self.speed[-1]))
+            i = int(np.clip(np.searchsorted(self.speed, u, side="right") - 1, 0, self.speed.size - 2))
+            f = (u - self.speed[i]) / (self.speed[i + 1] - self.speed[i])
+            table = (1.0 - f) * self.values[i] + f * self.values[i + 1]
+        return np.concatenate([table, table[:1]], axis=0)
+
+    @property
+    def speed_range(self) -> tuple[float, float]:
+        return float(self.speed[0]), float(self.speed[-1])
+
+
+def _bilinear(omega_grid: np.ndarray, beta_grid: np.ndarray, table: np.ndarray,
+              omega: np.ndarray, beta: np.ndarray) -> np.ndarray:
+    """Linear on Re/Im in frequency and heading; ``table`` is (len(beta_grid), len(omega_grid), 6)."""
+    iw, fw = _locate(omega_grid, omega)
+    ib, fb = _locate(beta_grid, beta)
+    fw, fb = fw[:, None], fb[:, None]
+    return ((1 - fb) * ((1 - fw) * table[ib, iw] + fw * table[ib, iw + 1])
+            + fb * ((1 - fw) * table[ib + 1, iw] + fw * table[ib + 1, iw + 1]))
+
+
+def _locate(grid: np.ndarray, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Cell index and fraction of each ``x`` in the increasing ``grid`` (x within its range)."""
+    if grid.size == 1:
+        return np.zeros(x.size, dtype=int), np.zeros(x.size)
+    i = np.clip(np.searchsorted(grid, x, side="right") - 1, 0, grid.size - 2)
+    return i, (x - grid[i]) / (grid[i + 1] - grid[i])
+
+
+def make_table(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: np.ndarray, *,
+               reference_point=(0.0, 0.0, 0.0), rho: float = 1025.0, g: float = G, source: str = "",
+               source_format: str = "", notes: tuple[str, ...] = ()) -> RaoTable:
+    """Validate and complete an RAO table already in the internal convention.
+
+    ``values`` has shape (speeds, headings, frequencies, 6). Headings (rad) either span exactly
+    0..pi (completed by the port/starboard mirror, :data:`MIRROR_SIGN`) or cover the circle
+    with no gap wider than :data:`MAX_HEADING_GAP`. Raises :class:`ParameterError` otherwise.
+    """
+    omega = np.asarray(omega, dtype=float)
+    beta = np.asarray(beta, dtype=float)
+    speed = np.atleast_1d(np.asarray(speed, dtype=float))
+    values = np.asarray(values, dtype=complex)
+    if values.shape != (speed.size, beta.size, omega.size, 6):
+        raise ParameterError(f"RAO values have shape {values.shape}, expected "
+                             f"(speeds, headings, frequencies, 6) = ({speed.size}, {beta.size}, {omega.size}, 6)")
+    if not np.all(np.isfinite(values)):
+        raise ParameterError("RAO values must be finite")
+    _check_increasing("frequencies", omega, minimum=0.0)
+    _check_increasing("speeds", speed, minimum=None)
+    if beta.size == 0 or not np.all(np.isfinite(beta)):
+        raise ParameterError("RAO headings must be finite and at least one")
+    order = np.argsort(beta, kind="stable")
+    beta, values = beta[order], values[:, order]
+    eps = 1e-9
+    mirrored = beta[0] >= -eps and abs(beta[0]) < eps and abs(beta[-1] - math.pi) < eps
+    if mirrored:
+        inner = (beta > eps) & (beta < math.pi - eps)
+        beta = np.concatenate([beta, 2.0 * math.pi - beta[inner][::-1]])
+        values = np.concatenate([values, values[:, inner][:, ::-1] * MIRROR_SIGN], axis=1)
+    beta = np.mod(beta, 2.0 * math.pi)
+    beta[beta > 2.0 * math.pi - eps] = 0.0
+    order = np.argsort(beta, kind="stable")
+    beta, values = beta[order], values[:, order]
+    same = np.flatnonzero(np.diff(beta) < eps)
+    if same.size:
+        raise ParameterError(f"RAO heading {math.degrees(beta[same[0]]):g} deg is given twice "
+                             "(after wrapping to 0..360)")
+    gaps = np.diff(np.append(beta, beta[0] + 2.0 * math.pi))
+    if gaps.max() > MAX_HEADING_GAP + eps:
+        at = int(np.argmax(gaps))
+        raise ParameterError(
+            f"RAO headings leave a gap of {math.degrees(gaps.max()):g} deg after "
+            f"{math.degrees(beta[at]):g} deg: give 0..180 (mirrored to port) or the whole circle")
+    return RaoTable(omega, beta, speed, values, tuple(float(v) for v in reference_point), float(rho),
+                    float(g), str(source), source_format, tuple(notes), mirrored)
+
+
+def _check_increasing(name: str, grid: np.ndarray, minimum: float | None) -> None:
+    if grid.ndim != 1 or grid.size == 0 or not np.all(np.isfinite(grid)):
+        raise ParameterError(f"RAO {name} must be a non-empty list of finite numbers")
+    if minimum is not None and grid[0] <= minimum:
+        raise ParameterError(f"RAO {name} must be > {minimum:g}, got {grid[0]:g}")
+    if np.any(np.diff(grid) <= 0):
+        at = int(np.flatnonzero(np.diff(grid) <= 0)[0])
+        raise ParameterError(f"RAO {name} must be strictly increasing: {grid[at]:g} then {grid[at + 1]:g}")

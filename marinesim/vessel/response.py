@@ -1,0 +1,193 @@
+"""6-DOF response of a vessel on a straight track to the ocean's wave components.
+
+REFERENCES section 4: ``x_j(t) = Re sum_i H_j(w_i, beta_i - psi, U) a_i exp(i(w_i t - k_i . r(t)))``
+with ``r(t) = r0 + U t (cos psi, sin psi)`` the reference point in the Earth frame. The phase is
+linear in t, ``w_e t - k . r0`` with the encounter frequency ``w_e = w - U k cos(beta_rel)``, so
+velocities and accelerations are exact (``i w_e``, ``-w_e^2`` per component) and a block of
+time steps is one real matrix product: ``[cos(w_e t) | sin(w_e t)] @ [Re C; -Im C]``, done in
+float32 for the long runs of :meth:`Response.linear_steps` (the product is memory-bound; float32
+halves the traffic and keeps the error near 1e-6 of the largest output).
+
+Points on board (body frame, m) move as ``xi + R p`` with ``R = Rz(yaw) Ry(pitch) Rx(roll)``
+(CONVENTIONS), their velocity and acceleration from the exact derivatives of R. Positions are
+given in the steady vessel frame (x forward, y port, z up, origin at the reference point's mean
+position). The wave elevation is the incident wave at the reference point's and each point's
+mean position; ``<point>_relative_m`` is the point's vertical motion minus that elevation.
+
+What the viewer shows and what ``marinesim export`` writes both come from :meth:`Response.frame`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Iterator
+
+import numpy as np
+
+from marinesim.errors import ParameterError, require_at_least, require_finite
+from marinesim.sea.ocean import Components
+from marinesim.vessel.rao import DOFS, RaoTable
+
+BLOCK = 512
+"""Time steps per matrix product (the phasor table is BLOCK x 2 components x 8 bytes)."""
+
+
+@dataclass(frozen=True)
+class Track:
+    """Straight course at constant speed: heading ``psi`` (math angle of the bow, rad, E frame),
+    ``speed`` (m/s), start of the reference point ``(x0, y0)`` (m, E frame) at t = 0."""
+
+    heading: float
+    speed: float = 0.0
+    x0: float = 0.0
+    y0: float = 0.0
+
+    def position(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Reference point (x, y) in E at times ``t`` (s)."""
+        t = np.asarray(t, dtype=float)
+        return (self.x0 + self.speed * t * math.cos(self.heading),
+                self.y0 + self.speed * t * math.sin(self.heading))
+
+
+def motion_columns(points: dict[str, tuple[float, float, float]]) -> list[str]:
+    """Column names of a motion frame, in CONVENTIONS order (rotations in degrees)."""
+    def unit(j: int, suffix: str) -> str:
+        return (("deg" if j >= 3 else "m") + suffix)
+    names = ["time_s"] + [f"{d}_{unit(j, '')}" for j, d in enumerate(DOFS)]
+    names += [f"{d}_vel_{unit(j, '_s')}" for j, d in enumerate(DOFS)]
+    names += [f"{d}_acc_{unit(j, '_s2')}" for j, d in enumerate(DOFS)]
+    for name in points:
+        names += [f"{name}_x_m", f"{name}_y_m", f"{name}_z_m", f"{name}_vz_m_s", f"{name}_az_m_s2",
+                  f"{name}_relative_m"]
+    return names + ["wave_elevation_m"]
+
+
+class Response:
+    """Motions of a vessel (RAO table, track, named points) in the given wave components."""
+
+    def __init__(self, rao: RaoTable, components: Components, track: Track,
+                 points: dict[str, tuple[float, float, float]] | None = None) -> None:
+        self.rao, self.components, self.track = rao, components, track
+        self.points = {name: np.asarray(p, dtype=float) for name, p in (points or {}).items()}
+        for name, p in self.points.items():
+            if p.shape != (3,) or not np.all(np.isfinite(p)):
+                raise ParameterError(f"point {name!r} must be three finite numbers (m, body frame), got {p.tolist()}")
+        c, psi = components, track.heading
+        beta_rel = np.arctan2(c.ky, c.kx) - psi
+        along = c.kx * math.cos(psi) + c.ky * math.sin(psi)
+        self.omega_e = c.omega - track.speed * along
+        self.transfer = rao(c.omega, beta_rel, track.speed)              # (n, 6)
+        at_origin = c.amplitude * np.exp(-1j * (c.kx * track.x0 + c.ky * track.y0))
+        motion = self.transfer * at_origin[:, None]
+        iw = 1j * self.omega_e[:, None]
+        columns = [motion, iw * motion, iw ** 2 * motion, at_origin[:, None]]
+        cos_psi, sin_psi = math.cos(psi), math.sin(psi)
+        for p in self.points.values():
+            shift = c.kx * (cos_psi * p[0] - sin_psi * p[1]) + c.ky * (sin_psi * p[0] + cos_psi * p[1])
+            columns.append((at_origin * np.exp(-1j * shift))[:, None])
+        self._coefficients = np.concatenate(columns, axis=1)               # (n, 19 + points)
+
+    @property
+    def columns(self) -> list[str]:
+        return motion_columns(self.points)
+
+    def linear(self, times: np.ndarray) -> np.ndarray:
+        """Real linear outputs at arbitrary ``times`` (s): (T, 19 + points) = 6 DOF displacement,
+        velocity, acceleration (m, rad), elevation at the reference point and at each point."""
+        times = np.asarray(times, dtype=float).ravel()
+        out = np.empty((times.size, self._coefficients.shape[1]))
+        for lo in range(0, times.size, BLOCK):
+            phase = np.outer(times[lo:lo + BLOCK], self.omega_e)
+            out[lo:lo + BLOCK] = (np.cos(phase) @ self._coefficients.real
+                                  - np.sin(phase) @ self._coefficients.imag)
+        return out
+
+    def linear_steps(self, start: float, dt: float, steps: int) -> Iterator[tuple[np.ndarray, np.ndarray]]:
+        """``(times, linear outputs)`` in blocks for ``start + dt * arange(steps)``: one phasor table
+        ``exp(i w_e j dt)`` for the block, the block start folded into the coefficients."""
+        dt = require_at_least("time step", dt, 0.0)
+        if dt <= 0:
+            raise ParameterError(f"time step must be > 0 s, got {dt!r}")
+        start = require_finite("start time", start)
+        block = min(BLOCK, max(int(steps), 1))
+        phase = np.outer(np.arange(block) * dt, self.omega_e)
+        table = np.concatenate([np.cos(phase), np.sin(phase)], axis=1).astype(np.float32)  # (block, 2n)
+        del phase
+        for lo in range(0, int(steps), block):
+            n = min(block, int(steps) - lo)
+            t0 = start + lo * dt
+            shifted = self._coefficients * np.exp(1j * self.omega_e * t0)[:, None]
+            stacked = np.concatenate([shifted.real, -shifted.imag], axis=0).astype(np.float32)
+            yield start + (lo + np.arange(n)) * dt, (table[:n] @ stacked).astype(float)
+
+    def frame(self, times: np.ndarray, linear: np.ndarray | None = None) -> dict[str, np.ndarray]:
+        """Every output column (:func:`motion_columns`, CSV units) at ``times`` (s)."""
+        times = np.asarray(times, dtype=float).ravel()
+        if linear is None:
+            linear = self.linear(times)
+        disp, vel, acc = linear[:, 0:6], linear[:, 6:12], linear[:, 12:18]
+        to_csv = np.array([1.0, 1.0, 1.0] + [180.0 / math.pi] * 3)
+        values = [times[:, None], disp * to_csv, vel * to_csv, acc * to_csv]
+        if self.points:
+            kin = RotationKinematics(disp[:, 3:6], vel[:, 3:6], acc[:, 3:6])
+            for i, p in enumerate(self.points.values()):
+                position, velocity, acceleration = kin.point(p, disp[:, :3], vel[:, :3], acc[:, :3])
+                relative = position[:, 2] - p[2] - linear[:, 19 + i]
+                values.append(np.column_stack([position, velocity[:, 2], acceleration[:, 2], relative]))
+        values.append(linear[:, 18:19])
+        return dict(zip(self.columns, np.concatenate(values, axis=1).T))
+
+    def frames(self, start: float, dt: float, steps: int) -> Iterator[dict[str, np.ndarray]]:
+        """:meth:`frame` for ``start + dt * arange(steps)``, block by block (streams long runs)."""
+        for times, linear in self.linear_steps(start, dt, steps):
+            yield self.frame(times, linear)
+
+    def expected_variance(self) -> np.ndarray:
+        """Variance of each column of :meth:`linear` over an infinitely long run.
+
+        ``sum |sum C|^2 / 2`` over distinct encounter frequencies ``|w_e|``: components that share
+        one add coherently (a term at ``-w_e`` is the conjugate of one at ``w_e``); a component
+        met at ``w_e = 0`` is a constant offset and adds nothing.
+        """
+        coefficients = np.where(self.omega_e[:, None] < 0, np.conj(self._coefficients), self._coefficients)
+        key = np.round(np.abs(self.omega_e), 9)
+        distinct, group = np.unique(key, return_inverse=True)
+        sums = np.zeros((distinct.size, coefficients.shape[1]), dtype=complex)
+        np.add.at(sums, group, coefficients)
+        return np.sum(np.abs(sums[distinct > 0]) ** 2, axis=0) / 2.0
+
+
+class RotationKinematics:
+    """``R = Rz(yaw) Ry(pitch) Rx(roll)`` and its exact first and second time derivatives, per time."""
+
+    def __init__(self, angles: np.ndarray, rates: np.ndarray, accelerations: np.ndarray) -> None:
+        factors = [_axis_rotation(axis, angles[:, j], rates[:, j], accelerations[:, j])
+                   for j, axis in ((2, 2), (1, 1), (0, 0))]
+        (a, da, dda), (b, db, ddb), (c, dc, ddc) = factors
+        self.matrix = a @ b @ c
+        self.rate = da @ b @ c + a @ db @ c + a @ b @ dc
+        self.acceleration = (dda @ b @ c + a @ ddb @ c + a @ b @ ddc
+                             + 2.0 * (da @ db @ c + da @ b @ dc + a @ db @ dc))
+
+    def point(self, p: np.ndarray, xi: np.ndarray, xi_dot: np.ndarray, xi_ddot: np.ndarray):
+        """Position, velocity and acceleration (T, 3) of body point ``p`` given the translations."""
+        return xi + self.matrix @ p, xi_dot + self.rate @ p, xi_ddot + self.acceleration @ p
+
+
+def _axis_rotation(axis: int, angle: np.ndarray, rate: np.ndarray, acceleration: np.ndarray):
+    """Rotation about ``axis`` (0 x, 1 y, 2 z) by ``angle`` and its first and second time derivatives."""
+    c, s = np.cos(angle), np.sin(angle)
+    n = angle.size
+    r, dr, ddr = np.zeros((n, 3, 3)), np.zeros((n, 3, 3)), np.zeros((n, 3, 3))
+    i, j = [(1, 2), (2, 0), (0, 1)][axis]          # the plane rotated: y-z, z-x, x-y
+    r[:, axis, axis] = 1.0
+    r[:, i, i], r[:, i, j], r[:, j, i], r[:, j, j] = c, -s, s, c
+    # d/dangle of the plane block is [[-s, -c], [c, -s]]; the second derivative is minus the block.
+    d1 = np.zeros((n, 3, 3))
+    d1[:, i, i], d1[:, i, j], d1[:, j, i], d1[:, j, j] = -s, -c, c, -s
+    d2 = np.zeros((n, 3, 3))
+    d2[:, i, i], d2[:, i, j], d2[:, j, i], d2[:, j, j] = -c, s, -s, -c
+    dr = d1 * rate[:, None, None]
+    ddr = d2 * (rate ** 2)[:, None, None] + d1 * acceleration[:, None, None]
+    return r, dr, ddr

@@ -1,0 +1,76 @@
+"""Whitespace-separated numbers read with their line numbers, for the text RAO readers.
+
+Every failure raises :class:`FileFormatError` naming the file, the line and what was expected.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+from marinesim.errors import FileFormatError
+
+
+def read_text(path: Path) -> str:
+    """The file's text; unreadable or non-text files are refused as a format error."""
+    try:
+        return path.read_text(encoding="utf-8", errors="strict")
+    except FileNotFoundError:
+        raise FileFormatError(path, None, "no such file") from None
+    except UnicodeDecodeError as error:
+        raise FileFormatError(path, None, f"not a text file ({error.reason} at byte {error.start})") from None
+    except OSError as error:
+        raise FileFormatError(path, None, f"cannot read: {error.strerror}") from None
+
+
+def parse_float(path: Path, line: int, text: str, expected: str) -> float:
+    """``text`` as a finite float (Fortran ``D`` exponents accepted), or a format error."""
+    try:
+        value = float(text.replace("D", "E").replace("d", "e"))
+    except ValueError:
+        raise FileFormatError(path, line, f"expected {expected}, got {text!r}") from None
+    if not math.isfinite(value):
+        raise FileFormatError(path, line, f"expected {expected} (a finite number), got {text!r}")
+    return value
+
+
+def parse_int(path: Path, line: int, text: str, expected: str) -> int:
+    try:
+        return int(text)
+    except ValueError:
+        raise FileFormatError(path, line, f"expected {expected} (an integer), got {text!r}") from None
+
+
+class Tokens:
+    """A stream of the tokens of ``lines[start:]``, each remembering its (1-based) line number."""
+
+    def __init__(self, path: Path, lines: list[str], start: int = 0) -> None:
+        self.path = path
+        self._items = [(number, token) for number, text in enumerate(lines[start:], start + 1)
+                       for token in text.split()]
+        self._next = 0
+
+    @property
+    def line(self) -> int:
+        """Line number of the next token (or of the last line at the end)."""
+        if self._next < len(self._items):
+            return self._items[self._next][0]
+        return self._items[-1][0] if self._items else 1
+
+    def at_end(self) -> bool:
+        return self._next >= len(self._items)
+
+    def _take(self, expected: str) -> tuple[int, str]:
+        if self.at_end():
+            raise FileFormatError(self.path, self.line, f"file ends early: expected {expected}")
+        item = self._items[self._next]
+        self._next += 1
+        return item
+
+    def float(self, expected: str) -> float:
+        line, text = self._take(expected)
+        return parse_float(self.path, line, text, expected)
+
+    def int(self, expected: str) -> int:
+        line, text = self._take(expected)
+        return parse_int(self.path, line, text, expected)
