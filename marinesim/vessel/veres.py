@@ -8,9 +8,9 @@ The source convention, established from the files in ``rao/`` (``tests/test_rao_
 repeats each check on the S175 and the supply vessel):
 
 * ``FREQ`` is the **wave** frequency in rad/s, the same list at every speed. At the lowest
-  frequency |pitch| / k(FREQ) stays at 1.02 in following seas and within 10 % in head seas
-  for every speed up to 20 kn; read as encounter frequency the ratio would fall to 0.8 in head
-  seas and rise to 1.3 in following seas at 20 kn.
+  frequency |pitch| / k(FREQ) stays at 1.02 in following seas and within 10 % (1.09) in head
+  seas for every speed up to 20 kn; read as encounter frequency the ratio would rise to 1.32
+  in head seas and fall to 0.78 in following seas at 20 kn.
 * ``HEAD`` is the direction the waves travel towards relative to the bow in degrees, 0 following,
   90 towards port, 180 head seas (marinesim's ``beta_rel``): at speed the head-sea pitch peak
   moves to lower wave frequency (higher encounter frequency) and the following-sea heave at
