@@ -31,6 +31,9 @@ def main(argv: list[str] | None = None) -> int:
     except MarinesimError as error:
         print(f"marinesim {args.command}: error: {error}", file=sys.stderr)
         return 2
+    except KeyboardInterrupt:
+        print(f"marinesim {args.command}: interrupted (files being written were discarded)", file=sys.stderr)
+        return 130
     except OSError as error:
         print(f"marinesim {args.command}: error: {error.strerror or error}: {error.filename}", file=sys.stderr)
         return 2

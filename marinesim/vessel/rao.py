@@ -156,7 +156,7 @@ def make_table(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: n
     order = np.argsort(beta, kind="stable")
     beta, values = beta[order], values[:, order]
     eps = 1e-9
-    mirrored = beta[0] >= -eps and abs(beta[0]) < eps and abs(beta[-1] - math.pi) < eps
+    mirrored = bool(abs(beta[0]) < eps and abs(beta[-1] - math.pi) < eps)
     if mirrored:
         inner = (beta > eps) & (beta < math.pi - eps)
         beta = np.concatenate([beta, 2.0 * math.pi - beta[inner][::-1]])
