@@ -73,7 +73,7 @@ def read_capytaine(path: str | Path, *, roll_damping: float = 0.0) -> RaoTable:
     if roll_damping > 0.0:
         extra[3, 3] = roll_damping * _critical_roll_damping(path, omega, mass, added, stiffness)
         notes.append(f"extra linear roll damping {100 * roll_damping:g} % of critical "
-                     f"({extra[3, 3]:.4g} N m s/rad)")
+                     f"({extra[3, 3]:.10g} N m s/rad)")
     impedance = (-omega[:, None, None] ** 2 * (mass + added) - 1j * omega[:, None, None] * (damping + extra)
                  + stiffness)
     try:

@@ -147,11 +147,13 @@ class Response:
         to_csv = np.array([1.0, 1.0, 1.0] + [180.0 / math.pi] * 3)
         values = [times[:, None], disp * to_csv, vel * to_csv, acc * to_csv]
         if self.points:
-            kin = RotationKinematics(disp[:, 3:6], vel[:, 3:6], acc[:, 3:6])
-            for i, p in enumerate(self.points.values()):
-                position, velocity, acceleration = kin.point(p, disp[:, :3], vel[:, :3], acc[:, :3])
-                relative = position[:, 2] - p[2] - linear[:, 19 + i]
-                values.append(np.column_stack([position, velocity[:, 2], acceleration[:, 2], relative]))
+            offsets = np.array(list(self.points.values()))
+            kinematics = RotationKinematics(disp[:, 3:6], vel[:, 3:6], acc[:, 3:6])
+            position, velocity, acceleration = kinematics.points(offsets, disp[:, :3], vel[:, :3], acc[:, :3])
+            relative = position[..., 2] - offsets[:, 2] - linear[:, 19:19 + len(offsets)]
+            for i in range(len(offsets)):
+                values.append(np.column_stack([position[:, i], velocity[:, i, 2], acceleration[:, i, 2],
+                                               relative[:, i]]))
         values.append(linear[:, 18:19])
         return dict(zip(self.columns, np.concatenate(values, axis=1).T))
 
@@ -176,35 +178,48 @@ class Response:
 
 
 class RotationKinematics:
-    """``R = Rz(yaw) Ry(pitch) Rx(roll)`` and its exact first and second time derivatives, per time."""
+    """``R = Rz(yaw) Ry(pitch) Rx(roll)`` applied to body vectors, with exact first and second time
+    derivatives, per time step. ``angles``, ``rates``, ``accelerations``: (T, 3) roll, pitch, yaw."""
+
+    AXES = (2, 1, 0)  # factors of R from the left: yaw about z, pitch about y, roll about x
 
     def __init__(self, angles: np.ndarray, rates: np.ndarray, accelerations: np.ndarray) -> None:
-        factors = [_axis_rotation(axis, angles[:, j], rates[:, j], accelerations[:, j])
-                   for j, axis in ((2, 2), (1, 1), (0, 0))]
-        (a, da, dda), (b, db, ddb), (c, dc, ddc) = factors
-        self.matrix = a @ b @ c
-        self.rate = da @ b @ c + a @ db @ c + a @ b @ dc
-        self.acceleration = (dda @ b @ c + a @ ddb @ c + a @ b @ ddc
-                             + 2.0 * (da @ db @ c + da @ b @ dc + a @ db @ dc))
+        self._factors = [(axis, np.cos(angles[:, axis])[:, None], np.sin(angles[:, axis])[:, None],
+                          rates[:, axis, None], accelerations[:, axis, None]) for axis in self.AXES]
 
-    def point(self, p: np.ndarray, xi: np.ndarray, xi_dot: np.ndarray, xi_ddot: np.ndarray):
-        """Position, velocity and acceleration (T, 3) of body point ``p`` given the translations."""
-        return xi + self.matrix @ p, xi_dot + self.rate @ p, xi_ddot + self.acceleration @ p
+    def points(self, p: np.ndarray, xi: np.ndarray, xi_dot: np.ndarray, xi_ddot: np.ndarray):
+        """Positions, velocities and accelerations (T, P, 3) of body points ``p`` (P, 3), given the
+        translations (T, 3)."""
+        v = np.broadcast_to(np.asarray(p, dtype=float), (xi.shape[0],) + np.shape(p))
+        # d^n/dt^n (A B C) p: the orders of the three factors' time derivatives and their weights
+        first = ((1, 0, 0), (0, 1, 0), (0, 0, 1))
+        second = ((2, 0, 0), (0, 2, 0), (0, 0, 2), (1, 1, 0), (1, 0, 1), (0, 1, 1))
+        position = self._apply((0, 0, 0), v)
+        velocity = sum(self._apply(orders, v) for orders in first)
+        acceleration = sum(self._apply(orders, v) * (1.0 if 2 in orders else 2.0) for orders in second)
+        return xi[:, None] + position, xi_dot[:, None] + velocity, xi_ddot[:, None] + acceleration
+
+    def _apply(self, orders: tuple[int, int, int], v: np.ndarray) -> np.ndarray:
+        """``F1 F2 F3 v`` where each factor is R, dR/dt or d2R/dt2 as ``orders`` says."""
+        for (axis, c, s, rate, acceleration), order in zip(reversed(self._factors), reversed(orders)):
+            if order == 0:
+                v = _turn(axis, 0, c, s, v)
+            elif order == 1:
+                v = _turn(axis, 1, c, s, v) * rate[..., None]
+            else:
+                v = (_turn(axis, 2, c, s, v) * (rate ** 2)[..., None]
+                     + _turn(axis, 1, c, s, v) * acceleration[..., None])
+        return v
 
 
-def _axis_rotation(axis: int, angle: np.ndarray, rate: np.ndarray, acceleration: np.ndarray):
-    """Rotation about ``axis`` (0 x, 1 y, 2 z) by ``angle`` and its first and second time derivatives."""
-    c, s = np.cos(angle), np.sin(angle)
-    n = angle.size
-    r, dr, ddr = np.zeros((n, 3, 3)), np.zeros((n, 3, 3)), np.zeros((n, 3, 3))
-    i, j = [(1, 2), (2, 0), (0, 1)][axis]          # the plane rotated: y-z, z-x, x-y
-    r[:, axis, axis] = 1.0
-    r[:, i, i], r[:, i, j], r[:, j, i], r[:, j, j] = c, -s, s, c
-    # d/dangle of the plane block is [[-s, -c], [c, -s]]; the second derivative is minus the block.
-    d1 = np.zeros((n, 3, 3))
-    d1[:, i, i], d1[:, i, j], d1[:, j, i], d1[:, j, j] = -s, -c, c, -s
-    d2 = np.zeros((n, 3, 3))
-    d2[:, i, i], d2[:, i, j], d2[:, j, i], d2[:, j, j] = -c, s, -s, -c
-    dr = d1 * rate[:, None, None]
-    ddr = d2 * (rate ** 2)[:, None, None] + d1 * acceleration[:, None, None]
-    return r, dr, ddr
+def _turn(axis: int, order: int, c: np.ndarray, s: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """The ``order``-th derivative with respect to the angle of the rotation about ``axis``
+    (0 x, 1 y, 2 z) with cosine ``c`` and sine ``s``, applied to vectors ``v`` (T, P, 3). The
+    n-th derivative turns the plane by ``angle + n pi/2`` and drops the axis component (n >= 1)."""
+    i, j = ((1, 2), (2, 0), (0, 1))[axis]          # the plane rotated: y-z, z-x, x-y
+    c, s = ((c, s), (-s, c), (-c, -s))[order]      # cos and sin of angle + order pi/2
+    out = np.empty(v.shape)
+    out[..., i] = c * v[..., i] - s * v[..., j]
+    out[..., j] = s * v[..., i] + c * v[..., j]
+    out[..., axis] = v[..., axis] if order == 0 else 0.0
+    return out

@@ -1,0 +1,97 @@
+"""Capytaine: a box barge solved here with Capytaine, its NetCDF read through marinesim.
+
+References: the free-floating long-wave limits (heave -> 1, pitch -> k cos beta, roll ->
+k sin beta) and Capytaine's own ``post_pro.rao`` (in its exp(-i w t) convention: conjugated).
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+capytaine = pytest.importorskip("capytaine")
+xarray = pytest.importorskip("xarray")
+
+from marinesim.errors import FileFormatError  # noqa: E402
+from marinesim.vessel import read_rao  # noqa: E402
+
+pytestmark = pytest.mark.slow
+
+LENGTH, BEAM, DRAFT = 40.0, 10.0, 3.0
+OMEGA = np.array([0.05, 0.1, 0.3, 0.5, 0.7, 0.9, 1.0, 1.1, 1.2, 1.4, 1.7, 2.0])
+DIRECTIONS = np.linspace(0.0, math.pi, 5)
+
+
+@pytest.fixture(scope="module")
+def barge(tmp_path_factory):
+    """(dataset, path of its NetCDF as Capytaine writes it) for a 40 x 10 m barge, draft 3 m."""
+    mesh = capytaine.mesh_parallelepiped(size=(LENGTH, BEAM, DRAFT + 1.0), resolution=(12, 4, 3),
+                                         center=(0.0, 0.0, (1.0 - DRAFT) / 2))
+    body = capytaine.FloatingBody(mesh=mesh, dofs=capytaine.rigid_body_dofs(rotation_center=(0, 0, 0)),
+                                  center_of_mass=(0.0, 0.0, -0.5)).immersed_part()
+    body.inertia_matrix = body.compute_rigid_body_inertia(rho=1025.0)  # the same rho as the BEM problems:
+    body.hydrostatic_stiffness = body.compute_hydrostatic_stiffness(rho=1025.0)  # else heave -> 1.025
+    problems = xarray.Dataset(coords={"omega": OMEGA, "wave_direction": DIRECTIONS,
+                                      "radiating_dof": list(body.dofs), "water_depth": [np.inf], "rho": [1025.0]})
+    dataset = capytaine.BEMSolver().fill_dataset(problems, body)
+    path = tmp_path_factory.mktemp("capytaine") / "barge.nc"
+    capytaine.export_dataset(path, dataset)
+    return dataset, path
+
+
+def test_long_wave_limits_of_the_solved_barge(barge):
+    _, path = barge
+    table = read_rao(path)
+    w = np.array([OMEGA[0]])
+    k = w[0] ** 2 / table.g
+    for beta in (0.0, math.pi / 4, math.pi / 2, 3 * math.pi / 4, math.pi, 1.5 * math.pi):
+        h = table(w, np.array([beta]))[0]
+        assert h[2] == pytest.approx(1.0, abs=0.01)                          # heave -> 1
+        assert abs(h[4]) == pytest.approx(k * abs(math.cos(beta)), abs=0.03 * k)  # pitch -> k |cos b|
+        if abs(math.cos(beta)) > 0.5:  # pitch = i k cos(beta) in marinesim's exp(+i w t)
+            assert math.degrees(np.angle(h[4] * np.sign(math.cos(beta)))) == pytest.approx(90.0, abs=3.0)
+        assert abs(h[3]) == pytest.approx(k * abs(math.sin(beta)), abs=0.1 * k)   # roll -> k |sin b|
+
+
+def test_raos_equal_capytaines_own_conjugated(barge):
+    dataset, path = barge
+    table = read_rao(path)
+    theirs = capytaine.post_pro.rao(dataset).transpose("omega", "wave_direction", "radiating_dof").values
+    for b, beta in enumerate(DIRECTIONS):
+        ours = table(OMEGA, np.full(OMEGA.size, beta))
+        np.testing.assert_allclose(ours, np.conj(theirs[:, b, :]), rtol=1e-6, atol=1e-9)
+
+
+def test_roll_damping_in_percent_of_critical(barge):
+    # the extra damping is 2 zeta sqrt(K44 (M44 + A44(w_n))); passing the same matrix to
+    # Capytaine's rao reproduces ours, and 10 % of critical cuts the beam-sea roll peak
+    dataset, path = barge
+    undamped, damped = read_rao(path), read_rao(path, roll_damping=0.10)
+    note = next(n for n in damped.notes if "roll damping" in n)
+    b44 = float(note.split("(")[1].split()[0])
+    k44 = float(dataset["hydrostatic_stiffness"].sel(influenced_dof="Roll", radiating_dof="Roll"))
+    m44 = float(dataset["inertia_matrix"].sel(influenced_dof="Roll", radiating_dof="Roll"))
+    a44 = dataset["added_mass"].sel(influenced_dof="Roll", radiating_dof="Roll").values
+    natural = math.sqrt(k44 / (m44 + np.interp(math.sqrt(k44 / m44), OMEGA, a44)))
+    assert b44 == pytest.approx(0.2 * math.sqrt(k44 * (m44 + np.interp(natural, OMEGA, a44))), rel=0.02)
+    dissipation = xarray.zeros_like(dataset["hydrostatic_stiffness"])
+    dissipation.loc[{"influenced_dof": "Roll", "radiating_dof": "Roll"}] = b44
+    theirs = capytaine.post_pro.rao(dataset, dissipation=dissipation)
+    theirs = theirs.transpose("omega", "wave_direction", "radiating_dof").values
+    ours = damped(OMEGA, np.full(OMEGA.size, math.pi / 2))
+    np.testing.assert_allclose(ours, np.conj(theirs[:, 2, :]), rtol=1e-4, atol=1e-9)
+    fine = np.linspace(OMEGA[0], OMEGA[-1], 2000)
+    beam = np.full(fine.size, math.pi / 2)
+    assert np.abs(damped(fine, beam)[:, 3]).max() < 0.8 * np.abs(undamped(fine, beam)[:, 3]).max()
+
+
+def test_dataset_without_coefficients_is_refused(barge, tmp_path):
+    dataset, _ = barge
+    path = tmp_path / "partial.nc"
+    capytaine.export_dataset(path, dataset.drop_vars(["added_mass", "inertia_matrix"]))
+    with pytest.raises(FileFormatError, match="missing: added_mass, inertia_matrix"):
+        read_rao(path)
+    junk = tmp_path / "junk.nc"
+    junk.write_bytes(b"CDF\x01 not really")
+    with pytest.raises(FileFormatError, match="not a readable NetCDF dataset"):
+        read_rao(junk)
