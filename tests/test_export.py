@@ -129,6 +129,11 @@ def test_cli_export_and_rao(tmp_path):
     assert (tmp_path / "rao.png").stat().st_size > 30_000
     text = cli("rao", str(ROOT / "rao" / "tanker" / "tanker.4")).stdout
     assert "long-wave limits" in text and re.search(r"pitch\s+1\.000\s+ok", text)
+    for args, message in ((("export", str(scenario), "--out", "x.csv", "--dt", "0"), "run.dt_s: must be in (0"),
+                          (("rao", str(scenario)), "unknown RAO format; supported")):
+        refused = cli(*args, cwd=tmp_path)
+        assert refused.returncode == 2 and message in refused.stderr and "Traceback" not in refused.stderr
+        assert len(refused.stderr.strip().splitlines()) == 1 and not (tmp_path / "x.csv").exists()
 
 
 @pytest.mark.parametrize("change,message", [

@@ -22,7 +22,7 @@ from marinesim import __version__
 from marinesim.angles import compass_to_math
 from marinesim.atomic import atomic_path
 from marinesim.errors import MarinesimError, ParameterError, ScenarioError
-from marinesim.scenario.schema import MAX_DURATION_S, Scenario
+from marinesim.scenario.schema import Scenario, check_run
 from marinesim.sea.ocean import Ocean
 from marinesim.sea.summary import summary
 from marinesim.vessel.response import Response, Track
@@ -56,12 +56,7 @@ def with_run(scenario: Scenario, duration: float | None = None, dt: float | None
     run = dataclasses.replace(run, duration_s=run.duration_s if duration is None else float(duration),
                               dt_s=run.dt_s if dt is None else float(dt),
                               seed=run.seed if seed is None else int(seed))
-    if not 0.0 < run.duration_s <= MAX_DURATION_S:
-        raise ParameterError(f"duration must be in (0, {MAX_DURATION_S:g}] s, got {run.duration_s!r}")
-    if not 0.0 < run.dt_s <= run.duration_s:
-        raise ParameterError(f"time step must be in (0, duration], got {run.dt_s!r}")
-    if run.seed < 0:
-        raise ParameterError(f"seed must be >= 0, got {run.seed!r}")
+    check_run(run)
     return dataclasses.replace(scenario, run=run)
 
 

@@ -152,7 +152,7 @@ def _parse(path: Path, data: dict[str, Any]) -> Scenario:
     sea = _checked("ocean.depth_m", lambda: SeaState(tuple(systems), depth=depth))
     options = OceanOptions(**ocean)
     run_options = RunOptions(**run)
-    _check_run(run_options)
+    check_run(run_options)
     _checked("ocean", lambda: _check_ocean(options))
     vessel = _vessel(path, _table(data["vessel"], "vessel")) if "vessel" in data else None
     return Scenario(path.resolve(), sea, options, run_options, vessel)
@@ -235,7 +235,8 @@ def _checked(where: str, build):
         raise ScenarioError(f"{where}: {error}") from None
 
 
-def _check_run(run: RunOptions) -> None:
+def check_run(run: RunOptions) -> None:
+    """Refuse run options out of range (:class:`ScenarioError` naming the ``run.*`` key)."""
     if not 0.0 < run.duration_s <= MAX_DURATION_S:
         raise ScenarioError(f"run.duration_s: must be in (0, {MAX_DURATION_S:g}] s, got {run.duration_s!r}")
     if not 0.0 < run.dt_s <= run.duration_s:

@@ -41,7 +41,7 @@ def detect_format(path: Path) -> str:
     first = next((line for line in text.splitlines() if line.strip()), "")
     if len(first.split()) == 7 and _numbers(first.split()):
         return "wamit"
-    if "heading_deg" in text:
+    if any("heading_deg" in line and "_phase_deg" in line for line in text.splitlines()):
         return "native"
     raise FileFormatError(path, None, "unknown RAO format; supported: "
                           + "; ".join(f"{name} ({what})" for name, what in FORMATS.items()))
