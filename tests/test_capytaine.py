@@ -95,3 +95,24 @@ def test_dataset_without_coefficients_is_refused(barge, tmp_path):
     junk.write_bytes(b"CDF\x01 not really")
     with pytest.raises(FileFormatError, match="not a readable NetCDF dataset"):
         read_rao(junk)
+
+
+hypothesis = pytest.importorskip("hypothesis")
+from hypothesis import HealthCheck, given, settings, strategies as st  # noqa: E402
+
+from marinesim.errors import MarinesimError  # noqa: E402
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(cut=st.floats(0.0, 1.0), flips=st.lists(st.tuples(st.floats(0.0, 1.0), st.integers(0, 255)), max_size=6))
+def test_fuzz_capytaine_netcdf(barge, tmp_path_factory, cut, flips):
+    # truncated or corrupted NetCDF: the project's error or a table, nothing else
+    data = bytearray(barge[1].read_bytes())
+    for where, value in flips:
+        data[int(where * (len(data) - 1))] = value
+    path = tmp_path_factory.mktemp("fuzz") / "barge.nc"
+    path.write_bytes(bytes(data[: max(4, int(cut * len(data)))]))
+    try:
+        read_rao(path)
+    except MarinesimError:
+        pass

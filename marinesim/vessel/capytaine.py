@@ -23,7 +23,7 @@ from pathlib import Path
 
 import numpy as np
 
-from marinesim.errors import FileFormatError, ParameterError
+from marinesim.errors import FileFormatError, MarinesimError, ParameterError
 from marinesim.vessel.rao import DOFS, RaoTable, make_table
 
 NEEDED = ("added_mass", "radiation_damping", "inertia_matrix", "hydrostatic_stiffness")
@@ -35,6 +35,16 @@ def read_capytaine(path: str | Path, *, roll_damping: float = 0.0) -> RaoTable:
     if not (math.isfinite(roll_damping) and 0.0 <= roll_damping < 1.0):
         raise ParameterError(f"roll damping must be in [0, 1) of critical, got {roll_damping!r}")
     dataset = _open(path)
+    try:
+        return _solve(path, dataset, roll_damping)
+    except MarinesimError:
+        raise
+    except (KeyError, ValueError, IndexError, TypeError) as error:  # a dataset shaped unlike Capytaine's
+        raise FileFormatError(path, None, f"unexpected dataset structure ({type(error).__name__}: {error})") from None
+
+
+def _solve(path: Path, dataset, roll_damping: float) -> RaoTable:
+    """The RAO table from an opened dataset (see the module docstring)."""
     missing = [name for name in NEEDED if name not in dataset]
     has_excitation = "excitation_force" in dataset or {"diffraction_force", "Froude_Krylov_force"} <= set(dataset)
     if missing or not has_excitation:
