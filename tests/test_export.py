@@ -130,7 +130,9 @@ def test_cli_export_and_rao(tmp_path):
     text = cli("rao", str(ROOT / "rao" / "tanker" / "tanker.4")).stdout
     assert "long-wave limits" in text and re.search(r"pitch\s+1\.000\s+ok", text)
     for args, message in ((("export", str(scenario), "--out", "x.csv", "--dt", "0"), "run.dt_s: must be in (0"),
-                          (("rao", str(scenario)), "unknown RAO format; supported")):
+                          (("rao", str(scenario)), "unknown RAO format; supported"),
+                          (("rao", str(ROOT / "rao" / "s175" / "input.re1"), "--plot", "x.png", "--headings", "head"),
+                           "--headings must be comma-separated degrees")):
         refused = cli(*args, cwd=tmp_path)
         assert refused.returncode == 2 and message in refused.stderr and "Traceback" not in refused.stderr
         assert len(refused.stderr.strip().splitlines()) == 1 and not (tmp_path / "x.csv").exists()
@@ -142,6 +144,12 @@ def test_cli_export_and_rao(tmp_path):
     (("heading_deg = 30.0", "heading_deg = 400.0"), "vessel.heading_deg: must be a compass heading"),
     (("bow = [120.0, 0.0, 12.0]", "bow = [120.0, 0.0]"), r"vessel.points.bow: expected \[x, y, z\]"),
     (("tanker.4\"", "nothere.4\""), "vessel.rao: .*nothere.4: no such file"),
+    (("speed_kn = 6.0", "speed_kn = 6.0\nroll_damping_pct = 150.0"), "vessel.roll_damping_pct: must be in 0..100"),
+    (("speed_kn = 6.0", "speed_kn = 6.0\nroll_damping_pct = 5.0"), "vessel.rao: extra roll damping applies to "
+                                                                  "Capytaine datasets only"),
+    (("speed_kn = 6.0", "speed_kn = 6.0\nulen_m = -2.0"), "vessel.ulen_m: must be > 0"),
+    (("bow = [120.0, 0.0, 12.0]", "bow = [120.0, 0.0, 12.0]\n\"bad name\" = [0.0, 0.0, 0.0]"),
+     "vessel.points.bad name: a point name must be a plain identifier"),
     (("hull = ", "# hull = "), None),
 ])
 def test_bad_vessel_sections_are_refused_with_the_key(tmp_path, change, message):
