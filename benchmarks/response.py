@@ -58,7 +58,7 @@ def main() -> None:
     scenario = load_scenario(ROOT / "configs" / "default.toml")
     response = build_response(scenario)
     steps, dt = 72_000, 0.05
-    n, columns = len(response.components), len(response._coefficients[0])
+    n, columns = len(response.components), response.linear([0.0]).shape[1]
 
     def linear():
         for _ in response.linear_steps(0.0, dt, steps):

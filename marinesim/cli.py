@@ -115,14 +115,14 @@ def _run_rao(args: argparse.Namespace) -> int:
     from marinesim.vessel.plot import plot_rao
     from marinesim.vessel.summary import format_rao_summary, rao_summary
 
+    try:
+        headings = [require_finite("heading", float(v)) for v in args.headings.split(",")]
+    except ValueError:
+        raise ParameterError(f"--headings must be comma-separated degrees, got {args.headings!r}") from None
     table = read_rao(args.file, ulen=args.ulen, roll_damping=require_finite("roll damping", args.roll_damping_pct) / 100)
     report = rao_summary(table)
     print(json.dumps(report) if args.json else format_rao_summary(report))
     if args.plot:
-        try:
-            headings = [require_finite("heading", float(v)) for v in args.headings.split(",")]
-        except ValueError:
-            raise ParameterError(f"--headings must be comma-separated degrees, got {args.headings!r}") from None
         with atomic_path(args.plot) as temp:
             plot_rao(table, temp, headings, require_finite("speed", args.speed_kn) * KNOT)
         if not args.json:

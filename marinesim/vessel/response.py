@@ -24,7 +24,7 @@ from typing import Iterator
 
 import numpy as np
 
-from marinesim.errors import ParameterError, require_at_least, require_finite
+from marinesim.errors import ParameterError, require_finite, require_positive
 from marinesim.sea.ocean import Components
 from marinesim.vessel.rao import DOFS, RaoTable
 
@@ -45,12 +45,6 @@ class Track:
     speed: float = 0.0
     x0: float = 0.0
     y0: float = 0.0
-
-    def position(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Reference point (x, y) in E at times ``t`` (s)."""
-        t = np.asarray(t, dtype=float)
-        return (self.x0 + self.speed * t * math.cos(self.heading),
-                self.y0 + self.speed * t * math.sin(self.heading))
 
 
 def motion_columns(points: dict[str, tuple[float, float, float]]) -> list[str]:
@@ -113,9 +107,7 @@ class Response:
         folded into the coefficients. The product is memory-bound, so components go in chunks
         whose table stays in cache while a run of blocks reuses it.
         """
-        dt = require_at_least("time step", dt, 0.0)
-        if dt <= 0:
-            raise ParameterError(f"time step must be > 0 s, got {dt!r}")
+        dt = require_positive("time step", dt)
         start = require_finite("start time", start)
         steps = int(steps)
         block = min(BLOCK, max(steps, 1))
@@ -161,20 +153,6 @@ class Response:
         """:meth:`frame` for ``start + dt * arange(steps)``, block by block (streams long runs)."""
         for times, linear in self.linear_steps(start, dt, steps):
             yield self.frame(times, linear)
-
-    def expected_variance(self) -> np.ndarray:
-        """Variance of each column of :meth:`linear` over an infinitely long run.
-
-        ``sum |sum C|^2 / 2`` over distinct encounter frequencies ``|w_e|``: components that share
-        one add coherently (a term at ``-w_e`` is the conjugate of one at ``w_e``); a component
-        met at ``w_e = 0`` is a constant offset and adds nothing.
-        """
-        coefficients = np.where(self.omega_e[:, None] < 0, np.conj(self._coefficients), self._coefficients)
-        key = np.round(np.abs(self.omega_e), 9)
-        distinct, group = np.unique(key, return_inverse=True)
-        sums = np.zeros((distinct.size, coefficients.shape[1]), dtype=complex)
-        np.add.at(sums, group, coefficients)
-        return np.sum(np.abs(sums[distinct > 0]) ** 2, axis=0) / 2.0
 
 
 class RotationKinematics:

@@ -7,7 +7,7 @@ import math
 import numpy as np
 
 from marinesim.constants import KNOT
-from marinesim.vessel.rao import DOFS, RaoTable
+from marinesim.vessel.rao import DOFS, RaoTable, long_wave_limit
 
 LIMIT_TOLERANCE = 0.15
 """A long-wave ratio within this of 1 is reported ``ok``; otherwise ``check`` (units, ULEN...)."""
@@ -16,19 +16,18 @@ RESONANCE_HEADINGS = {"heave": 90.0, "roll": 90.0, "pitch": 180.0}
 
 
 def long_wave_check(table: RaoTable) -> dict[str, dict]:
-    """Ratio of |H| to the long-wave limit at the lowest tabulated frequency (first speed).
+    """Ratio of |H| to :func:`long_wave_limit` at the lowest tabulated frequency (first speed).
 
-    Surge against ``|cos beta|`` in head seas, sway against ``|sin beta|`` and roll against
-    ``k |sin beta|`` in beam seas (waves towards port), heave against 1 (mean over headings),
-    pitch against ``k |cos beta|`` in head seas; yaw has limit 0 and is not checked.
+    Surge and pitch in head seas, sway and roll in beam seas (waves towards port), heave as the
+    mean over all headings; yaw has limit 0 and is not checked.
     """
     omega = float(table.omega[0])
-    k = omega ** 2 / table.g
-    head, beam = table(np.array([omega]), np.array([math.pi]), table.speed[0])[0], \
-        table(np.array([omega]), np.array([math.pi / 2]), table.speed[0])[0]
+    headings = np.array([math.pi, math.pi / 2])
+    (head, beam) = np.abs(table(np.full(2, omega), headings, table.speed[0]))
+    limit_head, limit_beam = np.abs(long_wave_limit(np.full(2, omega), headings, table.g))
     heave = float(np.mean(np.abs(table.values[0, :, 0, 2])))
-    ratios = {"surge": abs(head[0]), "sway": abs(beam[1]), "heave": heave, "roll": abs(beam[3]) / k,
-              "pitch": abs(head[4]) / k}
+    ratios = {"surge": head[0] / limit_head[0], "sway": beam[1] / limit_beam[1], "heave": heave,
+              "roll": beam[3] / limit_beam[3], "pitch": head[4] / limit_head[4]}
     out = {}
     for dof, ratio in ratios.items():
         out[dof] = {"ratio": float(ratio), "status": "ok" if abs(ratio - 1.0) <= LIMIT_TOLERANCE else "check"}
