@@ -49,8 +49,135 @@ def _parser() -> argparse.ArgumentParser:
     _add_run(commands)
     _add_export(commands)
     _add_rao(commands)
+    _add_hull(commands)
+    _add_wake(commands)
     _add_sea(commands)
     return parser
+
+
+def _add_hull_options(p: argparse.ArgumentParser) -> None:
+    g = p.add_argument_group("hull placement (meshes carry no units and often other axes)")
+    g.add_argument("--units", default="m", help="mesh length units: m, cm, mm, ft, in (default m)")
+    g.add_argument("--scale", type=float, default=1.0, help="geometric scale of a model mesh, e.g. 50 for 1:50")
+    g.add_argument("--axes", default="x,y,z", help="mesh axes that become body x (forward), y (port), z (up), "
+                                                   "e.g. 'x,-z,y' for a y-up mesh (default x,y,z)")
+    g.add_argument("--draft", type=float, help="draft, m: the lowest point goes to z = -draft (default: the "
+                                               "mesh's z = 0 is the waterline)")
+    g.add_argument("--trim-deg", type=float, default=0.0, help="trim, deg, bow down positive (default 0)")
+
+
+def _hull_from_args(args: argparse.Namespace):
+    from marinesim.hull import load_hull
+
+    return load_hull(args.hull, units=args.units, scale=args.scale, axes=args.axes, draft=args.draft,
+                     trim_deg=args.trim_deg)
+
+
+def _add_hull(commands: argparse._SubParsersAction) -> None:
+    p = commands.add_parser(
+        "hull", help="check a hull mesh and print its hydrostatics",
+        description="Read a hull (STL, OBJ, PLY, GLB, OFF or WAMIT .gdf), place it in the body frame "
+                    "(x forward, y to port, z up, waterline z = 0), check it and print its hydrostatics.")
+    p.add_argument("hull", type=Path, help="hull mesh file")
+    _add_hull_options(p)
+    p.add_argument("--json", action="store_true", help="print the summary as one JSON object")
+    p.set_defaults(handler=_run_hull)
+
+
+def _run_hull(args: argparse.Namespace) -> int:
+    from marinesim.hull import format_hydrostatics, hydrostatics
+
+    hull = _hull_from_args(args)
+    statics = hydrostatics(hull)
+    if args.json:
+        print(json.dumps(statics.as_dict() | {"triangles": len(hull.faces), "notes": list(hull.notes)}))
+    else:
+        print(f"{hull.source}: {len(hull.faces):,} triangles")
+        print(format_hydrostatics(statics))
+        for note in hull.notes:
+            print(f"note: {note}")
+    return 0
+
+
+def _add_wake(commands: argparse._SubParsersAction) -> None:
+    p = commands.add_parser(
+        "wake", help="compute the Kelvin wake and wave resistance of a hull",
+        description="Integrate Tuck's amplitude function A(theta) exactly over the hull's wetted triangles, "
+                    "give Michell's wave resistance, and compute the far-field wake on a grid in the vessel "
+                    "frame. Results are cached; --out writes the field, its grid and the parameters (.npz).")
+    p.add_argument("hull", type=Path, help="hull mesh file")
+    p.add_argument("--speed-kn", required=True,
+                   help="speed, kn; several comma-separated speeds are precomputed in one call")
+    _add_hull_options(p)
+    g = p.add_argument_group("grid (default: lambda0 / 16 spacing, lambda0 = 2 pi U^2 / g)")
+    g.add_argument("--nx", type=int, default=2048, help="cells along the track (default 2048)")
+    g.add_argument("--ny", type=int, default=1024, help="cells across (default 1024)")
+    g.add_argument("--spacing", type=float, help="cell size, m")
+    out = p.add_argument_group("output")
+    out.add_argument("--out", type=Path, help="write the wake (.npz); with several speeds, NAME_<speed>kn.npz")
+    out.add_argument("--plot", type=Path, metavar="PATH", help="draw the field and |A(theta)| (PNG)")
+    out.add_argument("--json", action="store_true", help="print one JSON object (a list with several speeds)")
+    out.add_argument("--no-cache", action="store_true", help="compute even if the cache has the result")
+    out.add_argument("--quiet", action="store_true", help="no progress bar")
+    p.set_defaults(handler=_run_wake)
+
+
+def _run_wake(args: argparse.Namespace) -> int:
+    import time
+
+    from marinesim.constants import KNOT
+    from marinesim.wake.cache import cached_wake
+    from marinesim.wake.compute import WakeGrid, compute_wake
+    from marinesim.wake.plot import plot_wake
+
+    try:
+        speeds = [require_finite("speed", float(v)) for v in args.speed_kn.split(",")]
+    except ValueError:
+        raise ParameterError(f"--speed-kn must be comma-separated knots, got {args.speed_kn!r}") from None
+    if any(v <= 0 for v in speeds):
+        raise ParameterError(f"--speed-kn must be > 0 (a hull at rest makes no wake), got {args.speed_kn}")
+    grid = WakeGrid(args.nx, args.ny, args.spacing)
+    hull = _hull_from_args(args)
+    reports = []
+    for speed_kn in speeds:
+        started = time.perf_counter()
+        if args.no_cache:
+            wake, cached = compute_wake(hull, speed_kn * KNOT, grid, progress=not args.quiet), False
+        else:
+            wake, cached = cached_wake(hull, speed_kn * KNOT, grid, progress=not args.quiet)
+        report = {key: wake.info[key] for key in ("speed_m_s", "speed_kn", "froude", "wave_resistance_N",
+                                                  "wave_resistance_coefficient", "kelvin_half_angle_deg",
+                                                  "transverse_wavelength_m", "measured_transverse_wavelength_m")}
+        report |= {"seconds": time.perf_counter() - started, "cached": cached,
+                   "seconds_computing": wake.info["seconds_amplitude"] + wake.info["seconds_field"]}
+        for flag, suffix in ((args.out, ".npz"), (args.plot, ".png")):
+            if flag:
+                path = flag if len(speeds) == 1 else flag.with_name(f"{flag.stem}_{speed_kn:g}kn{flag.suffix or suffix}")
+                if suffix == ".npz":
+                    wake.save(path)
+                else:
+                    with atomic_path(path) as temp:
+                        plot_wake(wake, temp)
+                report["out" if suffix == ".npz" else "plot"] = str(path)
+        reports.append(report)
+        if not args.json:
+            print(_format_wake(report, hull.notes if speed_kn == speeds[0] else ()))
+    if args.json:
+        print(json.dumps(reports[0] if len(reports) == 1 else reports))
+    return 0
+
+
+def _format_wake(r: dict, notes: tuple[str, ...]) -> str:
+    angle = r["kelvin_half_angle_deg"]
+    lines = [f"{r['speed_kn']:.3g} kn ({r['speed_m_s']:.3f} m/s), Fn {r['froude']:.3f}: wave resistance "
+             f"{r['wave_resistance_N'] / 1e3:,.1f} kN (Cw {r['wave_resistance_coefficient']:.3e})",
+             f"  Kelvin half-angle measured on the field: "
+             + (f"{angle:.2f} deg (theory 19.47)" if angle is not None else "grid too small to measure"),
+             f"  transverse wavelength {r['transverse_wavelength_m']:.2f} m (2 pi U^2 / g)",
+             f"  {r['seconds']:.2f} s" + (" (from the cache)" if r["cached"] else "")]
+    lines += [f"  wrote {r[key]}" for key in ("out", "plot") if key in r]
+    lines += [f"note: {note}" for note in notes]
+    return "\n".join(lines)
 
 
 def _add_run(commands: argparse._SubParsersAction) -> None:
@@ -83,7 +210,8 @@ def _run_scenario(args: argparse.Namespace) -> int:
     files = run_headless(scenario, out_dir, progress=not args.quiet)
     described = {"sea_plot": "the sea state picture", "motions": "the vessel's 6-DOF motions",
                  "sidecar": "their metadata", "motions_plot": "a plot of the motions", "rao_plot": "the RAOs",
-                 "elevation": "the wave elevation at (0, 0)", "elevation_plot": "a plot of it"}
+                 "elevation": "the wave elevation at (0, 0)", "elevation_plot": "a plot of it",
+                 "wake_plot": "the Kelvin wake"}
     width = max(len(described[key]) for key in files)
     for key, path in files.items():
         print(f"wrote {described[key] + ':':{width + 1}s} {path}")

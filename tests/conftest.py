@@ -25,3 +25,18 @@ def close_angle_deg(a: float, b: float) -> float:
 
 
 __all__ = ["close_angle_deg", "math"]
+
+
+@pytest.fixture(scope="session", autouse=True)
+def wake_cache(tmp_path_factory):
+    """Wakes computed by the tests are cached in a temporary folder, never in the user's cache."""
+    import os
+
+    folder = tmp_path_factory.mktemp("wake-cache")
+    previous = os.environ.get("MARINESIM_CACHE_DIR")
+    os.environ["MARINESIM_CACHE_DIR"] = str(folder)
+    yield folder
+    if previous is None:
+        del os.environ["MARINESIM_CACHE_DIR"]
+    else:
+        os.environ["MARINESIM_CACHE_DIR"] = previous

@@ -1,7 +1,8 @@
 """The headless run of a scenario: what ``marinesim run`` does without a viewer.
 
 Writes, into one folder: ``sea.png`` (spectrum and surface); with a vessel, ``motions.csv``
-and its JSON sidecar (as ``marinesim export``), ``motions.png`` and ``rao.png``; without one,
+and its JSON sidecar (as ``marinesim export``), ``motions.png`` and ``rao.png``, and with a hull
+and a speed ``wake.png`` (the Kelvin wake, precomputed into the cache for every scenario speed); without one,
 ``wave_elevation.csv`` (elevation at the origin), its sidecar and ``wave_elevation.png``.
 Same scenario and seed: bit-identical tables.
 """
@@ -42,7 +43,25 @@ def run_headless(scenario: Scenario, out_dir: Path, progress: bool = True) -> di
                      f"{vessel.heading_deg:g} deg, seed {scenario.run.seed}")
     with atomic_path(files["rao_plot"]) as temp:
         plot_rao(vessel.rao, temp, [180.0, 135.0, 90.0, 45.0, 0.0], vessel.speed_m_s)
+    if vessel.hull is not None and vessel.wake_speeds_m_s:
+        files |= _wakes(scenario, out_dir, progress)
     return files
+
+
+def _wakes(scenario: Scenario, out_dir: Path, progress: bool) -> dict[str, Path]:
+    """Precompute (or read from the cache) the wakes of every scenario speed; draw the one at the vessel's."""
+    from marinesim.wake.cache import precompute_wakes
+    from marinesim.wake.plot import plot_wake
+
+    vessel = scenario.vessel
+    wakes = precompute_wakes(vessel.hull, vessel.wake_speeds_m_s, progress=progress)
+    if vessel.speed_m_s <= 0.0:
+        return {}
+    wake = next(w for w, _ in wakes if w.info["speed_m_s"] == vessel.speed_m_s)
+    path = out_dir / "wake.png"
+    with atomic_path(path) as temp:
+        plot_wake(wake, temp)
+    return {"wake_plot": path}
 
 
 def _wave_elevation(scenario: Scenario, out_dir: Path, progress: bool) -> dict[str, Path]:

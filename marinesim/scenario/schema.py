@@ -20,6 +20,12 @@ spreading = "cos2s"          # cos2s | mitsuyasu | cos2n-halfplane | long-creste
 [vessel]                     # optional: without it the scenario is a sea only
 rao = "../rao/tanker/tanker.4"  # RAO file, relative to this scenario file
 hull = "../hulls/tanker.gdf"    # optional hull mesh (wake, rendering)
+hull_units = "m"             # optional: the mesh's length units (m, cm, mm, ft, in)
+hull_scale = 1.0             # optional: geometric scale of a model mesh (50 for 1:50)
+hull_axes = "x,y,z"          # optional: mesh axes that become body x, y, z (e.g. "x,-z,y")
+hull_draft_m = 10.0          # optional: lowest point of the hull at z = -draft (default: mesh z = 0)
+hull_trim_deg = 0.0          # optional: trim, bow down positive
+wake_speeds_kn = [8.0, 12.0] # optional: more speeds to precompute the Kelvin wake for
 speed_kn = 0.0               # 0..40 kn, within the RAO table's speeds if it has several
 heading_deg = 0.0            # compass, where the bow points
 ulen_m = 1.0                 # optional: WAMIT length scale (default: from the .gdf beside)
@@ -45,6 +51,7 @@ from typing import Any
 
 from marinesim.constants import KNOT
 from marinesim.errors import MarinesimError, ScenarioError, require_finite
+from marinesim.hull import Hull, load_hull
 from marinesim.sea.build import wave_system
 from marinesim.sea.cascades import check_resolution, check_tile_count
 from marinesim.sea.seastate import SeaState
@@ -59,7 +66,11 @@ SEA_KEYS: dict[str, type] = {
 OCEAN_KEYS: dict[str, type] = {"depth_m": float, "tiles": int, "resolution": int, "choppiness": float}
 RUN_KEYS: dict[str, type] = {"duration_s": float, "dt_s": float, "seed": int}
 VESSEL_KEYS: dict[str, type] = {"rao": str, "hull": str, "speed_kn": float, "heading_deg": float,
-                                "ulen_m": float, "roll_damping_pct": float, "points": dict}
+                                "ulen_m": float, "roll_damping_pct": float, "points": dict, "hull_units": str,
+                                "hull_scale": float, "hull_axes": str, "hull_draft_m": float,
+                                "hull_trim_deg": float, "wake_speeds_kn": list}
+HULL_OPTIONS = {"hull_units": "units", "hull_scale": "scale", "hull_axes": "axes", "hull_draft_m": "draft",
+                "hull_trim_deg": "trim_deg"}  # scenario key -> load_hull option
 SECTIONS = ("ocean", "sea", "vessel", "run")
 MAX_SPEED_KN = 40.0
 MAX_DURATION_S = 7 * 24 * 3600.0
@@ -86,9 +97,11 @@ class Vessel:
     rao_path: Path
     rao: RaoTable
     hull_path: Path | None
+    hull: Hull | None                       # in the body frame, waterline at z = 0
     speed_m_s: float
     heading_deg: float                      # compass, where the bow points
     points: dict[str, tuple[float, float, float]]
+    wake_speeds_m_s: tuple[float, ...] = ()  # the vessel's speed (if > 0) and the extra wake speeds
 
     @property
     def speed_kn(self) -> float:
@@ -190,12 +203,23 @@ def _vessel(path: Path, table: dict) -> Vessel:
     if rao.speed.size > 1 and not low - 1e-6 <= speed <= high + 1e-6:
         raise ScenarioError(f"vessel.speed_kn: {speed_kn:g} kn is outside the RAO table's speeds "
                             f"{low / KNOT:.3g}..{high / KNOT:.3g} kn")
-    hull_path = None
+    hull_path = hull = None
+    hull_keys = [key for key in HULL_OPTIONS if key in values]
     if "hull" in values:
         hull_path = (path.parent / values["hull"]).resolve()
         if not hull_path.is_file():
             raise ScenarioError(f"vessel.hull: no such file {hull_path}")
-    return Vessel(rao_path, rao, hull_path, speed, heading, points)
+        options = {HULL_OPTIONS[key]: values[key] for key in hull_keys}
+        hull = _checked("vessel.hull", lambda: load_hull(hull_path, **options))
+    elif hull_keys:
+        raise ScenarioError(f"vessel.{hull_keys[0]}: given without vessel.hull")
+    extra = values.get("wake_speeds_kn", [])
+    if not all(isinstance(v, (int, float)) and not isinstance(v, bool) and 0.0 < v <= MAX_SPEED_KN for v in extra):
+        raise ScenarioError(f"vessel.wake_speeds_kn: expected speeds in 0..{MAX_SPEED_KN:g} kn, got {extra!r}")
+    if extra and hull is None:
+        raise ScenarioError("vessel.wake_speeds_kn: given without vessel.hull")
+    wake_speeds = tuple(sorted({v * KNOT for v in ([speed_kn] if speed_kn > 0 else []) + list(extra)}))
+    return Vessel(rao_path, rao, hull_path, hull, speed, heading, points, wake_speeds)
 
 
 def _known(table: dict, allowed: tuple[str, ...] | dict, where: str) -> None:

@@ -37,7 +37,7 @@ from marinesim.atomic import atomic_path
 from marinesim.constants import KNOT
 from marinesim.errors import FileFormatError, ParameterError
 from marinesim.vessel.rao import DOFS, ROTATIONS, RaoTable, make_table
-from marinesim.vessel.tokens import parse_float, read_text
+from marinesim.tokens import parse_float, read_text
 
 FREQUENCY_COLUMNS = {"omega_rad_s": lambda v: v, "freq_hz": lambda v: 2.0 * math.pi * v,
                      "period_s": lambda v: 2.0 * math.pi / v}

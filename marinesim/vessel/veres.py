@@ -32,7 +32,7 @@ import numpy as np
 
 from marinesim.errors import FileFormatError, ParameterError
 from marinesim.vessel.rao import RaoTable, make_table
-from marinesim.vessel.tokens import Tokens, read_text
+from marinesim.tokens import Tokens, read_text
 
 TITLE_LINES = 6
 MAGIC = "MOTION TRANSFER FUNCTIONS"

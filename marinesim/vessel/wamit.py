@@ -20,8 +20,9 @@ import numpy as np
 
 from marinesim.constants import G, RHO_SEAWATER
 from marinesim.errors import FileFormatError, ParameterError
+from marinesim.hull.gdf import read_gdf_header
 from marinesim.vessel.rao import ROTATIONS, RaoTable, make_table
-from marinesim.vessel.tokens import parse_float, parse_int, read_text
+from marinesim.tokens import parse_float, parse_int, read_text
 
 COLUMNS = "PER BETA I MOD PHA RE IM"
 PERIOD_KINDS = {1: "period (s)", 2: "frequency (rad/s)", 3: "wavenumber K*ULEN (infinite depth)"}
@@ -136,18 +137,11 @@ def _read_rows(path: Path) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 
 def _gdf_settings(gdf: Path) -> tuple[float, float | None]:
-    """(g, ULEN) from the second line of a ``.gdf`` (``ULEN GRAV``); (G, None) if there is none."""
+    """(g, ULEN) from the ``.gdf`` beside the file; (G, None) if there is none."""
     if not gdf.is_file():
         return G, None
-    lines = read_text(gdf).splitlines()
-    if len(lines) < 2 or len(lines[1].split()) < 2:
-        raise FileFormatError(gdf, 2, "expected ULEN GRAV")
-    parts = lines[1].split()
-    ulen = parse_float(gdf, 2, parts[0], "ULEN (m)")
-    g = parse_float(gdf, 2, parts[1], "GRAV (m/s^2)")
-    if ulen <= 0 or g <= 0:
-        raise FileFormatError(gdf, 2, f"ULEN and GRAV must be > 0, got {parts[0]} {parts[1]}")
-    return g, ulen
+    header = read_gdf_header(gdf)
+    return header.g, header.ulen
 
 
 def _iperio(cfg: Path) -> int:

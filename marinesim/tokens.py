@@ -1,4 +1,4 @@
-"""Whitespace-separated numbers read with their line numbers, for the text RAO readers.
+"""Whitespace-separated numbers read with their line numbers, for the text file readers (RAO tables, panel meshes).
 
 Every failure raises :class:`FileFormatError` naming the file, the line and what was expected.
 """

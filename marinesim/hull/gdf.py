@@ -1,0 +1,91 @@
+"""WAMIT low-order geometry files (``.gdf``) -> triangles in the body frame.
+
+Layout (WAMIT User Manual, section 6.1): a title line; ``ULEN GRAV``; ``ISX ISY``; ``NPAN``;
+then ``NPAN`` panels of four vertices ``X Y Z`` each, in free format. Vertices are ordered
+counter-clockwise seen from the fluid, so the right-hand normal points out of the body
+(CONVENTIONS: x forward, z up, the waterline at z = 0, lengths in the file's units, usually m).
+A panel with two equal vertices is a triangle. ``ISX = 1`` means only the half ``x >= 0`` is
+given (the plane x = 0 is a plane of symmetry), ``ISY = 1`` the same for ``y = 0``; the missing
+halves are mirrored here, with the vertex order reversed so that the normals stay outward.
+Low-order ``.gdf`` files describe the wetted surface only: they are open at the waterline.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from marinesim.errors import FileFormatError
+from marinesim.tokens import Tokens, parse_float, parse_int, read_text
+
+
+@dataclass(frozen=True)
+class GdfHeader:
+    ulen: float  # m, WAMIT's length scale (rotational RAOs are per A / ULEN)
+    g: float  # m/s^2
+    isx: int  # 1: x = 0 is a plane of symmetry
+    isy: int  # 1: y = 0 is a plane of symmetry
+
+
+def read_gdf_header(path: str | Path) -> GdfHeader:
+    """ULEN, GRAV, ISX and ISY of a ``.gdf`` file."""
+    path = Path(path)
+    return _header(path, read_text(path).splitlines())
+
+
+def read_gdf(path: str | Path) -> tuple[GdfHeader, np.ndarray, np.ndarray]:
+    """The header, vertices ``(n, 3)`` and triangles ``(m, 3)`` of the whole (mirrored) surface."""
+    path = Path(path)
+    lines = read_text(path).splitlines()
+    header = _header(path, lines)
+    count = _leading(path, lines, 4, ["NPAN (number of panels)"], parse_int)[0]
+    if count <= 0:
+        raise FileFormatError(path, 4, f"NPAN must be > 0, got {count}")
+    tokens = Tokens(path, lines, start=4)
+    corners = np.empty((count, 4, 3))
+    for p in range(count):
+        for v in range(4):
+            for axis, name in enumerate("XYZ"):
+                corners[p, v, axis] = tokens.float(f"{name} of vertex {v + 1} of panel {p + 1} (of {count})")
+    if not tokens.at_end():
+        raise FileFormatError(path, tokens.line, f"unexpected data after the {count} panels of NPAN")
+    if header.isx:
+        corners = np.concatenate([corners, _mirror(corners, axis=0)])
+    if header.isy:
+        corners = np.concatenate([corners, _mirror(corners, axis=1)])
+    # each quadrilateral 0-1-2-3 becomes the triangles 0-1-2 and 0-2-3 (a repeated vertex
+    # makes one of them degenerate; those are dropped when the hull is assembled)
+    vertices = corners.reshape(-1, 3)
+    first = 4 * np.arange(len(corners))[:, None]
+    faces = np.concatenate([first + [0, 1, 2], first + [0, 2, 3]])
+    return header, vertices, faces
+
+
+def _header(path: Path, lines: list[str]) -> GdfHeader:
+    """Lines 2 and 3: ``ULEN GRAV`` and ``ISX ISY``, each possibly followed by a comment."""
+    ulen, g = _leading(path, lines, 2, ["ULEN (length scale, m)", "GRAV (m/s^2)"], parse_float)
+    if ulen <= 0 or g <= 0:
+        raise FileFormatError(path, 2, f"ULEN and GRAV must be > 0, got {ulen:g} {g:g}")
+    isx, isy = _leading(path, lines, 3, ["ISX (0 or 1)", "ISY (0 or 1)"], parse_int)
+    for name, value in (("ISX", isx), ("ISY", isy)):
+        if value not in (0, 1):
+            raise FileFormatError(path, 3, f"{name} must be 0 or 1, got {value}")
+    return GdfHeader(ulen, g, isx, isy)
+
+
+def _leading(path: Path, lines: list[str], number: int, names: list[str], parse) -> list:
+    """The first ``len(names)`` values on line ``number`` (1-based); the rest of the line is a comment."""
+    parts = lines[number - 1].split() if len(lines) >= number else []
+    if len(parts) < len(names):
+        raise FileFormatError(path, number, "expected " + " ".join(names))
+    return [parse(path, number, text, name) for text, name in zip(parts, names)]
+
+
+def _mirror(corners: np.ndarray, axis: int) -> np.ndarray:
+    """Panels reflected in the plane ``axis = 0``, vertex order reversed (normals stay outward)
+    as 0-3-2-1, so that a non-planar panel is split along the same diagonal 0-2 as its image."""
+    mirrored = corners[:, [0, 3, 2, 1]].copy()
+    mirrored[..., axis] *= -1.0
+    return mirrored

@@ -1,0 +1,208 @@
+"""Hull meshes in the body frame: loading, units, axes, draft and trim, and the checks.
+
+A :class:`Hull` is a triangle mesh in metres in the body frame of CONVENTIONS (x forward,
+y to port, z up) with the waterline at z = 0 and normals pointing out of the hull. Meshes carry
+no units and often another axis convention, so :func:`load_hull` takes them as options and
+refuses what cannot be a vessel: an empty or non-finite mesh, nothing below the waterline, a
+length no ship has (millimetres read as metres), a hull open below the waterline. What it can
+repair (winding that disagrees between faces, normals pointing inwards) it repairs and says so
+in ``notes``.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import trimesh
+
+from marinesim.errors import FileFormatError, ParameterError, require_finite, require_positive
+from marinesim.hull.gdf import read_gdf
+from marinesim.hull.wetted import Surface, wetted_surface
+
+UNITS = {"m": 1.0, "cm": 0.01, "mm": 0.001, "ft": 0.3048, "in": 0.0254}
+MESH_EXTENSIONS = (".stl", ".obj", ".ply", ".glb", ".gltf", ".off")
+LENGTH_LIMITS_M = (0.5, 600.0)  # no vessel, model or full scale, lies outside these
+CLOSURE_TOLERANCE = 1e-4  # of the wetted area: about a quarter of one panel of the WAMIT tanker
+MODEL_SCALE_BELOW_M = 10.0  # shorter than this: say that it may be a model-scale mesh
+
+
+@dataclass(frozen=True)
+class Hull:
+    """A closed (or wetted-surface-only) triangle mesh in the body frame, waterline at z = 0."""
+
+    vertices: np.ndarray  # (n, 3) m
+    faces: np.ndarray  # (m, 3) vertex indices, counter-clockwise seen from outside
+    source: str
+    notes: tuple[str, ...] = ()
+
+    def wetted(self) -> Surface:
+        """The wetted surface (z < 0), cut at the waterline."""
+        return wetted_surface(self.vertices, self.faces)
+
+    def content_hash(self) -> str:
+        """sha256 of the geometry in the body frame (what any result computed from it depends on)."""
+        digest = hashlib.sha256()
+        digest.update(np.ascontiguousarray(self.vertices, dtype="<f8").tobytes())
+        digest.update(np.ascontiguousarray(self.faces, dtype="<i8").tobytes())
+        return digest.hexdigest()
+
+    @property
+    def length_m(self) -> float:
+        return float(np.ptp(self.vertices[:, 0]))
+
+
+def load_hull(path: str | Path, *, units: str = "m", scale: float = 1.0, axes: str = "x,y,z",
+              draft: float | None = None, trim_deg: float = 0.0) -> Hull:
+    """Read a hull (STL, OBJ, PLY, GLB/glTF, OFF through trimesh; WAMIT ``.gdf``) into the body frame.
+
+    ``units`` are the mesh's length units (m, cm, mm, ft, in); ``scale`` the geometric scale of a
+    model mesh (50 for a 1:50 model); ``axes`` says which mesh axes become body x, y, z, e.g.
+    ``"x,-z,y"`` for a y-up mesh; ``draft`` (m) puts the lowest point of the hull at z = -draft
+    (default: the mesh's own z = 0 is the waterline); ``trim_deg`` then rotates the hull about
+    the y axis through the origin, bow down positive.
+    """
+    path = Path(path)
+    if not path.is_file():
+        raise FileFormatError(path, None, "no such file")
+    if path.suffix.lower() == ".gdf":
+        _, vertices, faces = read_gdf(path)
+    elif path.suffix.lower() in MESH_EXTENSIONS:
+        vertices, faces = _read_mesh(path)
+    else:
+        raise FileFormatError(path, None, f"unknown hull format {path.suffix!r} (supported: .gdf, "
+                              + ", ".join(MESH_EXTENSIONS) + ")")
+    if len(faces) == 0:
+        raise FileFormatError(path, None, "the mesh has no faces")
+    if not np.isfinite(vertices).all():
+        bad = int(np.flatnonzero(~np.isfinite(vertices).all(axis=1))[0])
+        raise FileFormatError(path, None, f"vertex {bad} is not finite: {vertices[bad].tolist()}")
+    factor = UNITS.get(units)
+    if factor is None:
+        raise ParameterError(f"units must be one of {', '.join(UNITS)}, got {units!r}")
+    factor *= require_positive("scale", scale)
+    vertices, faces = _remap_axes(vertices * factor, faces, axes)
+    _check_length(vertices, str(path), factor)
+    if draft is not None:
+        draft = require_positive("draft", draft)
+        vertices = vertices - [0.0, 0.0, vertices[:, 2].min() + draft]
+    trim = math.radians(require_finite("trim", trim_deg))
+    if abs(trim) >= math.radians(30.0):
+        raise ParameterError(f"trim must be within +-30 deg, got {trim_deg!r}")
+    if trim:
+        c, s = math.cos(trim), math.sin(trim)
+        vertices = vertices @ np.array([[c, 0.0, -s], [0.0, 1.0, 0.0], [s, 0.0, c]])  # Ry(trim) p
+    return make_hull(vertices, faces, str(path))
+
+
+def make_hull(vertices: np.ndarray, faces: np.ndarray, source: str, notes: tuple[str, ...] = ()) -> Hull:
+    """Merge duplicate vertices, drop degenerate faces, check and repair; the checked :class:`Hull`."""
+    mesh = trimesh.Trimesh(np.asarray(vertices, float), np.asarray(faces, np.int64), process=True)
+    mesh.update_faces(mesh.nondegenerate_faces())
+    mesh.remove_unreferenced_vertices()
+    notes = list(notes)
+    if len(mesh.faces) == 0:
+        raise FileFormatError(source, None, "the mesh has no faces of non-zero area")
+    notes += _shape_notes(mesh)
+    if not mesh.is_winding_consistent:
+        trimesh.repair.fix_winding(mesh)
+        if not mesh.is_winding_consistent:
+            raise FileFormatError(source, None, "inconsistent normals that cannot be repaired (faces "
+                                  "shared by more than two neighbours or a non-orientable surface)")
+        notes.append("faces with winding opposite to their neighbours were flipped")
+    zmin, zmax = float(mesh.vertices[:, 2].min()), float(mesh.vertices[:, 2].max())
+    if zmin >= 0.0:
+        raise ParameterError(f"{source}: nothing below the waterline (z from {zmin:.4g} to {zmax:.4g} m): "
+                             "give the draft")
+    wet = wetted_surface(mesh.vertices, mesh.faces)
+    _check_closed_below_water(wet, source)
+    if _displaced_volume(wet) < 0.0:
+        mesh.invert()
+        notes.append("normals pointed into the hull: all faces were flipped")
+    return Hull(np.array(mesh.vertices), np.array(mesh.faces), source, tuple(notes))
+
+
+def _read_mesh(path: Path) -> tuple[np.ndarray, np.ndarray]:
+    try:
+        mesh = trimesh.load(path, force="mesh", process=False)
+    except Exception as error:  # trimesh raises many types for unreadable files
+        raise FileFormatError(path, None, f"cannot read the mesh: {error}") from None
+    if not isinstance(mesh, trimesh.Trimesh):
+        raise FileFormatError(path, None, "the file holds no triangle mesh")
+    return np.asarray(mesh.vertices, float), np.asarray(mesh.faces, np.int64)
+
+
+def _remap_axes(vertices: np.ndarray, faces: np.ndarray, axes: str) -> tuple[np.ndarray, np.ndarray]:
+    """Body coordinates from mesh axes, e.g. ``"x,-z,y"``: body x = mesh x, y = -mesh z, z = mesh y."""
+    parts = [p.strip().lower() for p in axes.split(",")]
+    names = [p.lstrip("+-") for p in parts]
+    if len(parts) != 3 or sorted(names) != ["x", "y", "z"] or any(len(p) - len(n) > 1 for p, n in zip(parts, names)):
+        raise ParameterError(f"axes must name each of x, y, z once with an optional sign, e.g. 'x,-z,y'; got {axes!r}")
+    matrix = np.zeros((3, 3))
+    for row, (part, name) in enumerate(zip(parts, names)):
+        matrix[row, "xyz".index(name)] = -1.0 if part.startswith("-") else 1.0
+    if np.linalg.det(matrix) < 0:  # a mirror image: keep the normals outward
+        faces = faces[:, ::-1]
+    return vertices @ matrix.T, faces
+
+
+def _check_length(vertices: np.ndarray, source: str, factor: float) -> None:
+    """Refuse lengths no vessel has, naming the units (or axes) that would give a plausible one.
+
+    ``factor`` converted the mesh's numbers to metres (units x scale).
+    """
+    extent = np.ptp(vertices, axis=0)
+    length = float(extent[0])
+    low, high = LENGTH_LIMITS_M
+    if low <= length <= high:
+        return
+    hints = [f"units='{unit}' gives {length / factor * to_m:.4g} m" for unit, to_m in UNITS.items()
+             if to_m != factor and MODEL_SCALE_BELOW_M <= length / factor * to_m <= 500.0]
+    longest = int(np.argmax(extent))
+    if longest != 0 and low <= extent[longest] <= high:
+        hints.append(f"the longest side is along body {'xyz'[longest]}: the axes option maps it to x")
+    raise ParameterError(f"{source}: a hull {length:.4g} m long (x) is not a vessel (expected {low:g}..{high:g} m)"
+                         + ("; " + "; ".join(hints) if hints else ""))
+
+
+def _shape_notes(mesh: trimesh.Trimesh) -> list[str]:
+    """Warnings for a model-scale mesh and for axes that look swapped."""
+    extent = np.ptp(mesh.vertices, axis=0)
+    length = float(extent[0])
+    notes = []
+    if length < MODEL_SCALE_BELOW_M:
+        notes.append(f"the hull is {length:.3g} m long: if it is a model, give its scale (e.g. 50 for 1:50)")
+    if extent[1] > length or extent[2] > length:
+        notes.append(f"the hull is wider ({extent[1]:.3g} m) or deeper ({extent[2]:.3g} m) than it is long "
+                     f"({length:.3g} m): is x forward and z up? (axes option)")
+    return notes
+
+
+def _check_closed_below_water(wet: Surface, source: str) -> None:
+    """The wetted surface may be open only along the waterline: refuse a hole below it.
+
+    Checked geometrically, so that panel meshes with hanging nodes (common in ``.gdf`` files)
+    pass: closed by the waterplane lid, the surface's vector area has no x or y component, and
+    the volume by the divergence theorem is the same along each axis (int x n_x = int y n_y =
+    int z n_z dS; the lid adds nothing to any of them).
+    """
+    if len(wet) == 0:
+        raise ParameterError(f"{source}: nothing below the waterline: give the draft")
+    area = float(wet.areas.sum())
+    unbalanced = np.abs(wet.vector_areas.sum(axis=0)[:2])
+    volumes = [wet.integral(lambda p, k=k: p[..., k], normal=k) for k in range(3)]
+    spread = (max(volumes) - min(volumes)) / max(abs(volumes[2]), 1e-300)
+    if unbalanced.max() > CLOSURE_TOLERANCE * area or spread > 2.0 * CLOSURE_TOLERANCE:
+        raise FileFormatError(source, None, "the hull is not closed below the waterline (a hole in the mesh, "
+                              "or a draft deeper than a wetted-surface-only mesh reaches): the wetted surface's "
+                              f"vector area is off by ({unbalanced[0]:.3g}, {unbalanced[1]:.3g}) m^2 in x, y "
+                              f"and its volume is {volumes[0]:.4g}, {volumes[1]:.4g}, {volumes[2]:.4g} m^3 "
+                              "by x, y, z")
+
+
+def _displaced_volume(wet: Surface) -> float:
+    """Divergence theorem with the waterplane lid at z = 0: V = integral of z n_z dS (exact)."""
+    return wet.integral(lambda p: p[..., 2], normal=2)

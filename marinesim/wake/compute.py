@@ -1,0 +1,142 @@
+"""The Kelvin wake of a hull at a speed: A(theta), wave resistance and the field, with their grid.
+
+Frames and units: the field is the steady free-surface elevation (m) in the vessel frame of
+CONVENTIONS (x forward, y to port, origin at the hull's origin on the waterline), on a grid of
+``nx`` columns along x and ``ny`` rows across y, as an array ``elevation[row(y), column(x)]``.
+By default the grid starts a few cells ahead of the bow and reaches back ``nx`` cells of
+``spacing = lambda0 / 16`` (lambda0 = 2 pi U^2 / g, the transverse wavelength), coarser only
+when that would not reach three hull lengths, and never above lambda0 / 4.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+
+import numpy as np
+
+from marinesim import __version__
+from marinesim.atomic import atomic_path
+from marinesim.constants import G, KNOT, RHO_SEAWATER
+from marinesim.errors import FileFormatError, MarinesimError, require_at_least, require_positive
+from marinesim.hull import Hull, hydrostatics
+from marinesim.wake.amplitude import (amplitude, hull_extent, resistance_from_amplitude, resistance_quadrature,
+                                      wavenumber)
+from marinesim.wake.field import wake_spectrum
+from marinesim.wake.measure import kelvin_half_angle_deg, transverse_wavelength
+
+CELLS_PER_WAVELENGTH = 16
+AHEAD_CELLS = 8
+PLOTTED_ANGLES = 400  # A(theta) samples kept in the result, for plots
+
+
+@dataclass(frozen=True)
+class WakeGrid:
+    """Grid size and, optionally, spacing (m) and how far ahead of the origin it starts (m)."""
+
+    nx: int = 2048  # along the track
+    ny: int = 1024  # across
+    spacing_m: float | None = None
+    front_m: float | None = None  # x of the first column (default: the bow plus AHEAD_CELLS cells)
+
+    def resolved(self, wavelength: float, hull_length: float, bow_x: float) -> "WakeGrid":
+        """This grid with spacing and front filled in for a transverse wavelength and a hull."""
+        nx, ny = (int(require_at_least(n, v, 16)) for n, v in (("nx", self.nx), ("ny", self.ny)))
+        spacing = self.spacing_m
+        if spacing is None:
+            spacing = min(max(wavelength / CELLS_PER_WAVELENGTH, 3.0 * hull_length / nx), wavelength / 4.0)
+        spacing = require_positive("grid spacing", spacing)
+        front = bow_x + AHEAD_CELLS * spacing if self.front_m is None else float(self.front_m)
+        return replace(self, nx=nx, ny=ny, spacing_m=spacing, front_m=front)
+
+    def axes(self) -> tuple[np.ndarray, np.ndarray]:
+        """Column x (increasing, ending at the front) and row y (symmetric about 0), m."""
+        x = self.front_m - self.spacing_m * np.arange(self.nx)[::-1]
+        y = (np.arange(self.ny) - (self.ny - 1) / 2.0) * self.spacing_m
+        return x, y
+
+
+@dataclass
+class Wake:
+    """A computed wake: the field on its grid and the numbers that describe it."""
+
+    elevation: np.ndarray  # (ny, nx) float32, m
+    x: np.ndarray  # (nx,) m, vessel frame, forward
+    y: np.ndarray  # (ny,) m, to port
+    sec: np.ndarray  # sec(theta) samples of A, for plots
+    amplitude: np.ndarray  # A(theta) there, complex, m
+    info: dict = field(default_factory=dict)  # speed_m_s, froude, wave_resistance_N, ... (JSON-able)
+
+    def save(self, path: str | Path) -> None:
+        """Write an ``.npz`` atomically: the arrays plus every entry of ``info``."""
+        import json
+
+        with atomic_path(path) as temp:
+            with open(temp, "wb") as handle:
+                np.savez_compressed(handle, elevation_m=self.elevation, x_m=self.x, y_m=self.y, sec_theta=self.sec,
+                                    amplitude_m=self.amplitude, info_json=np.array(json.dumps(self.info)))
+
+    @classmethod
+    def load(cls, path: str | Path) -> "Wake":
+        import json
+
+        try:
+            with np.load(path) as data:
+                return cls(data["elevation_m"], data["x_m"], data["y_m"], data["sec_theta"], data["amplitude_m"],
+                           json.loads(str(data["info_json"])))
+        except (OSError, KeyError, ValueError) as error:
+            raise FileFormatError(path, None, f"not a marinesim wake file: {error}") from None
+
+
+def compute_wake(hull: Hull, speed_m_s: float, grid: WakeGrid = WakeGrid(), *, rho: float = RHO_SEAWATER,
+                 g: float = G, refinement: float = 1.0, progress: bool = False) -> Wake:
+    """Tuck's A(theta), Michell's wave resistance and the far-field wake of ``hull`` at ``speed_m_s``."""
+    k0 = wavenumber(speed_m_s, g)
+    wavelength = 2.0 * math.pi / k0
+    statics = hydrostatics(hull, rho)
+    surface = hull.wetted()
+    bow = float(max(p[:, 0].max() for p in (surface.a, surface.b, surface.c)))
+    stern = float(min(p[:, 0].min() for p in (surface.a, surface.b, surface.c)))
+    grid = grid.resolved(wavelength, statics.length_m, bow)
+    x, y = grid.axes()
+
+    started = time.perf_counter()
+    u, weights = resistance_quadrature(k0, hull_extent(surface))
+    sec = np.cosh(u)
+    a = amplitude(surface, k0, sec, progress)
+    resistance = resistance_from_amplitude(a, sec, weights, speed_m_s, rho)
+    amplitude_seconds = time.perf_counter() - started
+
+    started = time.perf_counter()
+    spectrum = wake_spectrum(surface, k0, float(np.abs(x).max()), float(np.abs(y).max()), grid.spacing_m,
+                             refinement, progress)
+    elevation = spectrum.on_grid(x, y, progress) * _bow_fade(x, bow, stern)
+    field_seconds = time.perf_counter() - started
+
+    froude = speed_m_s / math.sqrt(g * statics.length_m)
+    info = {
+        "speed_m_s": speed_m_s, "speed_kn": speed_m_s / KNOT, "froude": froude, "k0_per_m": k0,
+        "transverse_wavelength_m": wavelength, "wave_resistance_N": resistance,
+        "wave_resistance_coefficient": resistance / (0.5 * rho * speed_m_s**2 * statics.wetted_area_m2),
+        "kelvin_half_angle_deg": None, "measured_transverse_wavelength_m": None,
+        "rho_kg_m3": rho, "g_m_s2": g, "length_m": statics.length_m, "wetted_area_m2": statics.wetted_area_m2,
+        "grid": {"nx": grid.nx, "ny": grid.ny, "spacing_m": grid.spacing_m, "front_m": grid.front_m},
+        "quadrature_nodes": len(spectrum.kx), "refinement": refinement, "hull_source": hull.source,
+        "hull_sha256": hull.content_hash(), "seconds_amplitude": amplitude_seconds, "seconds_field": field_seconds,
+        "marinesim_version": __version__,
+    }
+    try:
+        info["kelvin_half_angle_deg"] = kelvin_half_angle_deg(elevation, x, y, wavelength, statics.length_m)
+        info["measured_transverse_wavelength_m"] = transverse_wavelength(elevation, x, y, statics.length_m)
+    except MarinesimError as error:
+        info["measurement_note"] = str(error)
+    kept = slice(None, None, max(1, len(sec) // PLOTTED_ANGLES))
+    return Wake(elevation.astype(np.float32), x, y, sec[kept], a[kept], info)
+
+
+def _bow_fade(x: np.ndarray, bow: float, stern: float) -> np.ndarray:
+    """0 ahead of the bow, rising smoothly to 1 at the stern: the far-field form holds behind the hull."""
+    r = np.clip((bow - x) / max(bow - stern, 1e-9), 0.0, 1.0)
+    return r * r * (3.0 - 2.0 * r)

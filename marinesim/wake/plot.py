@@ -1,0 +1,51 @@
+"""Pictures of a wake: the field with the Kelvin lines, and |A(theta)|."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+
+from marinesim.wake.compute import Wake
+from marinesim.wake.measure import KELVIN_HALF_ANGLE_DEG
+
+
+def plot_wake(wake: Wake, path: str | Path) -> None:
+    """Draw the elevation map (vessel frame, bow to the right) and |A(theta)| to a PNG."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    info = wake.info
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(11, 8.5), height_ratios=(2.2, 1), layout="constrained")
+    limit = float(np.percentile(np.abs(wake.elevation), 99.5)) or 1.0
+    extent = (wake.x[0], wake.x[-1], wake.y[0], wake.y[-1])
+    image = top.imshow(wake.elevation, origin="lower", extent=extent, cmap="RdBu_r", vmin=-limit, vmax=limit,
+                       interpolation="bilinear")
+    fig.colorbar(image, ax=top, label="elevation [m]", shrink=0.8)
+    bow = info["grid"]["front_m"]
+    reach = wake.x[-1] - wake.x[0]
+    for sign in (1, -1):
+        top.plot([bow, bow - reach], [0.0, sign * reach * math.tan(math.radians(KELVIN_HALF_ANGLE_DEG))], "k--", lw=0.8,
+                 label="19.47 deg" if sign > 0 else None)
+        measured = info.get("kelvin_half_angle_deg")
+        if measured:
+            top.plot([bow, bow - reach], [0.0, sign * reach * math.tan(math.radians(measured))], "g:", lw=1.0,
+                     label=f"measured {measured:.2f} deg" if sign > 0 else None)
+    top.set_xlim(extent[0], extent[1])
+    top.set_ylim(extent[2], extent[3])
+    top.set_xlabel("x (forward) [m]")
+    top.set_ylabel("y (to port) [m]")
+    top.legend(loc="upper left", fontsize=8)
+    top.set_title(f"Kelvin wake at {info['speed_kn']:.1f} kn (Fn {info['froude']:.3f}), wave resistance "
+                  f"{info['wave_resistance_N'] / 1e3:,.1f} kN; {Path(info['hull_source']).name}")
+    theta = np.degrees(np.arccos(1.0 / wake.sec))
+    bottom.plot(theta, np.abs(wake.amplitude), lw=1.0)
+    bottom.set_xlabel("wave direction theta [deg] (0 = transverse waves)")
+    bottom.set_ylabel("|A(theta)| [m]")
+    bottom.set_xlim(0, 90)
+    bottom.grid(alpha=0.3)
+    fig.savefig(path, dpi=90)
+    plt.close(fig)
