@@ -151,6 +151,10 @@ def test_cli_export_and_rao(tmp_path):
     (("bow = [120.0, 0.0, 12.0]", "bow = [120.0, 0.0, 12.0]\n\"bad name\" = [0.0, 0.0, 0.0]"),
      "vessel.points.bad name: a point name must be a plain identifier"),
     (("hull = ", "# hull = "), None),
+    (("speed_kn = 6.0", "speed_kn = 6.0\nhull_units = \"mm\""), "vessel.hull: .*units='m' gives 256.9 m"),
+    (("speed_kn = 6.0", "speed_kn = 6.0\nhull_draft_m = -1.0"), "vessel.hull: draft must be > 0"),
+    (("speed_kn = 6.0", "speed_kn = 6.0\nwake_speeds_kn = [0.0]"), "vessel.wake_speeds_kn: expected speeds"),
+    (("hull = ", "hull_trim_deg = 1.0\n# hull = "), "vessel.hull_trim_deg: given without vessel.hull"),
 ])
 def test_bad_vessel_sections_are_refused_with_the_key(tmp_path, change, message):
     path = write(tmp_path, SCENARIO.replace(*change))
@@ -183,6 +187,21 @@ def test_export_needs_a_vessel(tmp_path):
     text = SCENARIO.split("[vessel]")[0] + "[run]\nseed = 1\n"
     result = cli("export", str(write(tmp_path, text)), "--out", "m.csv", cwd=tmp_path)
     assert result.returncode == 2 and "no [vessel] section" in result.stderr
+
+
+def test_run_with_a_hull_draws_the_wake_and_caches_every_scenario_speed(tmp_path):
+    """`marinesim run` on a vessel with a hull precomputes the wake at each scenario speed (into the
+    cache) and draws the one at the vessel's speed."""
+    from marinesim.wake.cache import cache_dir
+
+    text = SCENARIO.replace("speed_kn = 6.0", "speed_kn = 6.0\nwake_speeds_kn = [10.0]")
+    path = write(tmp_path, text.replace("duration_s = 120.0", "duration_s = 20.0"))
+    before = set(cache_dir().glob("*.npz")) if cache_dir().is_dir() else set()
+    result = cli("run", str(path), "--out", "out", "--quiet", cwd=tmp_path)
+    assert result.returncode == 0, result.stderr
+    assert "the Kelvin wake" in result.stdout and (tmp_path / "out" / "wake.png").stat().st_size > 20_000
+    speeds = sorted(json.loads(str(np.load(p)["info_json"]))["speed_kn"] for p in set(cache_dir().glob("*.npz")) - before)
+    assert speeds == pytest.approx([6.0, 10.0])
 
 
 @pytest.mark.parametrize("config", CONFIGS, ids=[c.stem for c in CONFIGS])

@@ -18,7 +18,8 @@ even and the wake is symmetric about the track.
 
 Wave resistance: ``R = (pi/2) rho U^2 int |A|^2 cos^3(theta) d theta`` (equal to Michell's
 integral), evaluated with sec(theta) = cosh(u), d theta = du / cosh(u):
-``R = pi rho U^2 int_0^inf |A(cosh u)|^2 cosh(u)^-4 du``.
+``R = pi rho U^2 int_0^inf |A(cosh u)|^2 cosh(u)^-4 du``, by Gauss-Legendre panels up to
+sec = RESISTANCE_SEC_MAX and an extrapolated tail beyond.
 """
 
 from __future__ import annotations
@@ -36,7 +37,7 @@ from marinesim.wake.triangle import exp_divided_difference
 
 WORK_PER_CHUNK = 500_000  # (angle, triangle) pairs per chunk: about 100 MB of temporaries
 DECAY_CUTOFF = 40.0  # exp(-40) = 4e-18: triangles this many decay lengths down are skipped
-RESISTANCE_SEC_MAX = 40.0  # |A|^2 cos^4 ~ sec^-4: the tail beyond is < 1e-6 of R
+RESISTANCE_SEC_MAX = 40.0  # the sum stops here; the tail beyond is extrapolated (resistance_from_amplitude)
 PANEL_RADIANS = 6.0  # phase change per Gauss-Legendre panel ...
 PANEL_ORDER = 8  # ... of this many nodes: 1.3 nodes per radian, error ~ 2e-6 per panel
 
@@ -88,8 +89,18 @@ def resistance_quadrature(k0: float, extent: float) -> tuple[np.ndarray, np.ndar
 
 def resistance_from_amplitude(a: np.ndarray, sec: np.ndarray, weights: np.ndarray, speed_m_s: float,
                               rho: float) -> float:
-    """``pi rho U^2 sum w |A|^2 / sec^4`` (u-quadrature of Michell's integral), N."""
-    return float(math.pi * rho * speed_m_s**2 * np.sum(weights * np.abs(a) ** 2 / sec**4))
+    """``pi rho U^2 sum w |A|^2 / sec^4`` (u-quadrature of Michell's integral) plus its tail, N.
+
+    Beyond sec = RESISTANCE_SEC_MAX the integrand, averaged over its oscillation, falls like a
+    power of sec (sec^-3 per d sec for a transom or a blunt bow, faster for fine ends); the
+    power is measured from the last two octaves and the tail added as a geometric series.
+    """
+    terms = weights * np.abs(a) ** 2 / sec**4
+    octaves = [terms[(sec >= RESISTANCE_SEC_MAX / 2 ** (k + 1)) & (sec < RESISTANCE_SEC_MAX / 2**k)].sum()
+               for k in (1, 0)]
+    ratio = octaves[0] / octaves[1] if octaves[1] > 0 else math.inf
+    tail = octaves[1] / (ratio - 1.0) if ratio > 1.0 else 0.0
+    return float(math.pi * rho * speed_m_s**2 * (terms.sum() + tail))
 
 
 def wavenumber(speed_m_s: float, g: float = G) -> float:
@@ -111,7 +122,7 @@ def phase_quadrature(phase: Callable[[np.ndarray], np.ndarray], u_max: float) ->
     ``phase`` is increasing and bounds the phase change of the integrand, so each panel spans at
     most PANEL_RADIANS of oscillation whatever the integrand's local frequency.
     """
-    fine = np.linspace(0.0, u_max, 8193)
+    fine = np.linspace(0.0, u_max, 65537)
     values = phase(fine)
     panels = max(1, math.ceil((values[-1] - values[0]) / PANEL_RADIANS))
     edges = np.interp(np.linspace(values[0], values[-1], panels + 1), values, fine)
