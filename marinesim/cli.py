@@ -55,6 +55,14 @@ def _parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _number_list(option: str, text: str, unit: str) -> list[float]:
+    """Comma-separated finite numbers, or a ParameterError naming the option."""
+    try:
+        return [require_finite(option, float(v)) for v in text.split(",")]
+    except ValueError:
+        raise ParameterError(f"{option} must be comma-separated {unit}, got {text!r}") from None
+
+
 def _add_hull_options(p: argparse.ArgumentParser) -> None:
     g = p.add_argument_group("hull placement (meshes carry no units and often other axes)")
     g.add_argument("--units", default="m", help="mesh length units: m, cm, mm, ft, in (default m)")
@@ -130,10 +138,7 @@ def _run_wake(args: argparse.Namespace) -> int:
     from marinesim.wake.compute import WakeGrid, compute_wake
     from marinesim.wake.plot import plot_wake
 
-    try:
-        speeds = [require_finite("speed", float(v)) for v in args.speed_kn.split(",")]
-    except ValueError:
-        raise ParameterError(f"--speed-kn must be comma-separated knots, got {args.speed_kn!r}") from None
+    speeds = _number_list("--speed-kn", args.speed_kn, "knots")
     if any(v <= 0 for v in speeds):
         raise ParameterError(f"--speed-kn must be > 0 (a hull at rest makes no wake), got {args.speed_kn}")
     grid = WakeGrid(args.nx, args.ny, args.spacing)
@@ -243,10 +248,7 @@ def _run_rao(args: argparse.Namespace) -> int:
     from marinesim.vessel.plot import plot_rao
     from marinesim.vessel.summary import format_rao_summary, rao_summary
 
-    try:
-        headings = [require_finite("heading", float(v)) for v in args.headings.split(",")]
-    except ValueError:
-        raise ParameterError(f"--headings must be comma-separated degrees, got {args.headings!r}") from None
+    headings = _number_list("--headings", args.headings, "degrees")
     table = read_rao(args.file, ulen=args.ulen, roll_damping=require_finite("roll damping", args.roll_damping_pct) / 100)
     report = rao_summary(table)
     print(json.dumps(report) if args.json else format_rao_summary(report))
