@@ -141,6 +141,9 @@ def _run_wake(args: argparse.Namespace) -> int:
     speeds = _number_list("--speed-kn", args.speed_kn, "knots")
     if any(v <= 0 for v in speeds):
         raise ParameterError(f"--speed-kn must be > 0 (a hull at rest makes no wake), got {args.speed_kn}")
+    for path in (args.out, args.plot):
+        if path is not None and not path.resolve().parent.is_dir():
+            raise ParameterError(f"cannot write {path}: folder {path.resolve().parent} does not exist")
     grid = WakeGrid(args.nx, args.ny, args.spacing)
     hull = _hull_from_args(args)
     reports = []

@@ -10,7 +10,7 @@ from scipy.integrate import dblquad, quad
 
 from marinesim.errors import ParameterError
 from marinesim.hull import box_hull
-from marinesim.wake import amplitude, wave_resistance, wavenumber
+from marinesim.wake import tuck_amplitude, wave_resistance, wavenumber
 from marinesim.wake.triangle import exp_divided_difference
 
 G, RHO = 9.80665, 1025.0
@@ -57,7 +57,7 @@ def test_box_hull_gives_the_rectangular_source_sheets():
     L, B, T = 100.0, 20.0, 5.0
     k0 = wavenumber(8.0)
     sec = np.concatenate([np.linspace(1.0, 3.0, 41), [5.0, 10.0, 20.0, 40.0]])
-    got = amplitude(box_hull(L, B, T).wetted(), k0, sec)
+    got = tuck_amplitude(box_hull(L, B, T).wetted(), k0, sec)
     expected = box_amplitude(k0, sec, L, B, T)
     assert np.max(np.abs(got - expected) / np.abs(expected).max()) < 1e-9
 
@@ -65,8 +65,9 @@ def test_box_hull_gives_the_rectangular_source_sheets():
 @pytest.mark.parametrize("speed", [5.0, 9.0])
 def test_wave_resistance_quadrature_matches_scipy_on_the_analytic_amplitude(speed):
     """R = (pi/2) rho U^2 int |A|^2 cos^3 over the analytic box amplitude by scipy's quad (in theta,
-    split at every oscillation) agrees with the u-substituted Gauss-Legendre sum on the mesh to
-    1e-4 (the sum stops at sec = 40; the box's tail beyond is about 1e-5)."""
+    split at every oscillation, up to sec = 200) agrees with the u-substituted Gauss-Legendre sum on
+    the mesh to 1e-4. The sum stops at sec = 40 and extrapolates the tail, which for the box's
+    blunt ends is 3e-4 .. 1e-3 of R: without the extrapolation this test fails."""
     L, B, T = 100.0, 20.0, 5.0
     k0 = wavenumber(speed)
 

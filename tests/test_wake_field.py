@@ -14,9 +14,9 @@ import numpy as np
 import pytest
 
 from marinesim.cli import main
-from marinesim.errors import FileFormatError
+from marinesim.errors import FileFormatError, ParameterError
 from marinesim.hull import Surface, hydrostatics, load_hull, wigley_hull
-from marinesim.wake import amplitude, wavenumber
+from marinesim.wake import tuck_amplitude, wavenumber
 from marinesim.wake.cache import cached_wake
 from marinesim.wake.compute import Wake, WakeGrid, compute_wake
 from marinesim.wake.field import wake_spectrum
@@ -48,19 +48,21 @@ def test_centreline_transverse_wavelength(wigley_wake):
     assert wigley_wake.info["measured_transverse_wavelength_m"] == pytest.approx(expected, rel=0.02)
 
 
-def test_fft_field_equals_direct_quadrature_and_is_converged(wigley):
-    """Test 4: the NUFFT rows equal direct summation of the same quadrature on a sub-grid within
-    1 % of the peak, and doubling the angular sampling changes the field by less than 0.5 %."""
+@pytest.mark.parametrize("nx, ny", [(1024, 512), (1023, 511)])
+def test_fft_field_equals_direct_quadrature_and_is_converged(wigley, nx, ny):
+    """Test 4: the NUFFT rows equal direct summation of the same quadrature on a sub-grid (the
+    issue asks for 1 % of the peak; the Gaussian gridding gives 1e-8, so 1e-6 is asserted, for odd
+    sizes too), and doubling the angular sampling changes the field by less than 0.5 %."""
     speed = 0.3 * math.sqrt(G * 100.0)
     k0 = wavenumber(speed)
-    grid = WakeGrid(1024, 512).resolved(2 * math.pi / k0, 100.0, 50.0)
+    grid = WakeGrid(nx, ny).resolved(2 * math.pi / k0, 100.0, 50.0)
     x, y = grid.axes()
     spectrum = wake_spectrum(wigley.wetted(), k0, float(np.abs(x).max()), float(np.abs(y).max()), grid.spacing_m)
     field = spectrum.on_grid(x, y)
     peak = np.abs(field).max()
     columns, rows = slice(3, None, 37), slice(5, None, 23)
     direct = spectrum.direct(*np.meshgrid(x[columns], y[rows]))
-    assert np.abs(direct - field[rows, columns]).max() < 0.01 * peak
+    assert np.abs(direct - field[rows, columns]).max() < 1e-6 * peak
     finer = wake_spectrum(wigley.wetted(), k0, float(np.abs(x).max()), float(np.abs(y).max()), grid.spacing_m,
                           refinement=2.0)
     assert len(finer.kx) > 1.9 * len(spectrum.kx)
@@ -97,7 +99,7 @@ def test_a_lone_bow_leaves_a_crest_and_the_stationary_phase_amplitude():
     bow = Surface(corners[[0, 0]], corners[[1, 2]], corners[[2, 3]])  # normal +x
     assert np.all(bow.vector_areas[:, 0] > 0)
     k0 = wavenumber(6.0)
-    a0 = amplitude(bow, k0, np.array([1.0]))[0] * np.exp(1j * k0 * xb)
+    a0 = tuck_amplitude(bow, k0, np.array([1.0]))[0] * np.exp(1j * k0 * xb)
     assert abs(a0.imag) < 1e-12 * abs(a0) and a0.real > 0
     grid = WakeGrid(2048, 64).resolved(2 * math.pi / k0, 10.0, xb)
     x, y = grid.axes()
@@ -119,7 +121,13 @@ def test_compute_wake_grid_fade_and_numbers(wigley_wake, wigley):
     assert info["grid"]["spacing_m"] == pytest.approx(info["transverse_wavelength_m"] / 16)
     assert info["froude"] == pytest.approx(info["speed_m_s"] / math.sqrt(G * hydrostatics(wigley).waterline_length_m))
     assert wigley_wake.elevation.shape == (1024, 2048) and wigley_wake.elevation.dtype == np.float32
-    assert np.array_equal(wigley_wake.elevation, wigley_wake.elevation[::-1]), "the wake is not symmetric"
+
+
+def test_slow_speeds_are_refused_and_short_grids_say_so(wigley):
+    with pytest.raises(ParameterError, match="Fn 0.020 .* below 0.03"):
+        compute_wake(wigley, 0.02 * math.sqrt(G * 100.0))
+    short = compute_wake(wigley, 0.3 * math.sqrt(G * 100.0), WakeGrid(32, 32, spacing_m=1.0))
+    assert "before the stern" in short.info["grid_note"] and short.info["kelvin_half_angle_deg"] is None
 
 
 def test_cache_and_file_round_trip(tmp_path, wigley):
@@ -128,14 +136,17 @@ def test_cache_and_file_round_trip(tmp_path, wigley):
     again, hit_again = cached_wake(wigley, 9.0, grid, folder=tmp_path)
     assert (hit, hit_again) == (False, True)
     assert np.array_equal(first.elevation, again.elevation) and first.info == again.info
-    deeper = load_hull(ROOT / "hulls" / "wigley.stl", draft=7.0)
-    assert not cached_wake(deeper, 9.0, grid, folder=tmp_path)[1], "a different draft must not hit the cache"
+    sample = ROOT / "hulls" / "wigley.stl"
+    assert not cached_wake(load_hull(sample, draft=6.25), 9.0, grid, folder=tmp_path)[1]
+    assert cached_wake(load_hull(sample, draft=6.25), 9.0, grid, folder=tmp_path)[1]
+    assert not cached_wake(load_hull(sample, draft=7.0), 9.0, grid, folder=tmp_path)[1], "another draft hit the cache"
     entry = next(p for p in tmp_path.glob("*.npz") if Wake.load(p).info["hull_sha256"] == wigley.content_hash())
-    entry.write_bytes(b"damaged")
-    with pytest.raises(FileFormatError, match="not a marinesim wake"):
-        Wake.load(entry)
-    repaired, hit = cached_wake(wigley, 9.0, grid, folder=tmp_path)
-    assert not hit and np.array_equal(repaired.elevation, first.elevation), "a damaged entry is recomputed"
+    for damage in (b"", entry.read_bytes()[:1000], b"damaged"):  # empty, truncated, not a zip
+        entry.write_bytes(damage)
+        with pytest.raises(FileFormatError, match="not a marinesim wake"):
+            Wake.load(entry)
+        repaired, hit = cached_wake(wigley, 9.0, grid, folder=tmp_path)
+        assert not hit and np.array_equal(repaired.elevation, first.elevation), "a damaged entry is recomputed"
     path = tmp_path / "wake.npz"
     first.save(path)
     loaded = Wake.load(path)

@@ -41,7 +41,7 @@ class Hydrostatics:
     rho_kg_m3: float
 
     @property
-    def length_m(self) -> float:
+    def froude_length_m(self) -> float:
         """The length for Froude numbers: at the waterline, else (submerged body) overall."""
         return self.waterline_length_m or self.length_overall_m
 
@@ -56,7 +56,7 @@ def hydrostatics(hull: Hull, rho: float = RHO_SEAWATER) -> Hydrostatics:
     buoyancy = tuple(wet.integral(f, normal=2) / volume for f in (
         lambda p: p[..., 0] * p[..., 2], lambda p: p[..., 1] * p[..., 2], lambda p: 0.5 * p[..., 2] ** 2))
     area = -wet.integral(lambda p: np.ones(p.shape[:-1]), normal=2)
-    if area > 0.0:
+    if area > 1e-9 * hull.overall_length_m**2:  # else a submerged body: no waterplane
         xf = -wet.integral(lambda p: p[..., 0], normal=2) / area
         yf = -wet.integral(lambda p: p[..., 1], normal=2) / area
         i_transverse = -wet.integral(lambda p: p[..., 1] ** 2, normal=2) - area * yf**2
@@ -64,14 +64,14 @@ def hydrostatics(hull: Hull, rho: float = RHO_SEAWATER) -> Hydrostatics:
     else:
         xf = yf = i_transverse = i_longitudinal = 0.0
     corners = np.concatenate([wet.a, wet.b, wet.c])
-    at_waterline = corners[np.abs(corners[:, 2]) <= 1e-9 * max(hull.length_m, 1.0)]
+    at_waterline = corners[np.abs(corners[:, 2]) <= 1e-9 * max(hull.overall_length_m, 1.0)]
     lwl, bwl = (float(np.ptp(at_waterline[:, k])) for k in (0, 1)) if len(at_waterline) else (0.0, 0.0)
     return Hydrostatics(
         volume_m3=volume, displacement_t=rho * volume / 1000.0, wetted_area_m2=float(wet.areas.sum()),
         waterplane_area_m2=area, centre_of_buoyancy_m=buoyancy, centre_of_flotation_m=(xf, yf),
         bm_transverse_m=i_transverse / volume, bm_longitudinal_m=i_longitudinal / volume,
         waterline_length_m=lwl, waterline_beam_m=bwl, draft_m=float(-corners[:, 2].min()),
-        length_overall_m=hull.length_m, rho_kg_m3=rho,
+        length_overall_m=hull.overall_length_m, rho_kg_m3=rho,
     )
 
 

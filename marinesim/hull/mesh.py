@@ -51,7 +51,7 @@ class Hull:
         return digest.hexdigest()
 
     @property
-    def length_m(self) -> float:
+    def overall_length_m(self) -> float:
         return float(np.ptp(self.vertices[:, 0]))
 
 

@@ -10,6 +10,7 @@ Same scenario and seed: bit-identical tables.
 from __future__ import annotations
 
 import json
+import math
 import sys
 from pathlib import Path
 
@@ -50,12 +51,19 @@ def run_headless(scenario: Scenario, out_dir: Path, progress: bool = True) -> di
 
 def _wakes(scenario: Scenario, out_dir: Path, progress: bool) -> dict[str, Path]:
     """Precompute (or read from the cache) the wakes of every scenario speed; draw the one at the vessel's."""
+    from marinesim.constants import G, KNOT
+    from marinesim.hull import hydrostatics
     from marinesim.wake.cache import precompute_wakes
+    from marinesim.wake.compute import MIN_FROUDE
     from marinesim.wake.plot import plot_wake
 
     vessel = scenario.vessel
-    wakes = precompute_wakes(vessel.hull, vessel.wake_speeds_m_s, progress=progress)
-    if vessel.speed_m_s <= 0.0:
+    length = hydrostatics(vessel.hull).froude_length_m
+    speeds = [u for u in vessel.wake_speeds_m_s if u / math.sqrt(G * length) >= MIN_FROUDE]
+    for skipped in sorted(set(vessel.wake_speeds_m_s) - set(speeds)):
+        print(f"no wake at {skipped / KNOT:.3g} kn: Fn {skipped / math.sqrt(G * length):.3f} is below {MIN_FROUDE}")
+    wakes = precompute_wakes(vessel.hull, speeds, progress=progress)
+    if vessel.speed_m_s not in speeds:
         return {}
     wake = next(w for w, _ in wakes if w.info["speed_m_s"] == vessel.speed_m_s)
     path = out_dir / "wake.png"

@@ -63,7 +63,7 @@ def plot_sea(ocean: Ocean, path: Path, t: float = 0.0, extent_m: float | None = 
     ax_h.set_ylabel("y north [m]")
     ax_h.set_title(f"surface at t = {t:g} s (seed {ocean.seed})")
     fig.tight_layout()
-    fig.savefig(path, dpi=100)
+    fig.savefig(path, dpi=100, format="png")
     plt.close(fig)
 
 
@@ -81,5 +81,5 @@ def plot_series(times: np.ndarray, values: np.ndarray, label: str, title: str, p
     ax.set_title(title)
     ax.grid(alpha=0.3)
     fig.tight_layout()
-    fig.savefig(path, dpi=100)
+    fig.savefig(path, dpi=100, format="png")
     plt.close(fig)

@@ -46,7 +46,7 @@ def plot_rao(table: RaoTable, path: Path, headings_deg: list[float], speed: floa
         ax.set_xlabel("wave period [s]")
     fig.suptitle(f"RAOs: {Path(table.source).name} ({table.source_format}), {speed:.3g} m/s")
     fig.tight_layout()
-    fig.savefig(path, dpi=90)
+    fig.savefig(path, dpi=90, format="png")
     plt.close(fig)
 
 
@@ -63,5 +63,5 @@ def plot_motions(frame: Mapping[str, np.ndarray], path: Path, title: str) -> Non
     axes[-1].set_xlabel("time [s]")
     axes[0].set_title(title)
     fig.tight_layout()
-    fig.savefig(path, dpi=90)
+    fig.savefig(path, dpi=90, format="png")
     plt.close(fig)

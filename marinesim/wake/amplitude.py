@@ -42,7 +42,7 @@ PANEL_RADIANS = 6.0  # phase change per Gauss-Legendre panel ...
 PANEL_ORDER = 8  # ... of this many nodes: 1.3 nodes per radian, error ~ 2e-6 per panel
 
 
-def amplitude(surface: Surface, k0: float, sec: np.ndarray, progress: bool = False) -> np.ndarray:
+def tuck_amplitude(surface: Surface, k0: float, sec: np.ndarray, progress: bool = False) -> np.ndarray:
     """A(theta) at ``sec = sec(theta)`` (array, >= 1), m; ``k0 = g / U^2`` in 1/m.
 
     Triangles deeper than the decay ``exp(k0 sec^2 z)`` lets matter (their shallowest corner
@@ -76,14 +76,15 @@ def wave_resistance(hull: Hull, speed_m_s: float, *, rho: float = RHO_SEAWATER, 
     """Michell's wave resistance R, N, of ``hull`` at ``speed_m_s`` (through A(theta))."""
     surface = hull.wetted()
     k0 = wavenumber(speed_m_s, g)
-    u, w = resistance_quadrature(k0, hull_extent(surface))
+    u, w = resistance_quadrature(k0, hull_reach(surface))
     sec = np.cosh(u)
-    return resistance_from_amplitude(amplitude(surface, k0, sec), sec, w, speed_m_s, rho)
+    return resistance_from_amplitude(tuck_amplitude(surface, k0, sec), sec, w, speed_m_s, rho)
 
 
-def resistance_quadrature(k0: float, extent: float) -> tuple[np.ndarray, np.ndarray]:
-    """Nodes u and weights for int_0^{acosh(RESISTANCE_SEC_MAX)} f(u) du resolving A's oscillation."""
-    return phase_quadrature(lambda u: k0 * extent * (np.cosh(u) - 1.0) + 8.0 * u,
+def resistance_quadrature(k0: float, reach: float) -> tuple[np.ndarray, np.ndarray]:
+    """Nodes u and weights for int_0^{acosh(RESISTANCE_SEC_MAX)} f(u) du resolving the oscillation
+    of |A|^2 (at most 2 k0 reach per unit sec, ``reach`` = max |x| of the hull)."""
+    return phase_quadrature(lambda u: 2.0 * k0 * reach * (np.cosh(u) - 1.0) + 8.0 * u,
                             math.acosh(RESISTANCE_SEC_MAX))
 
 
@@ -111,9 +112,9 @@ def wavenumber(speed_m_s: float, g: float = G) -> float:
     return g / speed**2
 
 
-def hull_extent(surface: Surface) -> float:
-    """Twice the largest |x| on the wetted surface, m: the bandwidth of A in sec(theta) is k0 times this."""
-    return 2.0 * float(max(np.abs(p[:, 0]).max() for p in (surface.a, surface.b, surface.c)))
+def hull_reach(surface: Surface) -> float:
+    """The largest |x| on the wetted surface, m: A(theta) oscillates at most k0 times this per unit sec."""
+    return float(max(np.abs(p[:, 0]).max() for p in (surface.a, surface.b, surface.c)))
 
 
 def phase_quadrature(phase: Callable[[np.ndarray], np.ndarray], u_max: float) -> tuple[np.ndarray, np.ndarray]:

@@ -22,7 +22,7 @@ from marinesim.errors import FileFormatError
 from marinesim.hull import Hull
 from marinesim.wake.compute import Wake, WakeGrid, compute_wake
 
-CACHE_FORMAT = 1
+CACHE_FORMAT = 2
 
 
 def cache_dir() -> Path:
@@ -46,7 +46,9 @@ def cached_wake(hull: Hull, speed_m_s: float, grid: WakeGrid = WakeGrid(), *, rh
     path = (folder or cache_dir()) / f"{cache_key(hull, speed_m_s, grid, rho, g, refinement)}.npz"
     if path.is_file():
         try:
-            return Wake.load(path), True
+            wake = Wake.load(path)
+            wake.info["hull_source"] = hull.source  # the same geometry may come from another file
+            return wake, True
         except FileFormatError:
             pass  # a damaged entry: recompute it below
     wake = compute_wake(hull, speed_m_s, grid, rho=rho, g=g, refinement=refinement, progress=progress)

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 import time
+import zipfile
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
@@ -20,15 +21,16 @@ import numpy as np
 from marinesim import __version__
 from marinesim.atomic import atomic_path
 from marinesim.constants import G, KNOT, RHO_SEAWATER
-from marinesim.errors import FileFormatError, MarinesimError, require_at_least, require_positive
+from marinesim.errors import FileFormatError, MarinesimError, ParameterError, require_at_least, require_positive
 from marinesim.hull import Hull, hydrostatics
-from marinesim.wake.amplitude import (amplitude, hull_extent, resistance_from_amplitude, resistance_quadrature,
+from marinesim.wake.amplitude import (hull_reach, resistance_from_amplitude, resistance_quadrature, tuck_amplitude,
                                       wavenumber)
 from marinesim.wake.field import wake_spectrum
 from marinesim.wake.measure import kelvin_half_angle_deg, transverse_wavelength
 
 CELLS_PER_WAVELENGTH = 16
 AHEAD_CELLS = 8
+MIN_FROUDE = 0.03  # below: waves of a few cm, costly (nodes grow as 1 / Fn^2) and outside thin-ship theory
 PLOTTED_ANGLES = 400  # A(theta) samples kept in the result, for plots
 
 
@@ -86,7 +88,7 @@ class Wake:
             with np.load(path) as data:
                 return cls(data["elevation_m"], data["x_m"], data["y_m"], data["sec_theta"], data["amplitude_m"],
                            json.loads(str(data["info_json"])))
-        except (OSError, KeyError, ValueError) as error:
+        except (OSError, KeyError, ValueError, EOFError, zipfile.BadZipFile) as error:
             raise FileFormatError(path, None, f"not a marinesim wake file: {error}") from None
 
 
@@ -96,16 +98,21 @@ def compute_wake(hull: Hull, speed_m_s: float, grid: WakeGrid = WakeGrid(), *, r
     k0 = wavenumber(speed_m_s, g)
     wavelength = 2.0 * math.pi / k0
     statics = hydrostatics(hull, rho)
+    froude = speed_m_s / math.sqrt(g * statics.froude_length_m)
+    if froude < MIN_FROUDE:
+        raise ParameterError(f"Fn {froude:.3f} at {speed_m_s:.3g} m/s is below {MIN_FROUDE}: this hull makes "
+                             "almost no waves so slowly, thin-ship theory does not describe them, and the "
+                             "integral would take minutes")
     surface = hull.wetted()
     bow = float(max(p[:, 0].max() for p in (surface.a, surface.b, surface.c)))
     stern = float(min(p[:, 0].min() for p in (surface.a, surface.b, surface.c)))
-    grid = grid.resolved(wavelength, statics.length_m, bow)
+    grid = grid.resolved(wavelength, statics.froude_length_m, bow)
     x, y = grid.axes()
 
     started = time.perf_counter()
-    u, weights = resistance_quadrature(k0, hull_extent(surface))
+    u, weights = resistance_quadrature(k0, hull_reach(surface))
     sec = np.cosh(u)
-    a = amplitude(surface, k0, sec, progress)
+    a = tuck_amplitude(surface, k0, sec, progress)
     resistance = resistance_from_amplitude(a, sec, weights, speed_m_s, rho)
     amplitude_seconds = time.perf_counter() - started
 
@@ -115,23 +122,26 @@ def compute_wake(hull: Hull, speed_m_s: float, grid: WakeGrid = WakeGrid(), *, r
     elevation = spectrum.on_grid(x, y, progress) * _bow_fade(x, bow, stern)
     field_seconds = time.perf_counter() - started
 
-    froude = speed_m_s / math.sqrt(g * statics.length_m)
     info = {
         "speed_m_s": speed_m_s, "speed_kn": speed_m_s / KNOT, "froude": froude, "k0_per_m": k0,
         "transverse_wavelength_m": wavelength, "wave_resistance_N": resistance,
         "wave_resistance_coefficient": resistance / (0.5 * rho * speed_m_s**2 * statics.wetted_area_m2),
         "kelvin_half_angle_deg": None, "measured_transverse_wavelength_m": None,
-        "rho_kg_m3": rho, "g_m_s2": g, "length_m": statics.length_m, "wetted_area_m2": statics.wetted_area_m2,
+        "rho_kg_m3": rho, "g_m_s2": g, "length_m": statics.froude_length_m, "wetted_area_m2": statics.wetted_area_m2,
         "grid": {"nx": grid.nx, "ny": grid.ny, "spacing_m": grid.spacing_m, "front_m": grid.front_m},
+        "bow_x_m": bow, "stern_x_m": stern,
         "quadrature_nodes": len(spectrum.kx), "refinement": refinement, "hull_source": hull.source,
         "hull_sha256": hull.content_hash(), "seconds_amplitude": amplitude_seconds, "seconds_field": field_seconds,
         "marinesim_version": __version__,
     }
     try:
-        info["kelvin_half_angle_deg"] = kelvin_half_angle_deg(elevation, x, y, wavelength, statics.length_m)
-        info["measured_transverse_wavelength_m"] = transverse_wavelength(elevation, x, y, statics.length_m)
+        info["kelvin_half_angle_deg"] = kelvin_half_angle_deg(elevation, x, y, wavelength, statics.froude_length_m,
+                                                              bow)
+        info["measured_transverse_wavelength_m"] = transverse_wavelength(elevation, x, y, statics.froude_length_m)
     except MarinesimError as error:
         info["measurement_note"] = str(error)
+    if x.min() > stern:
+        info["grid_note"] = "the grid ends before the stern: give more columns (nx) or a larger spacing"
     kept = slice(None, None, max(1, len(sec) // PLOTTED_ANGLES))
     return Wake(elevation.astype(np.float32), x, y, sec[kept], a[kept], info)
 

@@ -37,7 +37,7 @@ from tqdm import tqdm
 
 from marinesim.hull import Surface
 from marinesim.errors import ParameterError
-from marinesim.wake.amplitude import amplitude, hull_extent, phase_quadrature
+from marinesim.wake.amplitude import hull_reach, phase_quadrature, tuck_amplitude
 from marinesim.wake.nufft import NonuniformSum
 
 TAPER = 0.3  # fraction of the band (in wavenumber) over which the spectrum rolls off to zero
@@ -86,23 +86,23 @@ def wake_spectrum(surface: Surface, k0: float, xi_max: float, eta_max: float, sp
         raise ParameterError(f"grid spacing {spacing:.3g} m cannot hold the transverse waves (wavelength "
                              f"{2 * math.pi / k0:.3g} m): it must be below {(1 - TAPER) * math.pi / k0:.3g} m")
     u_max = math.acosh(k_band / k0)
-    half_extent = 0.5 * hull_extent(surface)
+    reach = hull_reach(surface)
     u, w = phase_quadrature(
         lambda u: refinement * k0 * (xi_max * (np.cosh(u) - 1.0) + eta_max * np.sinh(u) * np.cosh(u)
-                                     + half_extent * (np.cosh(u) - 1.0)) + 8.0 * u, u_max)
+                                     + reach * (np.cosh(u) - 1.0)) + 8.0 * u, u_max)
     sec, tan = np.cosh(u), np.sinh(u)
     kx, ky = k0 * sec, k0 * sec * tan
     band = kx / k_band
     taper = np.where(band <= 1.0 - TAPER, 1.0, np.cos(0.5 * math.pi * (band - 1.0 + TAPER) / TAPER) ** 2)
-    a = _amplitude_spline(surface, k0, sec[-1], half_extent)(sec)
+    a = _amplitude_spline(surface, k0, sec[-1], reach)(sec)
     return WakeSpectrum(kx, ky, w / sec * 2.0 * a * taper)
 
 
-def _amplitude_spline(surface: Surface, k0: float, sec_max: float, half_extent: float) -> CubicSpline:
+def _amplitude_spline(surface: Surface, k0: float, sec_max: float, reach: float) -> CubicSpline:
     """A(sec) sampled exactly on a uniform sec grid and interpolated."""
-    step = 2.0 * math.pi / (k0 * max(half_extent, 1e-9)) / SAMPLES_PER_PERIOD
+    step = 2.0 * math.pi / (k0 * max(reach, 1e-9)) / SAMPLES_PER_PERIOD
     count = max(16, math.ceil((sec_max - 1.0) / step) + 1)
     samples = np.linspace(1.0, sec_max, count)
-    return CubicSpline(samples, amplitude(surface, k0, samples))
+    return CubicSpline(samples, tuck_amplitude(surface, k0, samples))
 
 

@@ -8,7 +8,11 @@ gives another angle or wavelength than Kelvin's 19.47 deg and 2 pi U^2 / g.
   just inside the cusp line, in an Airy-function profile;
   the cusp line itself (the caustic) is where Ai^2 has fallen to Ai(0)^2 / max Ai^2 = 0.439 of
   that peak, on the outside. That edge is found in each column from two hull lengths behind the
-  hull to where the wedge leaves the grid, and a straight line fitted through the edges.
+  bow to where the wedge leaves the grid, and a straight line fitted through the edges. Where
+  the edges scatter about that line by more than FIT_SCATTER wavelengths (rms) the lobes of the
+  bow and stern systems interfere (a long hull at low Fn, a few lengths behind it) and nothing is
+  reported. At Fn above about 0.6 the largest waves stand on rays inside the cusp (Rabaud &
+  Moisy, J. Fluid Mech. 2013): what is measured there is that narrower apparent wake angle.
 - Transverse wavelength: the peak of the windowed spectrum of the centreline profile over the
   same range, refined by a parabola through the log-spectrum.
 """
@@ -25,18 +29,19 @@ from marinesim.errors import MarinesimError
 AIRY_EDGE = (0.355028053887817 / 0.535656656015700) ** 2  # Ai(0)^2 / Ai(-1.0188)^2
 ENVELOPE_ALONG = 4.0  # transverse wavelengths
 ENVELOPE_ACROSS = 0.5
+FIT_SCATTER = 0.2  # transverse wavelengths, rms
 KELVIN_HALF_ANGLE_DEG = math.degrees(math.asin(1.0 / 3.0))
 
 
 def kelvin_half_angle_deg(elevation: np.ndarray, x: np.ndarray, y: np.ndarray, wavelength: float,
-                          hull_length: float) -> float:
+                          hull_length: float, bow_x: float) -> float:
     """Half-angle (deg) of the cusp lines of ``elevation`` (rows y, columns x; vessel frame, x forward)."""
     spacing = x[1] - x[0]
     upper = y > 0
     energy = uniform_filter(elevation[upper] ** 2, size=(max(1, round(ENVELOPE_ACROSS * wavelength / spacing)),
                                                         max(1, round(ENVELOPE_ALONG * wavelength / spacing))))
     eta = y[upper]
-    xi = x.max() - x  # distance behind the front of the grid
+    xi = bow_x - x  # distance behind the bow
     reach = 0.8 * eta[-1] / math.tan(math.radians(KELVIN_HALF_ANGLE_DEG))
     columns = np.flatnonzero((xi > 2.0 * hull_length) & (xi < reach))
     if len(columns) < 8:
@@ -61,14 +66,21 @@ def kelvin_half_angle_deg(elevation: np.ndarray, x: np.ndarray, y: np.ndarray, w
         edges.append(eta[q - 1] + t * (eta[q] - eta[q - 1]))
     edges = np.array(edges)
     valid = np.isfinite(edges)
-    slope = np.polyfit(xi[columns][valid], edges[valid], 1)[0]
-    return math.degrees(math.atan(slope))
+    fit = np.polyfit(xi[columns][valid], edges[valid], 1)
+    scatter = np.sqrt(np.mean((edges[valid] - np.polyval(fit, xi[columns][valid])) ** 2))
+    if scatter > FIT_SCATTER * wavelength:
+        raise MarinesimError(f"the cusp edges scatter by {scatter / wavelength:.2f} wavelengths about a line "
+                             "(bow and stern waves interfere this close to the hull): no Kelvin angle measured")
+    return math.degrees(math.atan(fit[0]))
 
 
 def transverse_wavelength(elevation: np.ndarray, x: np.ndarray, y: np.ndarray, hull_length: float) -> float:
     """Wavelength (m) of the dominant waves along the track line, two hull lengths behind the hull on."""
     row = elevation[int(np.argmin(np.abs(y)))]
     behind = x < x.max() - 2.0 * hull_length
+    if behind.sum() < 64:
+        raise MarinesimError("the wake grid is too short to measure the transverse wavelength: it must reach "
+                             "well beyond two hull lengths behind the hull")
     profile = row[behind] * np.hanning(int(behind.sum()))
     pad = 16 * len(profile)
     power = np.abs(np.fft.rfft(profile, pad)) ** 2

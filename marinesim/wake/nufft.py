@@ -33,8 +33,8 @@ class NonuniformSum:
         offsets = np.arange(-SPREAD + 1, SPREAD + 1)
         points = nearest[:, None] + offsets  # (J, 2 SPREAD), unwrapped
         gauss = np.exp(-((2.0 * math.pi * points / grid - t[:, None]) ** 2) / (4.0 * tau))
-        # exp(i m t) = exp(i (M/2) t) exp(i k t) with k = m - M/2 centred on zero
-        values = gauss * (np.asarray(c) * np.exp(0.5j * m_count * t))[:, None]
+        # exp(i m t) = exp(i h t) exp(i k t) with k = m - h centred on zero, h = M // 2 (odd M too)
+        values = gauss * (np.asarray(c) * np.exp(1j * (m_count // 2) * t))[:, None]
         rows = np.mod(points, grid).ravel()
         cols = np.repeat(np.arange(len(t)), 2 * SPREAD)
         shape = (grid, len(t))

@@ -25,7 +25,7 @@ def plot_wake(wake: Wake, path: str | Path) -> None:
     image = top.imshow(wake.elevation, origin="lower", extent=extent, cmap="RdBu_r", vmin=-limit, vmax=limit,
                        interpolation="bilinear")
     fig.colorbar(image, ax=top, label="elevation [m]", shrink=0.8)
-    bow = info["grid"]["front_m"]
+    bow = info["bow_x_m"]
     reach = wake.x[-1] - wake.x[0]
     for sign in (1, -1):
         top.plot([bow, bow - reach], [0.0, sign * reach * math.tan(math.radians(KELVIN_HALF_ANGLE_DEG))], "k--", lw=0.8,
@@ -47,5 +47,5 @@ def plot_wake(wake: Wake, path: str | Path) -> None:
     bottom.set_ylabel("|A(theta)| [m]")
     bottom.set_xlim(0, 90)
     bottom.grid(alpha=0.3)
-    fig.savefig(path, dpi=90)
+    fig.savefig(path, dpi=90, format="png")
     plt.close(fig)
