@@ -156,6 +156,7 @@ def _run_wake(args: argparse.Namespace) -> int:
         report = {key: wake.info[key] for key in ("speed_m_s", "speed_kn", "froude", "wave_resistance_N",
                                                   "wave_resistance_coefficient", "kelvin_half_angle_deg",
                                                   "transverse_wavelength_m", "measured_transverse_wavelength_m")}
+        report |= {key: wake.info[key] for key in ("validity_note", "grid_note", "measurement_note") if key in wake.info}
         report |= {"seconds": time.perf_counter() - started, "cached": cached,
                    "seconds_computing": wake.info["seconds_amplitude"] + wake.info["seconds_field"]}
         for flag, suffix in ((args.out, ".npz"), (args.plot, ".png")):
@@ -184,6 +185,7 @@ def _format_wake(r: dict, notes: tuple[str, ...]) -> str:
              f"  transverse wavelength {r['transverse_wavelength_m']:.2f} m (2 pi U^2 / g)",
              f"  {r['seconds']:.2f} s" + (" (from the cache)" if r["cached"] else "")]
     lines += [f"  wrote {r[key]}" for key in ("out", "plot") if key in r]
+    lines += [f"note: {r[key]}" for key in ("validity_note", "grid_note", "measurement_note") if r.get(key)]
     lines += [f"note: {note}" for note in notes]
     return "\n".join(lines)
 

@@ -54,7 +54,7 @@ def _wakes(scenario: Scenario, out_dir: Path, progress: bool) -> dict[str, Path]
     from marinesim.constants import G, KNOT
     from marinesim.hull import hydrostatics
     from marinesim.wake.cache import precompute_wakes
-    from marinesim.wake.compute import MIN_FROUDE
+    from marinesim.wake.compute import MIN_FROUDE, QUALITATIVE_BELOW_FROUDE
     from marinesim.wake.plot import plot_wake
 
     vessel = scenario.vessel
@@ -63,7 +63,11 @@ def _wakes(scenario: Scenario, out_dir: Path, progress: bool) -> dict[str, Path]
     for skipped in sorted(set(vessel.wake_speeds_m_s) - set(speeds)):
         print(f"no wake at {skipped / KNOT:.3g} kn: Fn {skipped / math.sqrt(G * length):.3f} is below {MIN_FROUDE}")
     wakes = precompute_wakes(vessel.hull, speeds, progress=progress)
-    if vessel.speed_m_s not in speeds:
+    froude = vessel.speed_m_s / math.sqrt(G * length)
+    if froude < QUALITATIVE_BELOW_FROUDE:
+        if vessel.speed_m_s > 0:
+            print(f"no wake drawn at {vessel.speed_kn:.3g} kn: Fn {froude:.3f} is below {QUALITATIVE_BELOW_FROUDE}, "
+                  "where thin-ship theory does not hold for this hull")
         return {}
     wake = next(w for w, _ in wakes if w.info["speed_m_s"] == vessel.speed_m_s)
     path = out_dir / "wake.png"

@@ -31,6 +31,7 @@ from marinesim.wake.measure import kelvin_half_angle_deg, transverse_wavelength
 CELLS_PER_WAVELENGTH = 16
 AHEAD_CELLS = 8
 MIN_FROUDE = 0.03  # below: waves of a few cm, costly (nodes grow as 1 / Fn^2) and outside thin-ship theory
+QUALITATIVE_BELOW_FROUDE = 0.1  # thin-ship waves of blunt and transom hulls are far too large below
 PLOTTED_ANGLES = 400  # A(theta) samples kept in the result, for plots
 
 
@@ -140,6 +141,9 @@ def compute_wake(hull: Hull, speed_m_s: float, grid: WakeGrid = WakeGrid(), *, r
         info["measured_transverse_wavelength_m"] = transverse_wavelength(elevation, x, y, statics.froude_length_m)
     except MarinesimError as error:
         info["measurement_note"] = str(error)
+    if froude < QUALITATIVE_BELOW_FROUDE:
+        info["validity_note"] = (f"below Fn {QUALITATIVE_BELOW_FROUDE} thin-ship theory overpredicts the waves of a "
+                                 "blunt or transom-sterned hull many times over: treat this field as qualitative")
     if x.min() > stern:
         info["grid_note"] = "the grid ends before the stern: give more columns (nx) or a larger spacing"
     kept = slice(None, None, max(1, len(sec) // PLOTTED_ANGLES))
