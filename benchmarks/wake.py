@@ -15,7 +15,6 @@ Run: ``python benchmarks/wake.py [--repeats 3]``.
 from __future__ import annotations
 
 import argparse
-import math
 import os
 import platform
 import subprocess

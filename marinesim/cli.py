@@ -180,8 +180,8 @@ def _format_wake(r: dict, notes: tuple[str, ...]) -> str:
     angle = r["kelvin_half_angle_deg"]
     lines = [f"{r['speed_kn']:.3g} kn ({r['speed_m_s']:.3f} m/s), Fn {r['froude']:.3f}: wave resistance "
              f"{r['wave_resistance_N'] / 1e3:,.1f} kN (Cw {r['wave_resistance_coefficient']:.3e})",
-             f"  Kelvin half-angle measured on the field: "
-             + (f"{angle:.2f} deg (theory 19.47)" if angle is not None else "grid too small to measure"),
+             "  Kelvin half-angle measured on the field: "
+             + (f"{angle:.2f} deg (theory 19.47)" if angle is not None else "not measured (see the note)"),
              f"  transverse wavelength {r['transverse_wavelength_m']:.2f} m (2 pi U^2 / g)",
              f"  {r['seconds']:.2f} s" + (" (from the cache)" if r["cached"] else "")]
     lines += [f"  wrote {r[key]}" for key in ("out", "plot") if key in r]

@@ -172,6 +172,10 @@ def test_wake_command(tmp_path, capsys):
     (["--speed-kn", "nan"], "speed"),
     (["--speed-kn", "12", "--draft", "-1"], "draft"),
     (["--speed-kn", "12", "--units", "mm"], "units='m'"),
+    (["--speed-kn", "12", "--scale", "0"], "scale must be > 0"),
+    (["--speed-kn", "12", "--nx", "8"], "nx must be >= 16"),
+    (["--speed-kn", "12", "--spacing", "30"], "cannot hold the transverse waves"),
+    (["--speed-kn", "12,x"], "--speed-kn must be comma-separated knots"),
 ])
 def test_wake_command_refuses_bad_input(args, message, capsys):
     code = main(["wake", str(ROOT / "hulls" / "wigley.stl"), *args, "--quiet"])

@@ -63,7 +63,7 @@ def hydrostatics(hull: Hull, rho: float = RHO_SEAWATER) -> Hydrostatics:
         i_longitudinal = -wet.integral(lambda p: p[..., 0] ** 2, normal=2) - area * xf**2
     else:
         xf = yf = i_transverse = i_longitudinal = 0.0
-    corners = np.concatenate([wet.a, wet.b, wet.c])
+    corners = wet.corners
     at_waterline = corners[np.abs(corners[:, 2]) <= 1e-9 * max(hull.overall_length_m, 1.0)]
     lwl, bwl = (float(np.ptp(at_waterline[:, k])) for k in (0, 1)) if len(at_waterline) else (0.0, 0.0)
     return Hydrostatics(

@@ -27,6 +27,11 @@ class Surface:
         return 0.5 * np.cross(self.b - self.a, self.c - self.a)
 
     @property
+    def corners(self) -> np.ndarray:
+        """Every triangle's corners stacked, (3 m, 3) m."""
+        return np.concatenate([self.a, self.b, self.c])
+
+    @property
     def areas(self) -> np.ndarray:
         return np.linalg.norm(self.vector_areas, axis=1)
 

@@ -10,7 +10,6 @@ Same scenario and seed: bit-identical tables.
 from __future__ import annotations
 
 import json
-import math
 import sys
 from pathlib import Path
 
@@ -51,19 +50,19 @@ def run_headless(scenario: Scenario, out_dir: Path, progress: bool = True) -> di
 
 def _wakes(scenario: Scenario, out_dir: Path, progress: bool) -> dict[str, Path]:
     """Precompute (or read from the cache) the wakes of every scenario speed; draw the one at the vessel's."""
-    from marinesim.constants import G, KNOT
+    from marinesim.constants import KNOT
     from marinesim.hull import hydrostatics
     from marinesim.wake.cache import precompute_wakes
-    from marinesim.wake.compute import MIN_FROUDE, QUALITATIVE_BELOW_FROUDE
+    from marinesim.wake.compute import MIN_FROUDE, QUALITATIVE_BELOW_FROUDE, froude_number
     from marinesim.wake.plot import plot_wake
 
     vessel = scenario.vessel
     length = hydrostatics(vessel.hull).froude_length_m
-    speeds = [u for u in vessel.wake_speeds_m_s if u / math.sqrt(G * length) >= MIN_FROUDE]
+    speeds = [u for u in vessel.wake_speeds_m_s if froude_number(u, length) >= MIN_FROUDE]
     for skipped in sorted(set(vessel.wake_speeds_m_s) - set(speeds)):
-        print(f"no wake at {skipped / KNOT:.3g} kn: Fn {skipped / math.sqrt(G * length):.3f} is below {MIN_FROUDE}")
+        print(f"no wake at {skipped / KNOT:.3g} kn: Fn {froude_number(skipped, length):.3f} is below {MIN_FROUDE}")
     wakes = precompute_wakes(vessel.hull, speeds, progress=progress)
-    froude = vessel.speed_m_s / math.sqrt(G * length)
+    froude = froude_number(vessel.speed_m_s, length)
     if froude < QUALITATIVE_BELOW_FROUDE:
         if vessel.speed_m_s > 0:
             print(f"no wake drawn at {vessel.speed_kn:.3g} kn: Fn {froude:.3f} is below {QUALITATIVE_BELOW_FROUDE}, "

@@ -114,7 +114,7 @@ def wavenumber(speed_m_s: float, g: float = G) -> float:
 
 def hull_reach(surface: Surface) -> float:
     """The largest |x| on the wetted surface, m: A(theta) oscillates at most k0 times this per unit sec."""
-    return float(max(np.abs(p[:, 0]).max() for p in (surface.a, surface.b, surface.c)))
+    return float(np.abs(surface.corners[:, 0]).max())
 
 
 def phase_quadrature(phase: Callable[[np.ndarray], np.ndarray], u_max: float) -> tuple[np.ndarray, np.ndarray]:

@@ -10,6 +10,7 @@ when that would not reach three hull lengths, and never above lambda0 / 4.
 
 from __future__ import annotations
 
+import json
 import math
 import time
 import zipfile
@@ -74,8 +75,6 @@ class Wake:
 
     def save(self, path: str | Path) -> None:
         """Write an ``.npz`` atomically: the arrays plus every entry of ``info``."""
-        import json
-
         with atomic_path(path) as temp:
             with open(temp, "wb") as handle:
                 np.savez_compressed(handle, elevation_m=self.elevation, x_m=self.x, y_m=self.y, sec_theta=self.sec,
@@ -83,8 +82,6 @@ class Wake:
 
     @classmethod
     def load(cls, path: str | Path) -> "Wake":
-        import json
-
         try:
             with np.load(path) as data:
                 return cls(data["elevation_m"], data["x_m"], data["y_m"], data["sec_theta"], data["amplitude_m"],
@@ -99,14 +96,13 @@ def compute_wake(hull: Hull, speed_m_s: float, grid: WakeGrid = WakeGrid(), *, r
     k0 = wavenumber(speed_m_s, g)
     wavelength = 2.0 * math.pi / k0
     statics = hydrostatics(hull, rho)
-    froude = speed_m_s / math.sqrt(g * statics.froude_length_m)
+    froude = froude_number(speed_m_s, statics.froude_length_m, g)
     if froude < MIN_FROUDE:
         raise ParameterError(f"Fn {froude:.3f} at {speed_m_s:.3g} m/s is below {MIN_FROUDE}: this hull makes "
                              "almost no waves so slowly, thin-ship theory does not describe them, and the "
                              "integral would take minutes")
     surface = hull.wetted()
-    bow = float(max(p[:, 0].max() for p in (surface.a, surface.b, surface.c)))
-    stern = float(min(p[:, 0].min() for p in (surface.a, surface.b, surface.c)))
+    bow, stern = float(surface.corners[:, 0].max()), float(surface.corners[:, 0].min())
     grid = grid.resolved(wavelength, statics.froude_length_m, bow)
     x, y = grid.axes()
 
@@ -135,12 +131,14 @@ def compute_wake(hull: Hull, speed_m_s: float, grid: WakeGrid = WakeGrid(), *, r
         "hull_sha256": hull.content_hash(), "seconds_amplitude": amplitude_seconds, "seconds_field": field_seconds,
         "marinesim_version": __version__,
     }
-    try:
-        info["kelvin_half_angle_deg"] = kelvin_half_angle_deg(elevation, x, y, wavelength, statics.froude_length_m,
-                                                              bow)
-        info["measured_transverse_wavelength_m"] = transverse_wavelength(elevation, x, y, statics.froude_length_m)
-    except MarinesimError as error:
-        info["measurement_note"] = str(error)
+    for key, measure in (("kelvin_half_angle_deg", lambda: kelvin_half_angle_deg(
+                             elevation, x, y, wavelength, statics.froude_length_m, bow)),
+                         ("measured_transverse_wavelength_m", lambda: transverse_wavelength(
+                             elevation, x, y, statics.froude_length_m))):
+        try:
+            info[key] = measure()
+        except MarinesimError as error:
+            info["measurement_note"] = " ".join(filter(None, [info.get("measurement_note"), str(error)]))
     if froude < QUALITATIVE_BELOW_FROUDE:
         info["validity_note"] = (f"below Fn {QUALITATIVE_BELOW_FROUDE} thin-ship theory overpredicts the waves of a "
                                  "blunt or transom-sterned hull many times over: treat this field as qualitative")
@@ -148,6 +146,11 @@ def compute_wake(hull: Hull, speed_m_s: float, grid: WakeGrid = WakeGrid(), *, r
         info["grid_note"] = "the grid ends before the stern: give more columns (nx) or a larger spacing"
     kept = slice(None, None, max(1, len(sec) // PLOTTED_ANGLES))
     return Wake(elevation.astype(np.float32), x, y, sec[kept], a[kept], info)
+
+
+def froude_number(speed_m_s: float, length_m: float, g: float = G) -> float:
+    """Fn = U / sqrt(g L), L the waterline length (Hydrostatics.froude_length_m)."""
+    return speed_m_s / math.sqrt(g * length_m)
 
 
 def _bow_fade(x: np.ndarray, bow: float, stern: float) -> np.ndarray:
