@@ -1,0 +1,41 @@
+"""OpenGL plumbing shared by the solver and the renderer: contexts and shader sources.
+
+Shaders live in the top-level ``shaders/`` folder as GLSL files; compile-time constants are
+injected as ``#define`` lines after the ``#version`` line, so one file serves every grid size.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import moderngl
+
+from marinesim.errors import MarinesimError
+
+SHADER_DIR = Path(__file__).resolve().parents[1] / "shaders"
+GL_VERSION = 430
+"""Compute shaders need OpenGL 4.3."""
+
+
+class GraphicsError(MarinesimError):
+    """No OpenGL context with the features marinesim needs could be made."""
+
+
+def standalone_context() -> moderngl.Context:
+    """A headless OpenGL 4.3 context (EGL: a GPU driver if there is one, else Mesa's llvmpipe)."""
+    try:
+        return moderngl.create_standalone_context(backend="egl", require=GL_VERSION)
+    except Exception as error:  # moderngl raises plain Exceptions for a missing driver or version
+        raise GraphicsError(f"no headless OpenGL {GL_VERSION // 100}.{GL_VERSION // 10 % 10} context "
+                            f"through EGL ({error}); install Mesa's EGL driver (libegl1, libgl1-mesa-dri)") from None
+
+
+def shader_source(name: str, **defines: int | float | bool) -> str:
+    """The GLSL file ``shaders/<name>`` with ``#define NAME value`` lines for ``defines``."""
+    path = SHADER_DIR / name
+    text = path.read_text()
+    version, _, body = text.partition("\n")
+    if not version.startswith("#version"):
+        raise GraphicsError(f"{path}: the first line must be #version")
+    lines = [f"#define {key} {int(value) if isinstance(value, bool) else value}" for key, value in defines.items()]
+    return "\n".join([version, *lines, f"#line 2", body])

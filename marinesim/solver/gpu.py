@@ -1,0 +1,167 @@
+"""The local solver on the GPU: moderngl compute shaders (OpenGL 4.3) and one render pass.
+
+Per sub-step (shaders/): the hull is drawn into a float texture of displaced depth
+(``hull_depth.vert/.frag``, additive blending); then five compute passes: FFT of the rows with the
+depth added (``solver_fft.comp`` ADD_DEPTH), FFT of the columns, the rotation in k-space
+(``solver_rotate.comp``), inverse FFT of the columns, inverse FFT of the rows with the depth taken
+off, the sponge/obstacle factor and the non-finite check (FINISH). Scrolling is
+``solver_shift.comp``. The state stays on the GPU; :attr:`GpuSolver.height_texture` is what the
+renderer samples (R32F, texel (i, j) = cell column i, row j, at world position
+``origin + (i + 1/2, j + 1/2) * cell``). Everything is float32; the NumPy reference
+(reference.py) is the same numerics in float64.
+"""
+
+from __future__ import annotations
+
+import math
+
+import moderngl
+import numpy as np
+
+from marinesim.gl import shader_source, standalone_context
+from marinesim.solver.footprint import HullPose, Triangles
+from marinesim.solver.local import LocalSolver, SolverConfig
+from marinesim.hull.mesh import Hull
+
+MAX_THREADS = 256
+GROUP = 16  # work-group side of the cell-wise passes
+
+
+class GpuSolver(LocalSolver):
+    """The local solver in OpenGL compute shaders, on ``ctx`` (a new headless context if None)."""
+
+    def __init__(self, config: SolverConfig, hull: Hull | None = None, pose: HullPose = HullPose(),
+                 obstacles: tuple[np.ndarray, ...] = (), ctx: moderngl.Context | None = None) -> None:
+        self.ctx = ctx or standalone_context()
+        super().__init__(config, hull, pose, obstacles)
+
+    def _setup(self) -> None:
+        ctx, n = self.ctx, self.config.size
+        threads = min(n // 2, MAX_THREADS)
+        fft = dict(SIZE=f"{n}u", THREADS=threads)
+        self._fft = ctx.compute_shader(shader_source("solver_fft.comp", **fft))
+        self._fft_in = ctx.compute_shader(shader_source("solver_fft.comp", ADD_DEPTH=1, **fft))
+        self._fft_out = ctx.compute_shader(shader_source("solver_fft.comp", FINISH=1, **fft))
+        self._rotate = ctx.compute_shader(shader_source("solver_rotate.comp", SIZE=f"{n}u"))
+        self._shift_cs = ctx.compute_shader(shader_source("solver_shift.comp", SIZE=n))
+        self._raster = ctx.program(vertex_shader=shader_source("hull_depth.vert"),
+                                   fragment_shader=shader_source("hull_depth.frag"))
+        self._raster["size"].value = float(n)
+
+        cells = n * n
+        self._state = ctx.buffer(reserve=cells * 8)
+        self._work = [ctx.buffer(reserve=cells * 8), ctx.buffer(reserve=cells * 8)]
+        for buffer in (self._state, *self._work):
+            buffer.clear()
+        twiddle = np.exp(-2j * math.pi * np.arange(n // 2) / n)
+        self._twiddle = ctx.buffer(np.column_stack([twiddle.real, twiddle.imag]).astype(np.float32).tobytes())
+        a, b = self.coefficients
+        coefficients = np.stack([a.real, a.imag, b.real, b.imag], axis=-1).astype(np.float32)
+        self._coefficients = ctx.buffer(coefficients.tobytes())
+        self._keep = ctx.buffer(reserve=cells * 4)
+        self._counter = ctx.buffer(reserve=4)
+        self._counter.clear()
+
+        self._depth = ctx.texture((n, n), 1, dtype="f4")
+        self._depth_fbo = ctx.framebuffer(color_attachments=[self._depth])
+        self._depth_fbo.clear(0.0, 0.0, 0.0, 0.0)
+        self.height_texture = ctx.texture((n, n), 1, dtype="f4")
+        self.height_texture.write(np.zeros((n, n), np.float32).tobytes())
+        self._vertices = None
+        self._vao = None
+
+    # --- passes -----------------------------------------------------------------------------
+    def _set_keep(self, keep: np.ndarray) -> None:
+        self._keep.write(keep.astype(np.float32).tobytes())
+
+    def _draw_depth(self, triangles: Triangles | None) -> None:
+        with self.ctx.scope(self._depth_fbo, enable_only=moderngl.BLEND):
+            self._depth_fbo.viewport = (0, 0, self.config.size, self.config.size)
+            self._depth_fbo.clear(0.0, 0.0, 0.0, 0.0)
+            if triangles is None or len(triangles.z) == 0:
+                return
+            data = triangles.vertex_data().tobytes()
+            if self._vertices is None or self._vertices.size < len(data):
+                self._vertices = self.ctx.buffer(reserve=max(len(data), 2 * (self._vertices.size if self._vertices else 0)))
+                self._vao = self.ctx.vertex_array(self._raster, [(self._vertices, "2f 1f 1f", "in_cell", "in_z", "in_weight")])
+            self._vertices.write(data)
+            self.ctx.blend_func = moderngl.ONE, moderngl.ONE
+            self.ctx.blend_equation = moderngl.FUNC_ADD
+            self._vao.render(moderngl.TRIANGLES, vertices=3 * len(triangles.z))
+            self.ctx.blend_func = moderngl.DEFAULT_BLENDING
+
+    def _pass_lines(self, shader: moderngl.ComputeShader, source, target, rows: bool, inverse: bool) -> None:
+        n = self.config.size
+        source.bind_to_storage_buffer(0)
+        target.bind_to_storage_buffer(1)
+        self._twiddle.bind_to_storage_buffer(2)
+        shader["line_stride"].value = n if rows else 1
+        shader["element_stride"].value = 1 if rows else n
+        shader["inverse"].value = inverse
+        shader.run(n)
+        self.ctx.memory_barrier()
+
+    def _advance(self, triangles: Triangles | None) -> None:
+        n = self.config.size
+        first, second = self._work
+        self._draw_depth(triangles)
+        self._depth.bind_to_image(0, read=True, write=False)
+        self._pass_lines(self._fft_in, self._state, first, rows=True, inverse=False)
+        self._pass_lines(self._fft, first, second, rows=False, inverse=False)
+        second.bind_to_storage_buffer(0)
+        first.bind_to_storage_buffer(1)
+        self._coefficients.bind_to_storage_buffer(2)
+        self._rotate.run(n // GROUP, n // GROUP)
+        self.ctx.memory_barrier()
+        self._pass_lines(self._fft, first, second, rows=False, inverse=True)
+        self._keep.bind_to_storage_buffer(3)
+        self._counter.bind_to_storage_buffer(4)
+        self.height_texture.bind_to_image(1, read=False, write=True)
+        self._pass_lines(self._fft_out, second, self._state, rows=True, inverse=True)
+
+    def _start_at_rest(self, triangles: Triangles) -> None:
+        self._draw_depth(triangles)
+        depth = np.frombuffer(self._depth.read(), dtype=np.float32).reshape(self.config.size, -1)
+        keep = np.frombuffer(self._keep.read(), dtype=np.float32).reshape(depth.shape)
+        self._write(-depth * keep, np.zeros_like(depth))
+
+    def _shift(self, shift: tuple[int, int]) -> None:
+        n = self.config.size
+        self._state.bind_to_storage_buffer(0)
+        self._work[0].bind_to_storage_buffer(1)
+        self._shift_cs["shift"].value = shift
+        self._shift_cs.run(n // GROUP, n // GROUP)
+        self.ctx.memory_barrier()
+        self._state, self._work[0] = self._work[0], self._state
+
+    def _clear(self) -> None:
+        self._state.clear()
+        self.height_texture.write(np.zeros((self.config.size,) * 2, np.float32).tobytes())
+
+    def _write(self, h: np.ndarray, phi: np.ndarray) -> None:
+        self._state.write(np.stack([h, phi], axis=-1).astype(np.float32).tobytes())
+        self.height_texture.write(h.astype(np.float32).tobytes())
+
+    def _take_nonfinite(self) -> int:
+        bad = int(np.frombuffer(self._counter.read(), dtype=np.uint32)[0])
+        if bad:
+            self._counter.clear()
+        return bad
+
+    def fields(self) -> tuple[np.ndarray, np.ndarray]:
+        n = self.config.size
+        state = np.frombuffer(self._state.read(), dtype=np.float32).reshape(n, n, 2).astype(float)
+        return state[..., 0].copy(), state[..., 1].copy()
+
+    @property
+    def depth(self) -> np.ndarray:
+        """Displaced depth of the last sub-step (m), read back from the GPU."""
+        return np.frombuffer(self._depth.read(), dtype=np.float32).reshape(self.config.size, -1).astype(float)
+
+    def release(self) -> None:
+        """Free the GPU objects (the context stays)."""
+        for thing in (self._fft, self._fft_in, self._fft_out, self._rotate, self._shift_cs, self._raster,
+                      self._state, *self._work, self._twiddle, self._coefficients, self._keep, self._counter,
+                      self._depth_fbo, self._depth, self.height_texture, self._vertices, self._vao):
+            if thing is not None:
+                thing.release()

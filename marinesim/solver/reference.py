@@ -1,0 +1,73 @@
+"""The NumPy reference of the local solver: the numerics of the GPU shaders, in float64.
+
+Each sub-step: ``u = h + d``; ``Z = FFT(u + i phi)``; ``Z' = A Z + B conj Z(-k)``;
+``u + i phi = IFFT Z'``; ``h = u - d``; both fields times the sponge/obstacle factor; non-finite
+values zeroed and counted (spectral.py, footprint.py, local.py).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from marinesim.solver.footprint import Triangles, displaced_depth
+from marinesim.solver.local import LocalSolver
+
+
+def mirrored(field: np.ndarray) -> np.ndarray:
+    """``field(-k)`` for a field in FFT order."""
+    return np.roll(field[::-1, ::-1], 1, axis=(0, 1))
+
+
+class ReferenceSolver(LocalSolver):
+    """The local solver on the CPU (slow; the definition the GPU solver is tested against)."""
+
+    def _setup(self) -> None:
+        n = self.config.size
+        self._z = np.zeros((n, n), dtype=complex)     # h + i phi
+        self._depth = np.zeros((n, n))
+        self._nonfinite = 0
+
+    def _set_keep(self, keep: np.ndarray) -> None:
+        self._keep = keep
+
+    def _depth_of(self, triangles: Triangles | None) -> np.ndarray:
+        return np.zeros_like(self._depth) if triangles is None else displaced_depth(triangles, self.config.size)
+
+    def _start_at_rest(self, triangles: Triangles) -> None:
+        self._depth = self._depth_of(triangles)
+        self._z = -self._depth * self._keep + 0j
+
+    def _advance(self, triangles: Triangles | None) -> None:
+        a, b = self.coefficients
+        self._depth = self._depth_of(triangles)
+        spectrum = np.fft.fft2(self._z + self._depth)
+        z = np.fft.ifft2(a * spectrum + b * np.conj(mirrored(spectrum)))
+        z = (z - self._depth) * self._keep
+        bad = ~(np.isfinite(z.real) & np.isfinite(z.imag))
+        if bad.any():
+            z[bad] = 0.0
+            self._nonfinite += int(bad.sum())
+        self._z = z
+
+    def _shift(self, shift: tuple[int, int]) -> None:
+        di, dj = shift
+        n = self.config.size
+        moved = np.zeros_like(self._z)
+        rows, cols = slice(max(0, -dj), min(n, n - dj)), slice(max(0, -di), min(n, n - di))
+        moved[rows, cols] = self._z[rows.start + dj:rows.stop + dj, cols.start + di:cols.stop + di]
+        self._z = moved
+
+    def _clear(self) -> None:
+        self._z[:] = 0.0
+
+    def _take_nonfinite(self) -> int:
+        bad, self._nonfinite = self._nonfinite, 0
+        return bad
+
+    def fields(self) -> tuple[np.ndarray, np.ndarray]:
+        return self._z.real.copy(), self._z.imag.copy()
+
+    @property
+    def depth(self) -> np.ndarray:
+        """Displaced depth of the last sub-step (m)."""
+        return self._depth.copy()
