@@ -25,12 +25,12 @@ def standalone_context() -> moderngl.Context:
     """A headless OpenGL 4.3 context (EGL: a GPU driver if there is one, else Mesa's llvmpipe)."""
     try:
         return moderngl.create_standalone_context(backend="egl", require=GL_VERSION)
-    except Exception as error:  # moderngl raises plain Exceptions for a missing driver or version
+    except Exception as error:  # noqa: BLE001 (moderngl raises plain Exception for a missing driver or version)
         raise GraphicsError(f"no headless OpenGL {GL_VERSION // 100}.{GL_VERSION // 10 % 10} context "
                             f"through EGL ({error}); install Mesa's EGL driver (libegl1, libgl1-mesa-dri)") from None
 
 
-def shader_source(name: str, **defines: int | float | bool) -> str:
+def shader_source(name: str, **defines: str | float) -> str:
     """The GLSL file ``shaders/<name>`` with ``#define NAME value`` lines for ``defines``."""
     path = SHADER_DIR / name
     text = path.read_text()
@@ -38,4 +38,4 @@ def shader_source(name: str, **defines: int | float | bool) -> str:
     if not version.startswith("#version"):
         raise GraphicsError(f"{path}: the first line must be #version")
     lines = [f"#define {key} {int(value) if isinstance(value, bool) else value}" for key, value in defines.items()]
-    return "\n".join([version, *lines, f"#line 2", body])
+    return "\n".join([version, *lines, "#line 2", body])

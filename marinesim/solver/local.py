@@ -54,12 +54,13 @@ class SolverConfig:
 
     ``damping_s``: e-folding time (s) of the shortest wave on the grid (2 cells); a wave ``m``
     times longer lasts ``m^2`` times longer (k^2 viscosity). ``None`` turns damping off.
-    ``sponge_cells``: width of the absorbing layer at each edge (default size / 16, at least 8).
+    ``sponge_cells``: width of the absorbing layer at each edge (default size / 8): it
+    absorbs waves up to that length (spectral.sponge_rate).
     """
 
     size: int = 512
     cell_m: float = 0.5
-    damping_s: float | None = 2.0
+    damping_s: float | None = 5.0
     sponge_cells: int | None = None
     max_speed_m_s: float = MAX_SPEED_M_S
     forcing: str = "unsteady"
@@ -84,7 +85,7 @@ class SolverConfig:
 
     @property
     def sponge(self) -> int:
-        return max(8, self.size // 16) if self.sponge_cells is None else int(self.sponge_cells)
+        return self.size // 8 if self.sponge_cells is None else int(self.sponge_cells)
 
     @classmethod
     def for_hull(cls, hull: Hull, size: int = 512, **options) -> SolverConfig:
@@ -124,7 +125,7 @@ class LocalSolver:
         c = config
         self.substep = spectral.substep_limit(c.cell_m, c.max_speed_m_s, c.g)
         self.coefficients = spectral.rotation(c.size, c.cell_m, self.substep, c.g, spectral.viscosity(c.cell_m, c.damping_s))
-        self.sponge = spectral.sponge(c.size, c.sponge, spectral.sponge_rate(c.sponge, c.cell_m, c.g), self.substep)
+        self.sponge = spectral.sponge(c.size, c.sponge, c.cell_m, c.g, self.substep)
         self.time = 0.0          # s, simulated
         self.steps = 0
         self.resets = 0
@@ -226,12 +227,23 @@ class LocalSolver:
     def _clear(self) -> None:
         raise NotImplementedError
 
+    def _write(self, h: np.ndarray, phi: np.ndarray) -> None:
+        raise NotImplementedError
+
     def _take_nonfinite(self) -> int:
         raise NotImplementedError
 
     def fields(self) -> tuple[np.ndarray, np.ndarray]:
         """``(h, phi)``: elevation (m) and surface potential (m^2/s), (size, size) float64, rows y."""
         raise NotImplementedError
+
+    def set_fields(self, h: np.ndarray, phi: np.ndarray) -> None:
+        """Replace the state: elevation ``h`` (m) and surface potential ``phi`` (m^2/s), rows y."""
+        shape = (self.config.size,) * 2
+        h, phi = np.asarray(h, dtype=float), np.asarray(phi, dtype=float)
+        if h.shape != shape or phi.shape != shape:
+            raise ParameterError(f"solver fields must be {shape} arrays, got {h.shape} and {phi.shape}")
+        self._write(h, phi)
 
     def height(self) -> np.ndarray:
         """Surface elevation (m), (size, size), rows y (north), columns x (east)."""

@@ -60,6 +60,9 @@ class ReferenceSolver(LocalSolver):
     def _clear(self) -> None:
         self._z[:] = 0.0
 
+    def _write(self, h: np.ndarray, phi: np.ndarray) -> None:
+        self._z = h + 1j * phi
+
     def _take_nonfinite(self) -> int:
         bad, self._nonfinite = self._nonfinite, 0
         return bad

@@ -34,12 +34,15 @@ KELVIN_HALF_ANGLE_DEG = math.degrees(math.asin(1.0 / 3.0))
 
 
 def kelvin_half_angle_deg(elevation: np.ndarray, x: np.ndarray, y: np.ndarray, wavelength: float,
-                          hull_length: float, bow_x: float) -> float:
-    """Half-angle (deg) of the cusp lines of ``elevation`` (rows y, columns x; vessel frame, x forward)."""
+                          hull_length: float, bow_x: float, along: float = ENVELOPE_ALONG) -> float:
+    """Half-angle (deg) of the cusp lines of ``elevation`` (rows y, columns x; vessel frame, x forward).
+
+    ``along``: envelope window along the track, in transverse wavelengths (shorter for a compact
+    source seen over a few wavelengths, whose cusp moves sideways across a long window)."""
     spacing = x[1] - x[0]
     upper = y > 0
     energy = uniform_filter(elevation[upper] ** 2, size=(max(1, round(ENVELOPE_ACROSS * wavelength / spacing)),
-                                                        max(1, round(ENVELOPE_ALONG * wavelength / spacing))))
+                                                        max(1, round(along * wavelength / spacing))))
     eta = y[upper]
     xi = bow_x - x  # distance behind the bow
     reach = 0.8 * eta[-1] / math.tan(math.radians(KELVIN_HALF_ANGLE_DEG))
