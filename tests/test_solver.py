@@ -16,7 +16,7 @@ from marinesim.errors import ParameterError
 from marinesim.hull.hydrostatics import hydrostatics
 from marinesim.hull.mesh import load_hull, make_hull
 from marinesim.hull.shapes import box_hull, wigley_hull
-from marinesim.solver import HullPose, ReferenceSolver, SolverConfig, spectral
+from marinesim.solver import HullPose, ReferenceSolver, SolverConfig
 from marinesim.solver.footprint import displaced_depth, hull_triangles
 from marinesim.solver.gpu import GpuSolver
 from marinesim.wake.measure import KELVIN_HALF_ANGLE_DEG, kelvin_half_angle_deg

@@ -19,9 +19,9 @@ import moderngl
 import numpy as np
 
 from marinesim.gl import shader_source, standalone_context
+from marinesim.hull.mesh import Hull
 from marinesim.solver.footprint import HullPose, Triangles
 from marinesim.solver.local import LocalSolver, SolverConfig
-from marinesim.hull.mesh import Hull
 
 MAX_THREADS = 256
 GROUP = 16  # work-group side of the cell-wise passes
@@ -30,7 +30,7 @@ GROUP = 16  # work-group side of the cell-wise passes
 class GpuSolver(LocalSolver):
     """The local solver in OpenGL compute shaders, on ``ctx`` (a new headless context if None)."""
 
-    def __init__(self, config: SolverConfig, hull: Hull | None = None, pose: HullPose = HullPose(),
+    def __init__(self, config: SolverConfig, hull: Hull | None = None, pose: HullPose | None = None,
                  obstacles: tuple[np.ndarray, ...] = (), ctx: moderngl.Context | None = None) -> None:
         self.ctx = ctx or standalone_context()
         super().__init__(config, hull, pose, obstacles)
@@ -38,7 +38,7 @@ class GpuSolver(LocalSolver):
     def _setup(self) -> None:
         ctx, n = self.ctx, self.config.size
         threads = min(n // 2, MAX_THREADS)
-        fft = dict(SIZE=f"{n}u", THREADS=threads)
+        fft = {"SIZE": f"{n}u", "THREADS": threads}
         self._fft = ctx.compute_shader(shader_source("solver_fft.comp", **fft))
         self._fft_in = ctx.compute_shader(shader_source("solver_fft.comp", ADD_DEPTH=1, **fft))
         self._fft_out = ctx.compute_shader(shader_source("solver_fft.comp", FINISH=1, **fft))

@@ -32,7 +32,7 @@ from dataclasses import dataclass
 import numpy as np
 from matplotlib.path import Path as PolygonPath
 
-from marinesim.constants import G, RHO_SEAWATER
+from marinesim.constants import RHO_SEAWATER, G
 from marinesim.errors import ParameterError, require_finite, require_positive
 from marinesim.hull.mesh import Hull
 from marinesim.solver import spectral
@@ -115,7 +115,7 @@ class LocalSolver:
     Time left over (less than one sub-step) is carried to the next call.
     """
 
-    def __init__(self, config: SolverConfig, hull: Hull | None = None, pose: HullPose = HullPose(),
+    def __init__(self, config: SolverConfig, hull: Hull | None = None, pose: HullPose | None = None,
                  obstacles: tuple[np.ndarray, ...] = ()) -> None:
         self.config, self.hull = config, hull
         self.obstacles = tuple(np.asarray(p, dtype=float) for p in obstacles)
@@ -130,7 +130,7 @@ class LocalSolver:
         self.steps = 0
         self.resets = 0
         self._frame_time = 0.0   # s, time of the last pose given
-        self._pose = _checked(pose)
+        self._pose = _checked(pose or HullPose())
         self._corner = self._corner_for(self._pose)
         self._setup()
         self._load_keep()
