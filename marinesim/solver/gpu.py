@@ -13,6 +13,7 @@ renderer samples (R32F, texel (i, j) = cell column i, row j, at world position
 
 from __future__ import annotations
 
+import logging
 import math
 
 import moderngl
@@ -21,7 +22,10 @@ import numpy as np
 from marinesim.gl import shader_source, standalone_context
 from marinesim.hull.mesh import Hull
 from marinesim.solver.footprint import HullPose, Triangles
+from marinesim.solver.spectral import SUBPIXEL
 from marinesim.solver.local import LocalSolver, SolverConfig
+
+log = logging.getLogger("marinesim.solver")
 
 MAX_THREADS = 256
 GROUP = 16  # work-group side of the cell-wise passes
@@ -47,6 +51,10 @@ class GpuSolver(LocalSolver):
         self._raster = ctx.program(vertex_shader=shader_source("hull_depth.vert"),
                                    fragment_shader=shader_source("hull_depth.frag"))
         self._raster["size"].value = float(n)
+        bits = int(ctx.info.get("GL_SUBPIXEL_BITS", 0))
+        if 1 << bits < SUBPIXEL:
+            log.info("the GPU snaps vertices to 1/%d of a cell, not 1/%d: the hull's depth may differ from the "
+                     "NumPy reference in cells its edges touch", 1 << bits, SUBPIXEL)
 
         cells = n * n
         self._state = ctx.buffer(reserve=cells * 8)

@@ -21,6 +21,15 @@ Forcing (see spectral.py): the hull is a pressure ``rho g d`` with ``d`` the dis
 
 Obstacles (quays, breakwaters) are polygons fixed in the Earth frame; inside them the surface is
 held still (h = phi = 0), so waves reflect off their edges.
+
+The hull's waterplane is not such an obstacle: there the hull's pressure holds the surface at
+``h = -d``. Holding it at rest instead would cut the hull's own forcing off from the water (it
+acts through phi, which an obstacle fixes), and a hull at rest would not leave the water flat.
+
+A vessel that moves faster than ``max_speed_m_s`` between two calls has jumped (a scenario reset,
+a teleport): the grid is placed on it afresh and the water starts at rest, rather than the hull
+being dragged through it. A caller that pauses should not pass the paused time as ``dt``: every
+second of it is stepped.
 """
 
 from __future__ import annotations
@@ -42,6 +51,8 @@ log = logging.getLogger("marinesim.solver")
 
 FORCING_MODES = ("unsteady", "full")
 MAX_SPEED_M_S = 20.0
+JUMP_FACTOR = 1.5
+"""A pose that moved faster than this times the maximum speed since the last call has jumped."""
 CELLS_PER_SHORTEST_WAVE = 8
 SHORTEST_WAVE_PER_HULL_LENGTH = 1.0 / 12.0
 """The shortest wave worth resolving here is a twelfth of the hull: shorter ones barely move it
@@ -126,16 +137,15 @@ class LocalSolver:
         self.substep = spectral.substep_limit(c.cell_m, c.max_speed_m_s, c.g)
         self.coefficients = spectral.rotation(c.size, c.cell_m, self.substep, c.g, spectral.viscosity(c.cell_m, c.damping_s))
         self.sponge = spectral.sponge(c.size, c.sponge, c.cell_m, c.g, self.substep)
-        self.time = 0.0          # s, simulated
-        self.steps = 0
+        self.steps = 0           # sub-steps taken; the field is at time steps * substep
         self.resets = 0
         self._frame_time = 0.0   # s, time of the last pose given
         self._pose = _checked(pose or HullPose())
+        self._grid_pose = self._pose    # the pose the grid was last placed for (the last sub-step's)
         self._corner = self._corner_for(self._pose)
         self._setup()
         self._load_keep()
-        if hull is not None and c.forcing == "full":
-            self._start_at_rest(self._triangles(self._pose))
+        self._rest()
 
     # --- placement -------------------------------------------------------------------------
     @property
@@ -148,10 +158,15 @@ class LocalSolver:
         return self.config.size * self.config.cell_m
 
     @property
+    def time(self) -> float:
+        """Simulated time of the field (s): at most one sub-step behind the last pose given."""
+        return self.steps * self.substep
+
+    @property
     def vessel_offset(self) -> tuple[float, float]:
-        """Track point minus grid centre (m), each within half a cell."""
+        """Track point of the field's sub-step minus the grid centre (m), each within half a cell."""
         half = 0.5 * self.extent_m
-        return (self._pose.x - self.origin[0] - half, self._pose.y - self.origin[1] - half)
+        return (self._grid_pose.x - self.origin[0] - half, self._grid_pose.y - self.origin[1] - half)
 
     def cell_centres(self) -> tuple[np.ndarray, np.ndarray]:
         """World x of the columns and y of the rows (m)."""
@@ -169,32 +184,44 @@ class LocalSolver:
         target = self._pose if pose is None else _checked(pose)
         start_pose, start_time = self._pose, self._frame_time
         self._frame_time += dt
+        if math.hypot(target.x - start_pose.x, target.y - start_pose.y) > JUMP_FACTOR * self.config.max_speed_m_s * dt:
+            log.info("local wave solver: the vessel jumped to (%.1f, %.1f) m; the water there starts at rest",
+                     target.x, target.y)
+            self.steps = math.floor(self._frame_time / self.substep + 1e-9)
+            self._pose = self._grid_pose = target
+            self._corner = self._corner_for(target)
+            self._load_keep()
+            self._rest()
+            return 0
         taken = 0
-        while self.time + self.substep <= self._frame_time + 1e-9 * self.substep:
-            self.time += self.substep
+        while (self.steps + 1) * self.substep <= self._frame_time + 1e-9 * self.substep:
+            self.steps += 1
             now = start_pose.toward(target, (self.time - start_time) / dt)
             self._follow(now)
             self._advance(self._triangles(now))
             taken += 1
-        self.steps += taken
         self._pose = target
         bad = self._take_nonfinite()
         if bad:
             self.resets += 1
-            self._clear()
+            self._rest()
             log.warning("local wave solver: %d non-finite values at t = %.2f s; the field was reset to rest", bad, self.time)
         return taken
 
+    def _rest(self) -> None:
+        """Water at rest about the hull where the grid now is (h = -d in full forcing, else 0)."""
+        self._clear()
+        if self.hull is not None and self.config.forcing == "full":
+            self._start_at_rest(self._triangles(self._grid_pose))
+
     def _follow(self, pose: HullPose) -> None:
+        self._grid_pose = pose
         corner = self._corner_for(pose)
         shift = (corner[0] - self._corner[0], corner[1] - self._corner[1])
         if shift == (0, 0):
             return
         self._corner = corner
-        if max(abs(shift[0]), abs(shift[1])) >= self.config.size:
-            self._clear()
-        else:
-            self._shift(shift)
+        self._shift(shift)            # a sub-step moves less than a cell: jumps are caught in step()
         if self.obstacles:
             self._load_keep()
 
