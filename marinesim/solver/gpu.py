@@ -22,8 +22,8 @@ import numpy as np
 from marinesim.gl import shader_source, standalone_context
 from marinesim.hull.mesh import Hull
 from marinesim.solver.footprint import HullPose, Triangles
-from marinesim.solver.spectral import SUBPIXEL
 from marinesim.solver.local import LocalSolver, SolverConfig
+from marinesim.solver.spectral import SUBPIXEL
 
 log = logging.getLogger("marinesim.solver")
 
