@@ -37,5 +37,5 @@ def shader_source(name: str, **defines: str | float) -> str:
     version, _, body = text.partition("\n")
     if not version.startswith("#version"):
         raise GraphicsError(f"{path}: the first line must be #version")
-    lines = [f"#define {key} {int(value) if isinstance(value, bool) else value}" for key, value in defines.items()]
+    lines = [f"#define {key} {value}" for key, value in defines.items()]
     return "\n".join([version, *lines, "#line 2", body])

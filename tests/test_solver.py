@@ -156,7 +156,7 @@ def test_a_moving_pressure_point_leaves_a_kelvin_wake_at_any_speed(speed):
         t += frame
         solver.step(frame, HullPose(x=speed * t))
     x, y = solver.cell_centres()
-    inner = slice(config.sponge, -config.sponge)        # the sponge is not open water
+    inner = slice(config.sponge_width, -config.sponge_width)        # the sponge is not open water
     wavelength = 2.0 * math.pi * speed ** 2 / G
     angle = kelvin_half_angle_deg(solver.height()[inner, inner], x[inner] - speed * t, y[inner], wavelength,
                                   hull_length=2.0, bow_x=1.0, along=1.0)
@@ -171,7 +171,7 @@ def test_the_sponge_reflects_at_most_three_percent(cells):
     incident one, and what passes through to the other side (the grid is periodic) under 3 % too."""
     size, cell = 256, 1.0
     solver = ReferenceSolver(SolverConfig(size=size, cell_m=cell, damping_s=None, max_speed_m_s=1.0))
-    assert solver.config.sponge == 32
+    assert solver.config.sponge_width == 32
     h, phi, k0 = plane_packet(size, cell, (size // cells, 0))
     solver.set_fields(h, phi)
     direction = k0 / np.linalg.norm(k0)
@@ -214,7 +214,7 @@ def test_a_heaving_hull_radiates_rings_of_the_deep_water_wavelength():
         harmonic += solver.height() * np.exp(1j * omega * solver.time)
     x, _ = solver.cell_centres()
     centre = config.size // 2
-    reach = 0.5 * solver.extent_m - config.sponge * config.cell_m
+    reach = 0.5 * solver.extent_m - config.sponge_width * config.cell_m
     expected = 2.0 * math.pi * G / omega ** 2
     for line, distance in ((harmonic[:, centre], x), (harmonic[centre, :], x), (np.diagonal(harmonic), x * math.sqrt(2.0))):
         sel = (distance > 6.0) & (distance < reach)
@@ -287,7 +287,7 @@ def test_a_vessel_on_a_steady_course_drives_the_solver_only_in_full_forcing(ctx,
             solver.step(frame, HullPose(20.0 * t, 0.5 * t * t, 0.2 * t))
         assert solver.origin[0] > 100.0
         h = solver.height() + solver.depth           # the surface minus the hull's static hollow
-        peaks[forcing] = np.abs(h[config.sponge:-config.sponge, config.sponge:-config.sponge]).max()
+        peaks[forcing] = np.abs(h[config.sponge_width:-config.sponge_width, config.sponge_width:-config.sponge_width]).max()
     assert peaks["unsteady"] == 0.0
     assert peaks["full"] > 0.05
 

@@ -84,7 +84,7 @@ class SolverConfig:
         require_positive("solver cell size (m)", self.cell_m)
         if self.damping_s is not None:
             require_positive("solver damping time (s)", self.damping_s)
-        width = self.sponge
+        width = self.sponge_width
         if not 0 <= width <= self.size // 4:
             raise ParameterError(f"sponge width must be 0 to a quarter of the grid ({self.size // 4} cells), got {width}")
         speed = require_positive("solver maximum speed (m/s)", self.max_speed_m_s)
@@ -95,7 +95,8 @@ class SolverConfig:
         require_positive("g", self.g)
 
     @property
-    def sponge(self) -> int:
+    def sponge_width(self) -> int:
+        """Cells of the absorbing layer at each edge."""
         return self.size // 8 if self.sponge_cells is None else int(self.sponge_cells)
 
     @classmethod
@@ -105,16 +106,14 @@ class SolverConfig:
         return cls(size=size, cell_m=shortest / CELLS_PER_SHORTEST_WAVE, **options)
 
 
-def obstacle_mask(polygons: tuple[np.ndarray, ...], origin: tuple[float, float], cell: float, size: int) -> np.ndarray:
-    """1 for water, 0 for cells whose centre lies inside any polygon ((n, 2) m, E frame)."""
-    mask = np.ones((size, size))
-    if not polygons:
-        return mask
-    centres = (np.arange(size) + 0.5) * cell
-    x, y = np.meshgrid(origin[0] + centres, origin[1] + centres)
-    points = np.column_stack([x.ravel(), y.ravel()])
+def obstacle_mask(polygons: tuple[np.ndarray, ...], x: np.ndarray, y: np.ndarray) -> np.ndarray:
+    """1 for water, 0 for cells whose centre (columns at ``x``, rows at ``y``, m, E frame) lies
+    inside any polygon ((n, 2) m, E frame)."""
+    mask = np.ones((len(y), len(x)))
+    xx, yy = np.meshgrid(x, y)
+    points = np.column_stack([xx.ravel(), yy.ravel()])
     for polygon in polygons:
-        mask[PolygonPath(polygon).contains_points(points).reshape(size, size)] = 0.0
+        mask[PolygonPath(polygon).contains_points(points).reshape(mask.shape)] = 0.0
     return mask
 
 
@@ -136,16 +135,12 @@ class LocalSolver:
         c = config
         self.substep = spectral.substep_limit(c.cell_m, c.max_speed_m_s, c.g)
         self.coefficients = spectral.rotation(c.size, c.cell_m, self.substep, c.g, spectral.viscosity(c.cell_m, c.damping_s))
-        self.sponge = spectral.sponge(c.size, c.sponge, c.cell_m, c.g, self.substep)
+        self.sponge = spectral.sponge(c.size, c.sponge_width, c.cell_m, c.g, self.substep)
         self.steps = 0           # sub-steps taken; the field is at time steps * substep
         self.resets = 0
         self._frame_time = 0.0   # s, time of the last pose given
-        self._pose = _checked(pose or HullPose())
-        self._grid_pose = self._pose    # the pose the grid was last placed for (the last sub-step's)
-        self._corner = self._corner_for(self._pose)
         self._setup()
-        self._load_keep()
-        self._rest()
+        self._place(_checked(pose or HullPose()))
 
     # --- placement -------------------------------------------------------------------------
     @property
@@ -188,10 +183,7 @@ class LocalSolver:
             log.info("local wave solver: the vessel jumped to (%.1f, %.1f) m; the water there starts at rest",
                      target.x, target.y)
             self.steps = math.floor(self._frame_time / self.substep + 1e-9)
-            self._pose = self._grid_pose = target
-            self._corner = self._corner_for(target)
-            self._load_keep()
-            self._rest()
+            self._place(target)
             return 0
         taken = 0
         while (self.steps + 1) * self.substep <= self._frame_time + 1e-9 * self.substep:
@@ -207,6 +199,13 @@ class LocalSolver:
             self._rest()
             log.warning("local wave solver: %d non-finite values at t = %.2f s; the field was reset to rest", bad, self.time)
         return taken
+
+    def _place(self, pose: HullPose) -> None:
+        """Centre the grid on ``pose`` with the water at rest (start, or after a jump)."""
+        self._pose = self._grid_pose = pose   # _grid_pose: what the grid was last placed for (the last sub-step's pose)
+        self._corner = self._corner_for(pose)
+        self._load_keep()
+        self._rest()
 
     def _rest(self) -> None:
         """Water at rest about the hull where the grid now is (h = -d in full forcing, else 0)."""
@@ -232,8 +231,8 @@ class LocalSolver:
         return hull_triangles(self.hull, poses, self.origin, self.config.cell_m)
 
     def _load_keep(self) -> None:
-        mask = obstacle_mask(self.obstacles, self.origin, self.config.cell_m, self.config.size)
-        self._set_keep(self.sponge * mask)
+        keep = self.sponge * obstacle_mask(self.obstacles, *self.cell_centres()) if self.obstacles else self.sponge
+        self._set_keep(keep)
 
     # --- what the backends provide ------------------------------------------------------------
     def _setup(self) -> None:
