@@ -30,12 +30,23 @@ def standalone_context() -> moderngl.Context:
                             f"through EGL ({error}); install Mesa's EGL driver (libegl1, libgl1-mesa-dri)") from None
 
 
+def is_software(ctx: moderngl.Context) -> bool:
+    """Whether ``ctx`` renders on the CPU (Mesa llvmpipe, softpipe, swrast): no GPU behind it."""
+    renderer = ctx.info.get("GL_RENDERER", "").lower()
+    return any(name in renderer for name in ("llvmpipe", "softpipe", "swrast"))
+
+
 def shader_source(name: str, **defines: str | float) -> str:
-    """The GLSL file ``shaders/<name>`` with ``#define NAME value`` lines for ``defines``."""
+    """The GLSL file ``shaders/<name>`` with ``#define NAME value`` lines for ``defines`` and each
+    ``#include "file"`` line replaced by ``shaders/file`` (one level; ``#line`` keeps error lines right)."""
     path = SHADER_DIR / name
-    text = path.read_text()
-    version, _, body = text.partition("\n")
+    version, *body = path.read_text().split("\n")
     if not version.startswith("#version"):
         raise GraphicsError(f"{path}: the first line must be #version")
-    lines = [f"#define {key} {value}" for key, value in defines.items()]
-    return "\n".join([version, *lines, "#line 2", body])
+    lines = [version, *(f"#define {key} {value}" for key, value in defines.items()), "#line 2"]
+    for number, line in enumerate(body, start=2):
+        if line.startswith("#include"):
+            lines += [(SHADER_DIR / line.split('"')[1]).read_text(), f"#line {number + 1}"]
+        else:
+            lines.append(line)
+    return "\n".join(lines)

@@ -51,12 +51,18 @@ class HullPose:
         return HullPose(mix(self.x, other.x), mix(self.y, other.y), self.heading + turn * fraction,
                         tuple(mix(a, b) for a, b in zip(self.motion, other.motion)))
 
+    def matrix(self) -> np.ndarray:
+        """4 x 4 transform of body-frame points (m) to the E frame: ``[R t; 0 1]``."""
+        roll, pitch, yaw = self.motion[3:]
+        out = np.eye(4)
+        out[:3, :3] = _rz(self.heading) @ _rz(yaw) @ _ry(pitch) @ _rx(roll)
+        out[:3, 3] = _rz(self.heading) @ np.array(self.motion[:3]) + np.array([self.x, self.y, 0.0])
+        return out
+
     def world(self, body: np.ndarray) -> np.ndarray:
         """Body-frame points (n, 3) in the E frame (m)."""
-        roll, pitch, yaw = self.motion[3:]
-        rotation = _rz(self.heading) @ _rz(yaw) @ _ry(pitch) @ _rx(roll)
-        offset = _rz(self.heading) @ np.array(self.motion[:3])
-        return body @ rotation.T + offset + np.array([self.x, self.y, 0.0])
+        m = self.matrix()
+        return body @ m[:3, :3].T + m[:3, 3]
 
 
 def _rx(a: float) -> np.ndarray:

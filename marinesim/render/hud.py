@@ -1,0 +1,300 @@
+"""The viewer's heads-up display: a text block, strip charts of the motions and a help panel.
+
+Everything is laid out in pixels with the origin at the top-left of the target; the shaders
+(``shaders/hud_text.*``, ``shaders/hud_line.*``) turn pixels into clip space with a ``viewport``
+uniform. Text is a glyph atlas of printable ASCII (DejaVu Sans Mono, bundled with matplotlib)
+drawn as instanced quads; panels are translucent triangles and charts are 1-pixel lines, both
+from one dynamic vertex buffer. GL objects are made once in ``Hud.__init__``; each frame only
+orphans and rewrites the two vertex buffers.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+import moderngl
+import numpy as np
+from matplotlib.font_manager import FontProperties, findfont
+from PIL import Image, ImageDraw, ImageFont
+
+from marinesim.gl import GraphicsError, shader_source
+
+FIRST_CHAR, LAST_CHAR = 32, 126
+"""The atlas holds printable ASCII; anything else is drawn as '?'."""
+ATLAS_COLUMNS = 16
+MARGIN = 8
+"""Gap between the HUD's panels and the edges of the target, px."""
+PAD = 6
+"""Gap between a panel's edge and its text, px."""
+CHART_SIZE = (360, 70)
+"""A strip chart's panel, px (taller if the font needs it)."""
+CHART_GAP = 6
+AXIS_FLOOR = 0.1
+"""The smallest half-range of a chart's y axis, in the chart's unit (m, deg): a flat signal stays flat."""
+
+TEXT_COLOR = (0.95, 0.95, 0.95, 1.0)
+DIM_TEXT_COLOR = (0.65, 0.68, 0.72, 1.0)
+PANEL_COLOR = (0.0, 0.0, 0.0, 0.55)
+HELP_PANEL_COLOR = (0.0, 0.0, 0.0, 0.82)
+ZERO_LINE_COLOR = (0.55, 0.55, 0.55, 0.9)
+TRACE_COLOR = (0.35, 1.0, 0.45, 1.0)
+
+Color = tuple[float, float, float, float]
+
+
+@dataclass(frozen=True)
+class StripChart:
+    """One channel's recent history: ``times`` (s, increasing) and ``values`` in ``unit``; the chart
+    shows ``[times[-1] - span_s, times[-1]]``."""
+
+    title: str
+    unit: str
+    times: np.ndarray
+    values: np.ndarray
+    span_s: float = 60.0
+
+
+class StripHistory:
+    """Ring buffer of the last span_s seconds of several named channels (heave, roll, pitch)."""
+
+    def __init__(self, names: list[str], span_s: float = 60.0, capacity: int = 8192) -> None:
+        if not names or capacity < 2 or not span_s > 0:
+            raise ValueError("StripHistory needs channel names, a capacity of at least 2 and a positive span")
+        self.names = list(names)
+        self.span_s = float(span_s)
+        self._times = np.zeros(capacity)
+        self._values = np.zeros((capacity, len(names)))
+        self._written = 0  # samples appended since the last clear; the next goes to _written % capacity
+
+    def append(self, t: float, values: Sequence[float]) -> None:
+        """Add the sample at time ``t`` (s), one value per channel; a time earlier than the last one
+        means the simulation was reset and clears the history first."""
+        if len(values) != len(self.names):
+            raise ValueError(f"expected {len(self.names)} values ({', '.join(self.names)}), got {len(values)}")
+        capacity = len(self._times)
+        if self._written and t < self._times[(self._written - 1) % capacity]:
+            self.clear()
+        slot = self._written % capacity
+        self._times[slot] = t
+        self._values[slot] = values
+        self._written += 1
+
+    def chart(self, name: str, unit: str) -> StripChart:
+        """The channel ``name`` over the last ``span_s`` seconds, oldest first (copies)."""
+        column = self.names.index(name) if name in self.names else None
+        if column is None:
+            raise KeyError(f"no channel {name!r} (have {', '.join(self.names)})")
+        capacity = len(self._times)
+        count = min(self._written, capacity)
+        order = np.arange(self._written - count, self._written) % capacity
+        times, values = self._times[order], self._values[order, column]
+        if count:
+            recent = times >= times[-1] - self.span_s
+            times, values = times[recent], values[recent]
+        return StripChart(name, unit, times.copy(), values.copy(), self.span_s)
+
+    def clear(self) -> None:
+        self._written = 0
+
+
+def nice_ceil(x: float) -> float:
+    """The smallest 1, 2 or 5 times a power of ten that is at least ``x`` (> 0)."""
+    exponent = math.floor(math.log10(x))
+    for step in (1.0, 2.0, 5.0, 10.0):
+        limit = step * 10.0**exponent
+        if limit >= x * (1.0 - 1e-9):
+            return limit
+    raise AssertionError("unreachable")
+
+
+def axis_limit(values: np.ndarray, floor: float = AXIS_FLOOR) -> float:
+    """Half-range of a chart's symmetric y axis: the largest finite |value| rounded up to a 1-2-5
+    step, never below ``floor``."""
+    finite = np.abs(np.asarray(values, dtype=float))
+    finite = finite[np.isfinite(finite)]
+    return nice_ceil(max(float(finite.max()) if finite.size else 0.0, floor))
+
+
+@dataclass
+class _Layer:
+    """Geometry of one layer, in pixels: panel triangles, line segments, glyph instances."""
+
+    triangles: list[np.ndarray] = field(default_factory=list)  # rows (x, y, r, g, b, a)
+    lines: list[np.ndarray] = field(default_factory=list)
+    glyphs: list[np.ndarray] = field(default_factory=list)  # rows (x, y, glyph, r, g, b, a)
+
+    def rect(self, x: float, y: float, w: float, h: float, color: Color) -> None:
+        corners = np.array([(x, y), (x + w, y), (x, y + h), (x + w, y), (x + w, y + h), (x, y + h)])
+        self.triangles.append(np.hstack([corners, np.tile(color, (6, 1))]))
+
+    def polyline(self, xs: np.ndarray, ys: np.ndarray, color: Color) -> None:
+        """Segments between consecutive points (px; a pixel's centre is at +0.5); non-finite points break it."""
+        points = np.column_stack([xs, ys])
+        keep = np.isfinite(points).all(axis=1)
+        keep = keep[:-1] & keep[1:]
+        ends = np.stack([points[:-1][keep], points[1:][keep]], axis=1).reshape(-1, 2)
+        self.lines.append(np.hstack([ends, np.tile(color, (len(ends), 1))]))
+
+
+class Hud:
+    """Draws the HUD with ``ctx`` onto whatever framebuffer is bound; ``font_px`` is the font size.
+
+    ``advance`` (the monospace character width) and ``line_height`` are in pixels."""
+
+    def __init__(self, ctx: moderngl.Context, font_px: int = 14) -> None:
+        self.ctx = ctx
+        font = ImageFont.truetype(findfont(FontProperties(family="DejaVu Sans Mono")), font_px)
+        ascent, descent = font.getmetrics()
+        self.advance = math.ceil(font.getlength("M"))
+        self.line_height = ascent + descent
+        count = LAST_CHAR - FIRST_CHAR + 1
+        rows = -(-count // ATLAS_COLUMNS)
+        image = Image.new("L", (ATLAS_COLUMNS * self.advance, rows * self.line_height), 0)
+        draw = ImageDraw.Draw(image)
+        for index in range(count):
+            column, row = index % ATLAS_COLUMNS, index // ATLAS_COLUMNS
+            draw.text((column * self.advance, row * self.line_height), chr(FIRST_CHAR + index), font=font, fill=255)
+        self.atlas = ctx.texture(image.size, 1, image.tobytes(), alignment=1)
+        self.atlas.filter = (moderngl.NEAREST, moderngl.NEAREST)
+        self.atlas.repeat_x = self.atlas.repeat_y = False
+        self.chart_size = (CHART_SIZE[0], max(CHART_SIZE[1], 3 * self.line_height + 12))
+
+        self.text_program = ctx.program(vertex_shader=shader_source("hud_text.vert"),
+                                        fragment_shader=shader_source("hud_text.frag"))
+        self.text_program["cell"] = (self.advance, self.line_height)
+        self.text_program["columns"] = ATLAS_COLUMNS
+        self.text_program["atlas"] = 0
+        self.line_program = ctx.program(vertex_shader=shader_source("hud_line.vert"),
+                                        fragment_shader=shader_source("hud_line.frag"))
+        self.glyph_buffer = ctx.buffer(reserve=1 << 16, dynamic=True)
+        self.shape_buffer = ctx.buffer(reserve=1 << 16, dynamic=True)
+        self.text_vao = ctx.vertex_array(self.text_program,
+                                         [(self.glyph_buffer, "2f 1f 4f/i", "in_pos", "in_glyph", "in_color")])
+        self.shape_vao = ctx.vertex_array(self.line_program, [(self.shape_buffer, "2f 4f", "in_pos", "in_color")])
+        self._lookup = np.full(256, ord("?") - FIRST_CHAR, dtype=np.float32)
+        self._lookup[FIRST_CHAR:LAST_CHAR + 1] = np.arange(count)
+
+    def draw(self, size: tuple[int, int], lines: Sequence[str], charts: Sequence[StripChart] = (),
+             help_lines: Sequence[str] | None = None) -> None:
+        """Draw onto the currently bound framebuffer of `size` (w, h) pixels, alpha-blended, depth test off:
+        `lines` as a text block at the top-left on a translucent dark panel; `charts` stacked at the bottom-left
+        (each: a panel about 360x70 px with its title, unit, current value, the min/max of the y axis as labels,
+        a zero line, and the trace as a line strip, y range symmetric about zero and rounded up to a 1-2-5 step,
+        never below a small floor so a flat signal is not magnified noise); `help_lines`, when given, centred on a
+        darker panel.
+
+        The bound framebuffer, its viewport and the enable flags (blend, depth test, face culling) are
+        restored afterwards; the blend function is left at ``moderngl.DEFAULT_BLENDING`` and texture
+        unit 0 holds the glyph atlas."""
+        width, height = size
+        base = _Layer()
+        if lines:
+            self._text_block(base, MARGIN, MARGIN, lines, PAD, PANEL_COLOR)
+        for index, chart in enumerate(charts):
+            self._chart(base, chart, *self.chart_plot_rect(size, index, len(charts)))
+        layers = [base]
+        if help_lines:
+            box_w, box_h = self._text_size(help_lines, 2 * PAD)
+            top = _Layer()
+            self._text_block(top, (width - box_w) // 2, (height - box_h) // 2, help_lines, 2 * PAD, HELP_PANEL_COLOR)
+            layers.append(top)
+
+        ctx = self.ctx
+        if ctx.fbo is None:
+            raise GraphicsError("the HUD draws onto the bound framebuffer: bind one first (fbo.use())")
+        with ctx.scope(ctx.fbo, enable_only=moderngl.BLEND):
+            viewport = ctx.viewport
+            ctx.viewport = (0, 0, width, height)
+            ctx.blend_func = moderngl.DEFAULT_BLENDING
+            self.text_program["viewport"] = (width, height)
+            self.line_program["viewport"] = (width, height)
+            self.atlas.use(0)
+            for layer in layers:
+                self._render(layer)
+            ctx.viewport = viewport
+
+    def chart_plot_rect(self, size: tuple[int, int], index: int, count: int) -> tuple[int, int, int, int, int]:
+        """Where chart ``index`` of ``count`` is drawn, px from the top-left: ``(panel_x, panel_y,
+        plot_x, plot_y, half)``; the plot spans columns ``plot_x .. panel_x + panel_w - PAD`` and rows
+        ``plot_y .. plot_y + 2 * half``, with zero on row ``plot_y + half`` and the axis limits on its
+        first and last rows."""
+        panel_h = self.chart_size[1]
+        panel_x = MARGIN
+        panel_y = size[1] - MARGIN - (count - index) * (panel_h + CHART_GAP) + CHART_GAP
+        plot_x = panel_x + PAD + 6 * self.advance + 4  # room for labels such as "+0.05" and "-200"
+        plot_y = panel_y + self.line_height + 4
+        half = (panel_y + panel_h - 4 - plot_y) // 2
+        return panel_x, panel_y, plot_x, plot_y, half
+
+    def release(self) -> None:
+        """Free the GL objects (idempotent)."""
+        for thing in (self.text_vao, self.shape_vao, self.glyph_buffer, self.shape_buffer, self.text_program,
+                      self.line_program, self.atlas):
+            thing.release()
+
+    def _text_size(self, lines: Sequence[str], pad: int) -> tuple[int, int]:
+        """A text block's panel size, px."""
+        return (max(len(line) for line in lines) * self.advance + 2 * pad, len(lines) * self.line_height + 2 * pad)
+
+    def _text_block(self, layer: _Layer, x: int, y: int, lines: Sequence[str], pad: int, panel: Color) -> None:
+        layer.rect(x, y, *self._text_size(lines, pad), panel)
+        for row, line in enumerate(lines):
+            self._text(layer, x + pad, y + pad + row * self.line_height, line, TEXT_COLOR)
+
+    def _text(self, layer: _Layer, x: float, y: float, text: str, color: Color) -> None:
+        """One line of text with its first cell's top-left corner at (x, y), px."""
+        codes = np.array([min(ord(c), 255) for c in text], dtype=np.intp)
+        glyphs = self._lookup[codes]
+        ink = np.flatnonzero(codes != ord(" "))
+        rows = np.empty((len(ink), 7), dtype=np.float32)
+        rows[:, 0] = x + ink * self.advance
+        rows[:, 1] = y
+        rows[:, 2] = glyphs[ink]
+        rows[:, 3:] = color
+        layer.glyphs.append(rows)
+
+    def _chart(self, layer: _Layer, chart: StripChart, panel_x: int, panel_y: int, plot_x: int, plot_y: int,
+               half: int) -> None:
+        panel_w, panel_h = self.chart_size
+        right = panel_x + panel_w - PAD
+        layer.rect(panel_x, panel_y, panel_w, panel_h, PANEL_COLOR)
+        times, values = np.asarray(chart.times, dtype=float), np.asarray(chart.values, dtype=float)
+        if times.size:
+            shown = times >= times[-1] - chart.span_s
+            times, values = times[shown], values[shown]
+        value = f"{values[-1]:+.2f}" if values.size else "--"
+        self._text(layer, panel_x + PAD, panel_y + 2, f"{chart.title} {value} {chart.unit}", TEXT_COLOR)
+        span = f"last {chart.span_s:g} s"
+        self._text(layer, right - len(span) * self.advance, panel_y + 2, span, DIM_TEXT_COLOR)
+        limit = axis_limit(values)
+        for label, row in ((f"+{limit:.10g}", plot_y), (f"-{limit:.10g}", plot_y + 2 * half + 1 - self.line_height)):
+            self._text(layer, plot_x - 4 - len(label) * self.advance, row, label, DIM_TEXT_COLOR)
+        zero = plot_y + half + 0.5  # the centre of the zero row
+        layer.polyline(np.array([plot_x, right]), np.array([zero, zero]), ZERO_LINE_COLOR)
+        if times.size > 1:
+            xs = right - (times[-1] - times) / chart.span_s * (right - plot_x)
+            layer.polyline(xs, zero - values / limit * half, TRACE_COLOR)
+
+    def _render(self, layer: _Layer) -> None:
+        """Panels, then lines, then text of one layer."""
+        shapes = [np.concatenate(layer.triangles or [np.empty((0, 6))]), np.concatenate(layer.lines or [np.empty((0, 6))])]
+        if len(shapes[0]) + len(shapes[1]):
+            _upload(self.shape_buffer, np.concatenate(shapes))
+            if len(shapes[0]):
+                self.shape_vao.render(moderngl.TRIANGLES, vertices=len(shapes[0]))
+            if len(shapes[1]):
+                self.shape_vao.render(moderngl.LINES, vertices=len(shapes[1]), first=len(shapes[0]))
+        glyphs = np.concatenate(layer.glyphs) if layer.glyphs else np.empty((0, 7))
+        if len(glyphs):
+            _upload(self.glyph_buffer, glyphs)
+            self.text_vao.render(moderngl.TRIANGLE_STRIP, vertices=4, instances=len(glyphs))
+
+
+def _upload(buffer: moderngl.Buffer, data: np.ndarray) -> None:
+    """Orphan ``buffer`` (growing it to the next power of two if ``data`` does not fit) and write ``data``."""
+    data = np.ascontiguousarray(data, dtype=np.float32)
+    needed = data.nbytes
+    buffer.orphan(1 << (needed - 1).bit_length() if needed > buffer.size else -1)
+    buffer.write(data)

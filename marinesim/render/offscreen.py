@@ -1,0 +1,144 @@
+"""Headless renders through EGL: a video of a scenario (with its motion CSV beside it) or a screenshot.
+
+Frames are drawn by the same :class:`~marinesim.render.session.Session` the window uses, into an
+offscreen framebuffer, at fixed simulated times ``k / fps``: the same scenario and seed give the
+same frames. Videos are H.264 MP4 through the ffmpeg that ``imageio-ffmpeg`` ships, written to a
+temporary file and renamed when complete. The CSV beside a video is ``marinesim export`` of the
+scenario over the video's length (same columns, same rows, same numbers).
+"""
+
+from __future__ import annotations
+
+import sys
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+import numpy as np
+
+from marinesim.atomic import atomic_path
+from marinesim.errors import ParameterError
+from marinesim.gl import is_software, standalone_context
+from marinesim.render.renderer import FOAM_TAU_S, RenderOptions
+from marinesim.render.session import Session
+from marinesim.scenario.export import export_motions, with_run
+from marinesim.scenario.schema import Scenario
+
+MAX_PIXELS = 7680 * 4320
+WARMUP_STEP_S = 0.25
+"""Foam has memory: a screenshot at time T first steps through the last 3 foam lifetimes at this step."""
+
+
+@dataclass(frozen=True)
+class VideoResult:
+    video: Path
+    motions: Path | None  # None for a scenario without a vessel
+    frames: int
+    fps: float
+    solver: bool
+
+
+def parse_size(text: str) -> tuple[int, int]:
+    """``"1280x720"`` -> (1280, 720); even sizes (the video's colour subsampling needs them)."""
+    try:
+        width, height = (int(part) for part in text.lower().split("x"))
+    except ValueError:
+        raise ParameterError(f"--size must be WIDTHxHEIGHT in pixels, e.g. 1280x720, got {text!r}") from None
+    if width < 16 or height < 16 or width * height > MAX_PIXELS or width % 2 or height % 2:
+        raise ParameterError(f"--size must be even numbers of pixels, at least 16 and at most 7680x4320, got {text!r}")
+    return width, height
+
+
+class Offscreen:
+    """An EGL context with a session and a framebuffer of ``size`` to draw it into."""
+
+    def __init__(self, scenario: Scenario, size: tuple[int, int], camera: str = "orbit", solver: str = "auto",
+                 options: RenderOptions = RenderOptions(), progress: bool = False) -> None:
+        self.ctx = standalone_context()
+        self.size = size
+        use_solver = {"on": True, "off": False, "auto": not is_software(self.ctx)}.get(solver)
+        if use_solver is None:
+            raise ParameterError(f"--solver must be auto, on or off, got {solver!r}")
+        self.session = Session(self.ctx, scenario, camera, replace(options, solver=use_solver), progress)
+        self._fbo = self.ctx.framebuffer(color_attachments=[self.ctx.renderbuffer(size)],
+                                         depth_attachment=self.ctx.depth_renderbuffer(size))
+
+    @property
+    def solver_on(self) -> bool:
+        return self.session.renderer.solver is not None
+
+    def frame(self, hud: bool = True) -> np.ndarray:
+        """The current frame as (h, w, 3) uint8 RGB, top row first."""
+        self._fbo.use()
+        self.session.draw(self.size, hud)
+        data = self._fbo.read(components=3, alignment=1)
+        return np.frombuffer(data, np.uint8).reshape(self.size[1], self.size[0], 3)[::-1].copy()
+
+    def go_to(self, t: float) -> None:
+        """Advance to ``t`` (s) stepping the last three foam lifetimes, so foam and charts are as in a live run."""
+        sim = self.session.sim
+        warm_from = max(t - 3.0 * FOAM_TAU_S, sim.time)
+        if warm_from > sim.time:
+            sim.advance(warm_from - sim.time)
+        self.session.prefill_history()
+        self.session.renderer.update()
+        while sim.time < t - 1e-9:
+            self.session.step(min(WARMUP_STEP_S, t - sim.time))
+
+    def release(self) -> None:
+        self._fbo.release()
+        self.session.release()
+        self.ctx.release()
+
+    def __enter__(self) -> Offscreen:
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.release()
+
+
+def screenshot(scenario: Scenario, out: Path, at_s: float = 0.0, size: tuple[int, int] = (1280, 720),
+               camera: str = "orbit", solver: str = "auto", options: RenderOptions = RenderOptions()) -> Path:
+    """Write a PNG of the scenario at ``at_s`` seconds (atomically)."""
+    from PIL import Image
+
+    if not 0.0 <= at_s <= scenario.run.duration_s:
+        raise ParameterError(f"--time must be within the run, 0..{scenario.run.duration_s:g} s, got {at_s!r}")
+    with Offscreen(scenario, size, camera, solver, options) as view:
+        view.go_to(at_s)
+        image = view.frame()
+    with atomic_path(out) as temp:
+        Image.fromarray(image).save(temp, format="PNG")
+    return out
+
+
+def render_video(scenario: Scenario, out: Path, seconds: float = 20.0, size: tuple[int, int] = (1280, 720),
+                 fps: float = 30.0, camera: str = "orbit", solver: str = "auto",
+                 options: RenderOptions = RenderOptions(), progress: bool = True) -> VideoResult:
+    """Write ``out`` (MP4, ``round(seconds * fps)`` frames at t = k / fps) and, with a vessel, the
+    motions over ``[0, seconds]`` at the scenario's dt to ``out`` with the suffix ``.csv``."""
+    import imageio_ffmpeg
+    from tqdm import tqdm
+
+    if not (0.0 < seconds <= scenario.run.duration_s):
+        raise ParameterError(f"--seconds must be within the run, (0, {scenario.run.duration_s:g}] s, got {seconds!r}")
+    if not (1.0 <= fps <= 240.0):
+        raise ParameterError(f"--fps must be within 1..240, got {fps!r}")
+    frames = int(round(seconds * fps))
+    motions = None
+    with Offscreen(scenario, size, camera, solver, options, progress) as view, atomic_path(out) as temp:
+        writer = imageio_ffmpeg.write_frames(str(temp), size, fps=fps, codec="libx264", quality=7,
+                                             macro_block_size=2, ffmpeg_log_level="error")
+        writer.send(None)
+        try:
+            view.go_to(0.0)
+            for k in tqdm(range(frames), desc=f"render {out.name}", unit="frame", disable=not progress,
+                          file=sys.stderr, mininterval=0.5):
+                if k:
+                    view.session.step(k / fps - view.session.sim.time)
+                writer.send(view.frame())
+        finally:
+            writer.close()
+        solver_on = view.solver_on
+    if scenario.vessel is not None:
+        motions = export_motions(with_run(scenario, duration=seconds), out.with_suffix(".csv"), progress=False).table
+    return VideoResult(out, motions, frames, fps, solver_on)

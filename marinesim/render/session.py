@@ -1,0 +1,109 @@
+"""One viewing session: the simulation, its renderer, the HUD, the cameras and the motion history.
+
+The window (:mod:`marinesim.render.viewer`) and the headless renders
+(:mod:`marinesim.render.offscreen`) both draw their frames through :meth:`Session.draw`, so a
+video shows exactly what the window shows.
+"""
+
+from __future__ import annotations
+
+import math
+
+import moderngl
+import numpy as np
+
+from marinesim.render.camera import BridgeCamera, FreeCamera, OrbitCamera
+from marinesim.render.hud import Hud, StripHistory
+from marinesim.render.renderer import RenderOptions, Renderer
+from marinesim.render.simulation import Simulation
+from marinesim.scenario.schema import Scenario
+
+CAMERAS = ("orbit", "bridge", "free")
+CHARTED = (("heave", "heave_m", "m"), ("roll", "roll_deg", "deg"), ("pitch", "pitch_deg", "deg"))
+"""Strip charts: title, motion column, unit."""
+HISTORY_STEP_S = 0.2
+"""Spacing of the strip charts' samples (s of simulated time)."""
+
+
+class Session:
+    """Draws ``scenario`` on ``ctx``: ``camera`` is one of :data:`CAMERAS`; the bridge camera
+    sits on the scenario's point named ``bridge`` (else 10 m above the reference point)."""
+
+    def __init__(self, ctx: moderngl.Context, scenario: Scenario, camera: str = "orbit",
+                 options: RenderOptions = RenderOptions(), progress: bool = False) -> None:
+        self.ctx = ctx
+        self.sim = Simulation(scenario, wake=options.wake, progress=progress)
+        self.renderer = Renderer(ctx, self.sim, options)
+        self.hud = Hud(ctx)
+        vessel = scenario.vessel
+        length = float(np.ptp(vessel.hull.vertices[:, 0])) if vessel is not None and vessel.hull is not None else 100.0
+        bridge = vessel.points.get("bridge", (0.0, 0.0, 10.0)) if vessel is not None else (0.0, 0.0, 10.0)
+        self.cameras = {"orbit": OrbitCamera(distance_m=2.2 * length), "bridge": BridgeCamera(tuple(bridge)),
+                        "free": FreeCamera()}
+        self.camera_name = camera
+        self.history = StripHistory([name for name, _, _ in CHARTED])
+        self._next_sample = 0.0
+        self.frame_seconds = 0.0
+        self.status: list[str] = []
+
+    @property
+    def camera_name(self) -> str:
+        return self._camera_name
+
+    @camera_name.setter
+    def camera_name(self, name: str) -> None:
+        if name not in CAMERAS:
+            from marinesim.errors import ParameterError
+            raise ParameterError(f"unknown camera {name!r} (known: {', '.join(CAMERAS)})")
+        self._camera_name = name
+
+    @property
+    def camera(self):
+        return self.cameras[self._camera_name]
+
+    def step(self, dt: float) -> None:
+        """Advance the simulation ``dt`` s, sample the strip charts, bring the GPU up to date."""
+        self.sim.advance(dt)
+        self._sample_history()
+        self.renderer.update()
+
+    def prefill_history(self) -> None:
+        """Fill the strip charts with the last 60 s before now (a render that starts mid-run)."""
+        self.history.clear()
+        self._next_sample = max(self.sim.time - self.history.span_s, 0.0)
+        self._sample_history()
+
+    def _sample_history(self) -> None:
+        if self.sim.vessel is None or self._next_sample > self.sim.time:
+            return
+        times = np.arange(self._next_sample, self.sim.time + 1e-9, HISTORY_STEP_S)
+        frame = self.sim.frame(times)
+        for i, t in enumerate(times):
+            self.history.append(float(t), [frame[column][i] for _, column, _ in CHARTED])
+        self._next_sample = times[-1] + HISTORY_STEP_S
+
+    def draw(self, size: tuple[int, int], hud: bool = True, help_lines: list[str] | None = None) -> None:
+        """The frame into the bound framebuffer of ``size`` (w, h) px."""
+        self.renderer.draw(self.camera.eye(self.sim.pose()), size)
+        if hud:
+            charts = [self.history.chart(name, unit) for name, _, unit in CHARTED] if self.sim.vessel else []
+            self.hud.draw(size, self.hud_lines(), charts, help_lines)
+
+    def hud_lines(self) -> list[str]:
+        lines = self.sim.describe()
+        pose = self.sim.pose()
+        if self.sim.vessel is not None:
+            m = pose.motion
+            lines.append(f"surge {m[0]:+6.2f}  sway {m[1]:+6.2f}  heave {m[2]:+6.2f} m")
+            lines.append(f"roll {math.degrees(m[3]):+6.2f}  pitch {math.degrees(m[4]):+6.2f}  "
+                         f"yaw {math.degrees(m[5]):+6.2f} deg")
+        times = self.renderer.times
+        lines.append(f"camera {self.camera_name}   frame {1000 * self.frame_seconds:5.1f} ms "
+                     f"(sim {1000 * times.simulation:4.1f}, upload {1000 * times.upload:4.1f}, "
+                     f"draw {1000 * times.draw:4.1f})")
+        return lines + self.status
+
+    def release(self) -> None:
+        self.sim.close()
+        self.hud.release()
+        self.renderer.release()

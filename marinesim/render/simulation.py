@@ -1,0 +1,272 @@
+"""What the viewer shows, as functions of time: the ocean, the vessel's pose and motions, its wake.
+
+The simulation owns no GL state; the renderer reads it. Its state is a timeline of *legs*: the
+vessel's straight track and its response to the sea at that time. A live change (sea state,
+speed, heading) starts a new leg that blends in over ``ramp_s`` seconds with the smoothstep
+weight ``w = 3 s^2 - 2 s^3``, the same weight the ocean ramps its amplitudes with
+(:meth:`Ocean.ramp_to`): the response is linear in the amplitudes, so blending the two legs'
+motions with ``w`` is the response to the ramping sea. Track position and heading blend with the
+same weight, which turns the ship along a smooth curve. A change asked for while another blends
+waits for it to end. Motions, poses and recordings at any time come from the timeline, so the
+same scenario, seed and changes give the same numbers whatever the frame rate.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from concurrent.futures import Future, ThreadPoolExecutor
+from dataclasses import dataclass
+
+import numpy as np
+
+from marinesim.angles import compass_to_math, math_to_compass, wave_compass_from_beta
+from marinesim.constants import KNOT
+from marinesim.errors import ParameterError
+from marinesim.hull import hydrostatics
+from marinesim.scenario.export import VARIANCE_FRACTION, build_ocean
+from marinesim.scenario.schema import MAX_SPEED_KN, Scenario
+from marinesim.sea.seastate import RegularWave, SeaState, WaveSystem
+from marinesim.sea.spectra import Jonswap, JonswapFetch
+from marinesim.solver.footprint import HullPose
+from marinesim.vessel.response import Response, Track
+from marinesim.wake.cache import cached_wake
+from marinesim.wake.compute import QUALITATIVE_BELOW_FROUDE, Wake, WakeGrid, froude_number
+
+RAMP_S = 20.0
+"""Default time over which a live change blends in (s)."""
+WAKE_GRID = WakeGrid(nx=1024, ny=512)
+"""The viewer's wake grid: 1024 x 512 cells of lambda0 / 16 (or wider, to reach three hull lengths)."""
+
+
+@dataclass(frozen=True)
+class Leg:
+    """From ``start`` (s) the vessel follows ``track`` and moves as ``response``, blending in over ``ramp_s``."""
+
+    start: float
+    ramp_s: float
+    sea: SeaState
+    track: Track
+    response: Response | None
+
+    def weight(self, t: np.ndarray) -> np.ndarray:
+        s = np.clip((np.asarray(t, float) - self.start) / self.ramp_s, 0.0, 1.0) if self.ramp_s > 0 else 1.0
+        return np.broadcast_to(3.0 * s * s - 2.0 * s**3, np.shape(t)).astype(float)
+
+    def track_point(self, t: np.ndarray) -> np.ndarray:
+        """(T, 2) track point (m, E frame)."""
+        tr = self.track
+        t = np.atleast_1d(np.asarray(t, float))
+        return np.c_[tr.x0 + tr.speed * math.cos(tr.heading) * t, tr.y0 + tr.speed * math.sin(tr.heading) * t]
+
+
+class Simulation:
+    """The scenario's ocean, vessel and wake, advanced by :meth:`advance` and queried at any time."""
+
+    def __init__(self, scenario: Scenario, *, wake: bool = True, wake_grid: WakeGrid = WAKE_GRID,
+                 progress: bool = False) -> None:
+        self.scenario = scenario
+        self.ocean = build_ocean(scenario)
+        self.time = 0.0
+        self.vessel = scenario.vessel
+        heading = compass_to_math(self.vessel.heading_deg) if self.vessel else 0.0
+        speed = self.vessel.speed_m_s if self.vessel else 0.0
+        self.legs = [self._leg(0.0, 0.0, scenario.sea, Track(heading, speed))]
+        self._pending: list[tuple[SeaState | None, float | None, float | None, float]] = []
+        self.wake_on = wake and self.vessel is not None and self.vessel.hull is not None
+        self._wake_grid = wake_grid
+        self._wakes: dict[float, Future | Wake | None] = {}
+        self._pool = ThreadPoolExecutor(max_workers=1) if self.wake_on else None
+        self._progress = progress
+        if self.wake_on:
+            self._length = hydrostatics(self.vessel.hull).froude_length_m
+            self._request_wake(speed, wait=True)
+
+    # -- timeline -----------------------------------------------------------------------------
+
+    def _leg(self, start: float, ramp_s: float, sea: SeaState, track: Track) -> Leg:
+        response = None
+        if self.vessel is not None:
+            ocean = self.ocean
+            components = ocean.components(t=start + ramp_s, variance_fraction=VARIANCE_FRACTION)
+            response = Response(self.vessel.rao, components, track, self.vessel.points)
+        return Leg(start, ramp_s, sea, track, response)
+
+    def advance(self, dt: float) -> None:
+        """Move the clock on by ``dt`` (s) and start the changes waiting for a blend to end."""
+        if not math.isfinite(dt) or dt < 0:
+            raise ParameterError(f"time step must be a finite non-negative number of seconds, got {dt!r}")
+        self.time += dt
+        while self._pending and self.time >= self._blend_end():
+            self._start(*self._pending.pop(0), at=max(self._blend_end(), self.time - dt))
+
+    def _blend_end(self) -> float:
+        last = self.legs[-1]
+        return last.start + last.ramp_s
+
+    @property
+    def sea(self) -> SeaState:
+        """The sea state the ocean is at or ramping to."""
+        return self.legs[-1].sea
+
+    @property
+    def speed_m_s(self) -> float:
+        return self.legs[-1].track.speed
+
+    @property
+    def heading_deg(self) -> float:
+        """Compass heading the vessel is on or turning to."""
+        return math_to_compass(self.legs[-1].track.heading)
+
+    def change(self, *, hs_factor: float = 1.0, tp_factor: float = 1.0, turn_waves_deg: float = 0.0,
+               speed_kn: float | None = None, heading_deg: float | None = None, ramp_s: float = RAMP_S) -> None:
+        """Ask for a change: all wave heights times ``hs_factor``, periods times ``tp_factor``,
+        directions turned by ``turn_waves_deg`` (compass, clockwise), a new speed or compass heading."""
+        if speed_kn is not None and not 0.0 <= speed_kn <= MAX_SPEED_KN:
+            raise ParameterError(f"speed must be within 0..{MAX_SPEED_KN:g} kn, got {speed_kn!r}")
+        base = self._pending[-1][0] if self._pending and self._pending[-1][0] is not None else self.sea
+        sea = None
+        if (hs_factor, tp_factor, turn_waves_deg) != (1.0, 1.0, 0.0):
+            sea = scaled_sea(base, hs_factor, tp_factor, turn_waves_deg)
+        speed = None if speed_kn is None else speed_kn * KNOT
+        heading = None if heading_deg is None else compass_to_math(heading_deg % 360.0)
+        self._pending.append((sea, speed, heading, float(ramp_s)))
+        self.advance(0.0)
+
+    def _start(self, sea: SeaState | None, speed: float | None, heading: float | None, ramp_s: float,
+               at: float) -> None:
+        t, last = at, self.legs[-1]
+        if sea is not None:
+            self.ocean.ramp_to(sea, t, ramp_s)
+        x, y = last.track_point(t)[0]
+        heading = last.track.heading if heading is None else heading
+        speed = last.track.speed if speed is None else speed
+        start = (x - speed * math.cos(heading) * t, y - speed * math.sin(heading) * t)
+        self.legs.append(self._leg(t, ramp_s, sea or last.sea, Track(heading, speed, *start)))
+        if self.wake_on:
+            self._request_wake(speed)
+
+    def _legs_at(self, t: float) -> tuple[Leg, Leg, float]:
+        """(previous leg, current leg, weight of the current) at time ``t``."""
+        index = max(i for i, leg in enumerate(self.legs) if leg.start <= t or i == 0)
+        leg = self.legs[index]
+        previous = self.legs[max(index - 1, 0)]
+        return previous, leg, float(leg.weight(t))
+
+    # -- queries ------------------------------------------------------------------------------
+
+    def pose(self, t: float | None = None) -> HullPose:
+        """Track point, heading and 6-DOF motion (m, rad) at ``t`` (default: now)."""
+        t = self.time if t is None else t
+        previous, leg, w = self._legs_at(t)
+        x, y = (1.0 - w) * previous.track_point(t)[0] + w * leg.track_point(t)[0]
+        turn = math.remainder(leg.track.heading - previous.track.heading, 2.0 * math.pi)
+        motion = (0.0,) * 6
+        if leg.response is not None:
+            linear = (1.0 - w) * previous.response.linear(np.array([t])) + w * leg.response.linear(np.array([t]))
+            motion = tuple(float(v) for v in linear[0, :6])
+        return HullPose(float(x), float(y), previous.track.heading + w * turn, motion)
+
+    def frame(self, times: np.ndarray) -> dict[str, np.ndarray]:
+        """Motion columns (as ``marinesim export``) at ``times`` (s), blended across legs."""
+        times = np.asarray(times, float).ravel()
+        if self.vessel is None:
+            raise ParameterError("the scenario has no vessel: no motions to record")
+        out: dict[str, np.ndarray] | None = None
+        starts = np.array([leg.start for leg in self.legs])
+        index = np.maximum(np.searchsorted(starts, times, side="right") - 1, 0)
+        for i in np.unique(index):
+            at = index == i
+            leg, previous = self.legs[i], self.legs[max(i - 1, 0)]
+            w = leg.weight(times[at])[:, None]
+            linear = leg.response.linear(times[at])
+            if i > 0:
+                linear = w * linear + (1.0 - w) * previous.response.linear(times[at])
+            part = leg.response.frame(times[at], linear)
+            if out is None:
+                out = {name: np.empty(times.size) for name in part}
+            for name, values in part.items():
+                out[name][at] = values
+        return out
+
+    # -- the wake -----------------------------------------------------------------------------
+
+    def _request_wake(self, speed: float, wait: bool = False) -> None:
+        if speed in self._wakes:
+            return
+        if froude_number(speed, self._length) < QUALITATIVE_BELOW_FROUDE:
+            self._wakes[speed] = None
+            return
+        hull, grid, progress = self.vessel.hull, self._wake_grid, self._progress and wait
+        future = self._pool.submit(lambda: cached_wake(hull, speed, grid, progress=progress)[0])
+        self._wakes[speed] = future.result() if wait else future
+
+    def wakes(self, t: float | None = None) -> list[tuple[Wake, float]]:
+        """The Kelvin wakes to draw at ``t`` with their weights (two while a speed change blends).
+
+        A wake still being computed is left out; below Fn 0.1 thin-ship theory gives no wake worth drawing.
+        """
+        if not self.wake_on:
+            return []
+        t = self.time if t is None else t
+        previous, leg, w = self._legs_at(t)
+        out = []
+        for speed, weight in ((previous.track.speed, 1.0 - w), (leg.track.speed, w)):
+            wake = self._wakes.get(speed)
+            if isinstance(wake, Future) and wake.done():
+                wake = self._wakes[speed] = wake.result()
+            if isinstance(wake, Wake) and weight > 0.0:
+                out.append((wake, weight))
+        if len(out) == 2 and out[0][0] is out[1][0]:
+            out = [(out[0][0], 1.0)]
+        return out
+
+    def wake_status(self) -> str:
+        """One line for the HUD: what the wake shows."""
+        if not self.wake_on:
+            return "wake off"
+        wake = self._wakes.get(self.speed_m_s)
+        froude = froude_number(self.speed_m_s, self._length)
+        if wake is None:
+            return f"no wake drawn: Fn {froude:.2f} < {QUALITATIVE_BELOW_FROUDE}"
+        if isinstance(wake, Future) and not wake.done():
+            return f"wake: computing for {self.speed_m_s / KNOT:.1f} kn"
+        return f"Kelvin wake Fn {froude:.2f}"
+
+    def close(self) -> None:
+        if self._pool is not None:
+            self._pool.shutdown(wait=False, cancel_futures=True)
+
+    def describe(self) -> list[str]:
+        """HUD lines: the sea state and the vessel's course."""
+        sea = self.sea
+        systems = [s for s in sea.systems]
+        first = systems[0]
+        beta = first.beta
+        lines = [f"t {self.time:8.1f} s   Hs {sea.hs:4.2f} m   Tp {sea.tp:4.1f} s   "
+                 f"waves from {wave_compass_from_beta(beta):5.1f} deg ({len(systems)} system(s))"]
+        if self.vessel is not None:
+            lines.append(f"speed {self.speed_m_s / KNOT:4.1f} kn   heading {self.heading_deg:5.1f} deg   "
+                         + self.wake_status())
+        return lines
+
+
+def scaled_sea(sea: SeaState, hs_factor: float, tp_factor: float, turn_deg: float) -> SeaState:
+    """``sea`` with every height times ``hs_factor``, every period times ``tp_factor`` and every
+    direction turned ``turn_deg`` clockwise (compass); spreading unchanged. Hs scales exactly."""
+    for name, value in (("Hs factor", hs_factor), ("Tp factor", tp_factor)):
+        if not (math.isfinite(value) and value > 0):
+            raise ParameterError(f"{name} must be a positive number, got {value!r}")
+    turn = -math.radians(turn_deg)  # compass clockwise = math clockwise
+    systems = []
+    for system in sea.systems:
+        if isinstance(system, RegularWave):
+            systems.append(dataclasses.replace(system, height=system.height * hs_factor,
+                                               period=system.period * tp_factor, beta=system.beta + turn))
+            continue
+        spectrum = system.spectrum
+        if isinstance(spectrum, JonswapFetch):
+            spectrum = Jonswap(spectrum.hs, spectrum.tp, spectrum.gamma, g=spectrum.g)
+        spectrum = dataclasses.replace(spectrum, hs=spectrum.hs * hs_factor, tp=spectrum.tp * tp_factor)
+        systems.append(WaveSystem(spectrum, system.beta + turn, system.spreading))
+    return SeaState(tuple(systems), depth=sea.depth, g=sea.g)

@@ -1,0 +1,63 @@
+#version 430
+// Water: normals from the cascades' slopes (mipmapped), Fresnel (Schlick, F0 = 0.02) between
+// the sky's reflection and a subsurface tint, the sun's glitter, foam from the Jacobian with
+// persistence (foam.comp) and along the wake, haze to the horizon. No water inside the hull.
+#include "sky.glsl"
+in vec2 v_xy;
+in vec3 v_position;
+in float v_spacing;
+
+uniform sampler2DArray u_slopes;   // per tile: d eta/dx, d eta/dy
+uniform sampler2DArray u_foam;     // per tile: foam coverage 0..1
+uniform float u_tile_size[TILES];
+uniform vec3 u_eye;
+uniform sampler2D u_hull_mask;     // 1 inside the waterplane (vessel frame)
+uniform vec4 u_hull_rect;          // as the wake rect
+uniform float u_foam_on;           // 0: draw no foam (comparisons)
+
+#include "surface.glsl"
+
+const vec3 DEEP = vec3(0.004, 0.030, 0.060);
+const vec3 SCATTER = vec3(0.02, 0.11, 0.10);
+const vec3 FOAM = vec3(0.85, 0.88, 0.90);
+const float F0 = 0.02;
+
+out vec4 f_colour;
+
+void main() {
+    vec2 mask_uv = (vessel_frame(v_xy) - u_hull_rect.xy) * u_hull_rect.zw;
+    if (all(greaterThan(mask_uv, vec2(0.0))) && all(lessThan(mask_uv, vec2(1.0)))
+        && texture(u_hull_mask, mask_uv).r > 0.5) discard;
+
+    vec2 slope = vec2(0.0);
+    float clear = 1.0;  // probability of no foam from any cascade
+    for (int i = 0; i < TILES; ++i) {
+        vec3 uvw = vec3(v_xy / u_tile_size[i], float(i));
+        slope += texture(u_slopes, uvw).xy;
+        clear *= 1.0 - texture(u_foam, uvw).r;
+    }
+    vec3 local = local_slope_foam(v_xy);
+    slope += local.xy;
+    float foam = u_foam_on * clamp(1.0 - clear * (1.0 - local.z), 0.0, 1.0);
+
+    vec3 to_eye = u_eye - v_position;
+    float distance_m = length(to_eye);
+    vec3 v = to_eye / distance_m;
+    vec3 n = normalize(vec3(-slope, 1.0));
+    n = normalize(n + v * max(0.0, 0.02 - dot(n, v)));  // no normals facing away from the eye
+    float cos_theta = clamp(dot(n, v), 0.0, 1.0);
+    float fresnel = F0 + (1.0 - F0) * pow(1.0 - cos_theta, 5.0);
+
+    vec3 r = reflect(-v, n);
+    r.z = abs(r.z);
+    vec3 reflected = sky_colour(r);
+    float crest = clamp(v_position.z * 0.25 + 0.3, 0.0, 1.0);
+    float sun_in = max(dot(n, u_sun), 0.0);
+    vec3 refracted = DEEP + SCATTER * crest * (0.4 + 0.6 * sun_in) * pow(1.0 - cos_theta, 2.0);
+    vec3 h = normalize(u_sun + v);
+    float roughness = 0.06 + 0.002 * v_spacing;  // distant glitter spreads: unresolved waves
+    float spec = exp(-pow(tan(acos(clamp(dot(n, h), 0.0, 1.0))) / roughness, 2.0)) / (roughness * roughness);
+    vec3 colour = mix(refracted, reflected, fresnel) + SUN_COLOUR * fresnel * spec * 0.25 * sun_in;
+    colour = mix(colour, FOAM * (0.35 + 0.65 * sun_in), foam);
+    f_colour = finish(with_haze(colour, -v, distance_m));
+}

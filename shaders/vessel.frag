@@ -1,0 +1,15 @@
+#version 430
+#include "sky.glsl"
+in vec3 v_position;
+in vec3 v_normal;
+in vec3 v_colour;
+uniform vec3 u_eye;
+out vec4 f_colour;
+
+void main() {
+    vec3 n = normalize(v_normal);
+    float sun = max(dot(n, u_sun), 0.0);
+    vec3 ambient = 0.35 * sky_colour(normalize(n + vec3(0.0, 0.0, 1.0)));
+    vec3 colour = v_colour * (ambient + 0.9 * SUN_COLOUR * sun);
+    f_colour = finish(with_haze(colour, normalize(v_position - u_eye), length(v_position - u_eye)));
+}

@@ -1,0 +1,180 @@
+"""The viewer's HUD on Mesa's software OpenGL: text lands where it is asked, the strip-chart trace where
+the data says, the history keeps the last span and survives wrap-around and resets, and drawing leaves
+no GL error at two sizes."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from marinesim.render.hud import AXIS_FLOOR, MARGIN, PAD, TRACE_COLOR, Hud, StripChart, StripHistory, axis_limit
+
+
+@pytest.fixture(scope="module")
+def ctx():
+    from marinesim.gl import GraphicsError, standalone_context
+    try:
+        context = standalone_context()
+    except GraphicsError as error:
+        pytest.skip(str(error))
+    yield context
+    _targets.clear()
+    context.release()
+
+
+@pytest.fixture(scope="module")
+def hud(ctx):
+    made = Hud(ctx)
+    yield made
+    made.release()
+
+
+_targets: dict[tuple[int, int], object] = {}
+
+
+def render(ctx, hud: Hud, size: tuple[int, int], lines=(), charts=(), help_lines=None) -> np.ndarray:
+    """The HUD drawn on black, as (h, w, 3) uint8 with row 0 at the top (one framebuffer per size, kept
+    for the module: releasing the bound one would leave moderngl rebinding a deleted framebuffer)."""
+    if size not in _targets:
+        _targets[size] = ctx.simple_framebuffer(size)
+    fbo = _targets[size]
+    fbo.use()
+    fbo.clear(0.0, 0.0, 0.0, 1.0)
+    hud.draw(size, lines, charts, help_lines)
+    return np.frombuffer(fbo.read(components=3), np.uint8).reshape(size[1], size[0], 3)[::-1]
+
+
+def bright(image: np.ndarray) -> np.ndarray:
+    return image.max(axis=2) > 128
+
+
+def trace_mask(image: np.ndarray) -> np.ndarray:
+    """Pixels of the trace's colour (green, not the white text or the grey zero line)."""
+    r, g, b = (image[..., i].astype(int) for i in range(3))
+    expected = np.round(np.array(TRACE_COLOR[:3]) * 255)
+    return (abs(r - expected[0]) < 30) & (abs(g - expected[1]) < 30) & (abs(b - expected[2]) < 30)
+
+
+def test_text_lands_in_the_top_left_box_with_a_monospace_advance(ctx, hud):
+    short = bright(render(ctx, hud, (640, 360), ["HEAVE 1.23 m"]))
+    rows, cols = np.nonzero(short)
+    assert rows.size > 50
+    x0, y0 = MARGIN + PAD, MARGIN + PAD
+    assert cols.min() >= x0 and cols.max() < x0 + 12 * hud.advance
+    assert rows.min() >= y0 and rows.max() < y0 + hud.line_height
+    assert not short[:, 320:].any() and not short[180:, :].any()
+
+    longer = "HEAVE 1.23 m  ROLL -4.5 deg"
+    cols_long = np.nonzero(bright(render(ctx, hud, (640, 360), [longer])))[1]
+    assert cols_long.min() == cols.min()  # same first glyph
+    assert abs((cols_long.max() - cols.max()) - (len(longer) - 12) * hud.advance) <= hud.advance
+
+    two = bright(render(ctx, hud, (640, 360), ["HEAVE 1.23 m", "HEAVE 1.23 m"]))
+    assert np.array_equal(two[y0 + hud.line_height:y0 + 2 * hud.line_height], short[y0:y0 + hud.line_height])
+
+
+def test_unknown_characters_render_as_question_marks(ctx, hud):
+    assert np.array_equal(render(ctx, hud, (320, 180), ["a\u00e9\u2603b"]), render(ctx, hud, (320, 180), ["a??b"]))
+
+
+def test_axis_limit_rounds_up_to_a_1_2_5_step_above_a_floor():
+    assert axis_limit(np.array([0.2, -0.7])) == 1.0
+    assert axis_limit(np.array([1.3])) == 2.0
+    assert axis_limit(np.array([-2.1, np.nan])) == 5.0
+    assert axis_limit(np.array([6.0])) == 10.0
+    assert axis_limit(np.array([150.0])) == 200.0
+    assert axis_limit(np.array([5.0])) == 5.0
+    assert axis_limit(np.array([1e-4, -2e-4])) == AXIS_FLOOR
+    assert axis_limit(np.array([])) == AXIS_FLOOR
+
+
+def test_the_trace_spans_the_amplitude_over_the_rounded_axis_range(ctx, hud):
+    size = (640, 360)
+    panel_x, _, plot_x, plot_y, half = hud.chart_plot_rect(size, 0, 1)
+    right = panel_x + hud.chart_size[0] - PAD
+    t = np.linspace(0.0, 120.0, 1201)
+    amplitude = 0.7  # axis +-1
+    values = np.where(t < 60.0, 5.0, amplitude) * np.sin(2 * np.pi * t / 7.0)  # the early 5 m is out of the window
+    image = render(ctx, hud, size, charts=[StripChart("heave", "m", t, values)])
+    rows, cols = np.nonzero(trace_mask(image))
+    zero = plot_y + half
+    assert abs(rows.min() - (zero - amplitude * half)) <= 2
+    assert abs(rows.max() - (zero + amplitude * half)) <= 2
+    assert abs(cols.min() - plot_x) <= 2 and abs(cols.max() - right) <= 2
+
+    # the grey zero line, seen in the image, is where the layout says
+    grey = (np.ptp(image.astype(int), axis=2) < 10) & (image[..., 0] > 60) & (image[..., 0] < 200)
+    plot_rows = grey[plot_y:plot_y + 2 * half + 1, plot_x:right].sum(axis=1)
+    assert plot_y + int(np.argmax(plot_rows)) == zero
+
+    flat = render(ctx, hud, size, charts=[StripChart("pitch", "deg", t, np.zeros_like(t))])
+    rows = np.nonzero(trace_mask(flat))[0]
+    assert rows.size > 0.9 * (right - plot_x) and set(rows) == {zero}
+
+
+def test_charts_stack_at_the_bottom_left(ctx, hud):
+    size = (640, 360)
+    t = np.linspace(0.0, 60.0, 601)
+    charts = [StripChart(name, "deg", t, 0.3 * np.sin(t)) for name in ("heave", "roll", "pitch")]
+    mask = trace_mask(render(ctx, hud, size, charts=charts))
+    for index in range(3):
+        _, panel_y, _, plot_y, half = hud.chart_plot_rect(size, index, 3)
+        band = mask[panel_y:panel_y + hud.chart_size[1]]
+        assert band.any() and abs(np.nonzero(band)[0].mean() + panel_y - (plot_y + half)) < 2
+    assert hud.chart_plot_rect(size, 2, 3)[1] + hud.chart_size[1] == size[1] - MARGIN
+    assert not mask[:, MARGIN + hud.chart_size[0]:].any()
+
+
+def test_history_keeps_the_last_span_wraps_and_resets():
+    history = StripHistory(["heave", "roll", "pitch"], span_s=10.0, capacity=8192)
+    for t in range(101):
+        history.append(float(t), [t, 2 * t, -t])
+    roll = history.chart("roll", "deg")
+    assert roll.title == "roll" and roll.unit == "deg" and roll.span_s == 10.0
+    assert np.array_equal(roll.times, np.arange(90.0, 101.0)) and np.array_equal(roll.values, 2 * roll.times)
+
+    small = StripHistory(["heave"], span_s=1000.0, capacity=50)
+    for t in np.arange(1000) * 0.1:
+        small.append(t, [np.sin(t)])
+    heave = small.chart("heave", "m")
+    assert np.allclose(heave.times, np.arange(950, 1000) * 0.1) and np.allclose(heave.values, np.sin(heave.times))
+
+    small.append(3.0, [1.0])  # time went backwards: a reset
+    assert np.array_equal(small.chart("heave", "m").times, [3.0])
+    small.append(3.0, [2.0])  # equal times are kept
+    assert np.array_equal(small.chart("heave", "m").values, [1.0, 2.0])
+    small.clear()
+    assert small.chart("heave", "m").times.size == 0
+    with pytest.raises(KeyError):
+        small.chart("sway", "m")
+    with pytest.raises(ValueError):
+        small.append(4.0, [1.0, 2.0])
+
+
+def test_draws_at_two_sizes_without_gl_errors_and_releases(ctx):
+    hud = Hud(ctx, font_px=16)
+    t = np.linspace(0.0, 30.0, 301)
+    charts = [StripChart("heave", "m", t, np.sin(t)), StripChart("roll", "deg", t[:1], t[:1]),
+              StripChart("pitch", "deg", t[:0], t[:0])]
+    help_lines = ["H  toggle this help", "Q  quit"]
+    many = [f"line {i:3d} " + "x" * 90 for i in range(60)]  # more glyphs than the first buffer holds
+    for size in ((640, 360), (1280, 720)):
+        image = render(ctx, hud, size, many, charts, help_lines)
+        assert ctx.error == "GL_NO_ERROR"
+        assert bright(image)[size[1] // 2 - 20:size[1] // 2 + 20, size[0] // 2 - 60:size[0] // 2 + 60].any()
+    # the help block is centred
+    image = bright(render(ctx, hud, (1280, 720), help_lines=help_lines))
+    rows, cols = np.nonzero(image)
+    assert abs((cols.min() + cols.max()) / 2 - 640) < hud.advance and abs((rows.min() + rows.max()) / 2 - 360) < 12
+    # the caller's viewport survives, and the HUD covers the whole target whatever it was
+    target = _targets[(640, 360)]
+    target.use()
+    target.clear(0.0, 0.0, 0.0, 1.0)
+    ctx.viewport = (300, 10, 100, 50)
+    hud.draw((640, 360), ["HEAVE"])
+    assert ctx.viewport == (300, 10, 100, 50)
+    ctx.viewport = (0, 0, 640, 360)
+    assert bright(np.frombuffer(target.read(components=3), np.uint8).reshape(360, 640, 3)[::-1])[:40, :80].any()
+    hud.release()
+    hud.release()
+    assert ctx.error == "GL_NO_ERROR"
