@@ -47,6 +47,7 @@ def _parser() -> argparse.ArgumentParser:
     parser.add_argument("--version", action="version", version=f"marinesim {__version__}")
     commands = parser.add_subparsers(dest="command", metavar="COMMAND")
     _add_run(commands)
+    _add_render(commands)
     _add_export(commands)
     _add_rao(commands)
     _add_hull(commands)
@@ -190,17 +191,40 @@ def _format_wake(r: dict, notes: tuple[str, ...]) -> str:
     return "\n".join(lines)
 
 
+def _add_view_options(p: argparse.ArgumentParser) -> None:
+    from marinesim.render.session import CAMERAS
+
+    g = p.add_argument_group("view")
+    g.add_argument("--camera", choices=CAMERAS, default="orbit", help="orbit (default), bridge or free")
+    g.add_argument("--solver", choices=("auto", "on", "off"), default="auto",
+                   help="the local wave solver around the hull: auto = on with a GPU, off on a software renderer")
+    g.add_argument("--no-wake", action="store_true", help="do not draw the Kelvin wake")
+
+
+def _render_options(args: argparse.Namespace):
+    from marinesim.render.renderer import RenderOptions
+
+    return RenderOptions(wake=not args.no_wake)
+
+
 def _add_run(commands: argparse._SubParsersAction) -> None:
     p = commands.add_parser(
-        "run", help="run a scenario (default configs/default.toml)",
-        description="Run a scenario. The interactive viewer is not built yet, so the run is "
-        "headless: it writes a picture of the sea, the wave elevation time series at the origin "
-        "(CSV) and its JSON sidecar, and says where they are.",
+        "run", help="open the viewer on a scenario (default configs/default.toml)",
+        description="Open the viewer on a scenario: the vessel moving in the rendered sea with its wake "
+        "(H in the window lists the keys). Without a display it runs headless instead: plots of the sea, "
+        "the motions and the RAOs, the motion CSV over the scenario's run, and a 10 s video, and says where "
+        "they are.",
     )
     p.add_argument("scenario", nargs="?", type=Path, default=DEFAULT_SCENARIO, help="scenario TOML file")
-    p.add_argument("--out", type=Path, help="output folder (default out/<scenario name>)")
+    p.add_argument("--out", type=Path, help="output folder of a headless run (default out/<scenario name>)")
+    p.add_argument("--headless", action="store_true", help="do not open a window even if there is a display")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
+    _add_view_options(p)
     p.set_defaults(handler=_run_scenario)
+
+
+HEADLESS_VIDEO = {"seconds": 10.0, "size": (640, 360), "fps": 25.0}
+"""The video a headless ``run`` renders: short and small, so that a software renderer makes it in a minute."""
 
 
 def _run_scenario(args: argparse.Namespace) -> int:
@@ -208,7 +232,6 @@ def _run_scenario(args: argparse.Namespace) -> int:
     from marinesim.scenario.headless import run_headless
 
     scenario = load_scenario(args.scenario)
-    out_dir = args.out or Path("out") / scenario.name
     print(f"scenario {scenario.path}: {len(scenario.sea.systems)} wave system(s), Hs {scenario.sea.hs:.2f} m, "
           f"Tp {scenario.sea.tp:.2f} s, {scenario.run.duration_s:g} s at dt {scenario.run.dt_s:g} s, "
           f"seed {scenario.run.seed}")
@@ -216,15 +239,82 @@ def _run_scenario(args: argparse.Namespace) -> int:
     if vessel is not None:
         print(f"vessel: {vessel.rao_path.name} ({vessel.rao.source_format}), {vessel.speed_kn:.3g} kn, "
               f"heading {vessel.heading_deg:g} deg, points: {', '.join(vessel.points) or 'none'}")
-    print("no interactive viewer in this version: running headless")
+    if not args.headless:
+        from marinesim.render.viewer import NoDisplay, Viewer
+
+        try:
+            viewer = Viewer(scenario, args.camera, args.solver, options=_render_options(args))
+        except NoDisplay as reason:
+            print(f"{reason}: running headless instead")
+        else:
+            print("viewer open: H lists the keys, ESC quits")
+            viewer.run()
+            return 0
+    out_dir = args.out or Path("out") / scenario.name
     files = run_headless(scenario, out_dir, progress=not args.quiet)
+    files |= _headless_video(scenario, out_dir, args)
     described = {"sea_plot": "the sea state picture", "motions": "the vessel's 6-DOF motions",
                  "sidecar": "their metadata", "motions_plot": "a plot of the motions", "rao_plot": "the RAOs",
                  "elevation": "the wave elevation at (0, 0)", "elevation_plot": "a plot of it",
-                 "wake_plot": "the Kelvin wake"}
+                 "wake_plot": "the Kelvin wake", "video": "a video of the first seconds"}
     width = max(len(described[key]) for key in files)
     for key, path in files.items():
         print(f"wrote {described[key] + ':':{width + 1}s} {path}")
+    return 0
+
+
+def _headless_video(scenario, out_dir: Path, args: argparse.Namespace) -> dict[str, Path]:
+    from marinesim.render.offscreen import render_video
+
+    video = HEADLESS_VIDEO
+    seconds = min(video["seconds"], scenario.run.duration_s)
+    size = video["size"]
+    print(f"rendering {seconds:g} s of video at {size[0]}x{size[1]}, {video['fps']:g} frames/s through EGL "
+          f"(camera {args.camera})")
+    result = render_video(scenario, out_dir / "video.mp4", seconds, size, video["fps"], args.camera, args.solver,
+                          _render_options(args), progress=not args.quiet, motions=False)
+    print(f"the local wave solver was {'on' if result.solver else 'off (software renderer; --solver on forces it)'}")
+    return {"video": result.video}
+
+
+def _add_render(commands: argparse._SubParsersAction) -> None:
+    p = commands.add_parser(
+        "render", help="render a scenario headless: an MP4 video with its motion CSV, or a screenshot",
+        description="Render a scenario without a window (EGL). A video gets the motions over its length "
+        "beside it (the same file `marinesim export --duration SECONDS` writes).",
+    )
+    p.add_argument("scenario", type=Path, help="scenario TOML file")
+    p.add_argument("--out", type=Path, help="video file (.mp4); its motions go beside it as .csv")
+    p.add_argument("--seconds", type=float, default=20.0, help="video length, s of simulated time (default 20)")
+    p.add_argument("--fps", type=float, default=30.0, help="frames per second (default 30)")
+    p.add_argument("--size", default="1280x720", help="WIDTHxHEIGHT in pixels, even (default 1280x720)")
+    p.add_argument("--screenshot", type=Path, metavar="PNG", help="write one frame as a PNG instead of a video")
+    p.add_argument("--time", type=float, default=0.0, help="time of the screenshot, s (default 0)")
+    p.add_argument("--quiet", action="store_true", help="no progress bar")
+    _add_view_options(p)
+    p.set_defaults(handler=_run_render)
+
+
+def _run_render(args: argparse.Namespace) -> int:
+    from marinesim.render.offscreen import parse_size, render_video, screenshot
+    from marinesim.scenario import load_scenario
+
+    size = parse_size(args.size)
+    if (args.out is None) == (args.screenshot is None):
+        raise ParameterError("give either --out VIDEO.mp4 or --screenshot SHOT.png")
+    scenario = load_scenario(args.scenario)
+    if args.screenshot is not None:
+        path = screenshot(scenario, args.screenshot, args.time, size, args.camera, args.solver, _render_options(args))
+        print(f"wrote the frame at {args.time:g} s ({size[0]}x{size[1]}, camera {args.camera}): {path}")
+        return 0
+    if args.out.suffix.lower() != ".mp4":
+        raise ParameterError(f"--out must be an .mp4 file, got {args.out}")
+    result = render_video(scenario, args.out, args.seconds, size, args.fps, args.camera, args.solver,
+                          _render_options(args), progress=not args.quiet)
+    print(f"wrote {result.frames} frames ({args.seconds:g} s at {result.fps:g} frames/s, {size[0]}x{size[1]}, "
+          f"solver {'on' if result.solver else 'off'}): {result.video}")
+    if result.motions is not None:
+        print(f"wrote the motions over the video (as marinesim export): {result.motions}")
     return 0
 
 

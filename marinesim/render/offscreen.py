@@ -113,9 +113,9 @@ def screenshot(scenario: Scenario, out: Path, at_s: float = 0.0, size: tuple[int
 
 def render_video(scenario: Scenario, out: Path, seconds: float = 20.0, size: tuple[int, int] = (1280, 720),
                  fps: float = 30.0, camera: str = "orbit", solver: str = "auto",
-                 options: RenderOptions = RenderOptions(), progress: bool = True) -> VideoResult:
-    """Write ``out`` (MP4, ``round(seconds * fps)`` frames at t = k / fps) and, with a vessel, the
-    motions over ``[0, seconds]`` at the scenario's dt to ``out`` with the suffix ``.csv``."""
+                 options: RenderOptions = RenderOptions(), progress: bool = True, motions: bool = True) -> VideoResult:
+    """Write ``out`` (MP4, ``round(seconds * fps)`` frames at t = k / fps) and, with a vessel and
+    ``motions``, the motions over ``[0, seconds]`` at the scenario's dt to ``out`` with the suffix ``.csv``."""
     import imageio_ffmpeg
     from tqdm import tqdm
 
@@ -124,7 +124,7 @@ def render_video(scenario: Scenario, out: Path, seconds: float = 20.0, size: tup
     if not (1.0 <= fps <= 240.0):
         raise ParameterError(f"--fps must be within 1..240, got {fps!r}")
     frames = int(round(seconds * fps))
-    motions = None
+    table = None
     with Offscreen(scenario, size, camera, solver, options, progress) as view, atomic_path(out) as temp:
         writer = imageio_ffmpeg.write_frames(str(temp), size, fps=fps, codec="libx264", quality=7,
                                              macro_block_size=2, ffmpeg_log_level="error")
@@ -139,6 +139,6 @@ def render_video(scenario: Scenario, out: Path, seconds: float = 20.0, size: tup
         finally:
             writer.close()
         solver_on = view.solver_on
-    if scenario.vessel is not None:
-        motions = export_motions(with_run(scenario, duration=seconds), out.with_suffix(".csv"), progress=False).table
-    return VideoResult(out, motions, frames, fps, solver_on)
+    if motions and scenario.vessel is not None:
+        table = export_motions(with_run(scenario, duration=seconds), out.with_suffix(".csv"), progress=False).table
+    return VideoResult(out, table, frames, fps, solver_on)

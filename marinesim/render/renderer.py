@@ -40,18 +40,21 @@ FOAM_TAU_S = 4.0
 """Foam decays as exp(-t / tau) once the surface stops folding."""
 FOAM_J_START, FOAM_J_FULL = 0.80, 0.50
 """Jacobian of a cascade where foam starts and where it covers the surface fully."""
-WAKE_SLOPE_FOAM = (0.08, 0.25)
+BREAKING_SLOPE = 0.3
+"""Steepest wake slope drawn (a Stokes wave breaks at a slope of about 0.45; groups break earlier)."""
+WAKE_SLOPE_FOAM = (0.2, 0.3)
 """Wake slopes where the wake's own foam starts and is full (breaking diverging waves)."""
 HULL_MASK_CELLS = (512, 128)
 
 
 @dataclass(frozen=True)
 class RenderOptions:
-    """What to draw: the Kelvin wake, foam, the local solver (``solver_size`` cells a side), the sun
+    """What to draw: the Kelvin wake, foam, the vessel, the local solver (``solver_size`` cells a side), the sun
     (compass azimuth and elevation, deg) and the visibility (m) that sets the haze."""
 
     wake: bool = True
     foam: bool = True
+    vessel: bool = True
     solver: bool = False
     solver_size: int = 512
     sun_azimuth_deg: float = 200.0
@@ -219,7 +222,7 @@ class Renderer:
 
         pose = self.sim.pose()
         self._draw_ocean(eye, view_projection, shared, pose)
-        if self._vessel_vao is not None:
+        if self._vessel_vao is not None and self.options.vessel:
             ctx.enable(moderngl.CULL_FACE)
             self._uniforms(self._vessel_program, shared | {"u_model": _matrix(pose.matrix()),
                                                            "u_view_projection": _matrix(view_projection)})
@@ -332,7 +335,10 @@ def upload_wake(ctx: moderngl.Context, wake: Wake, hull) -> tuple[moderngl.Textu
     """The wake as an RGBA32F texture (elevation m, d/dx, d/dy in the vessel frame, foam 0..1) and
     its rect (x, y of the grid's outer corner, 1 / width, 1 / height; m, vessel frame).
 
-    Foam: where the diverging waves are steep (slope ``WAKE_SLOPE_FOAM``), and the turbulent wash
+    Thin-ship theory overpredicts the waves of full hulls, up to slopes no water wave survives: a
+    field whose steepest waves (99.9th percentile of the slope) pass ``BREAKING_SLOPE`` is scaled
+    down to it, as breaking would cap them. Foam: where the diverging waves are near breaking
+    (slope ``WAKE_SLOPE_FOAM``), and the turbulent wash
     astern, a band as wide as the beam that spreads by a tenth of its width per beam travelled and
     fades over three hull lengths, stronger at higher Froude number.
     """
@@ -340,6 +346,8 @@ def upload_wake(ctx: moderngl.Context, wake: Wake, hull) -> tuple[moderngl.Textu
     spacing = float(wake.x[1] - wake.x[0])
     dhdy, dhdx = np.gradient(h, spacing)
     slope = np.hypot(dhdx, dhdy)
+    limit = BREAKING_SLOPE / max(float(np.percentile(slope, 99.9)), BREAKING_SLOPE)
+    h, dhdx, dhdy, slope = h * limit, dhdx * limit, dhdy * limit, slope * limit
     lo, hi = WAKE_SLOPE_FOAM
     foam = np.clip((slope - lo) / (hi - lo), 0.0, 1.0)
     stern = float(hull.vertices[:, 0].min())

@@ -97,12 +97,17 @@ def export_motions(scenario: Scenario, out: Path, file_format: str = "csv", prog
     return Export(out, sidecar, steps, response.columns)
 
 
-def _write_csv(path: Path, blocks, bar) -> None:
+def write_csv_block(handle, block: dict[str, np.ndarray], header: bool) -> None:
+    """Motion rows (columns as :func:`~marinesim.vessel.response.motion_columns`) to an open text file."""
     import pandas as pd
 
+    pd.DataFrame(block).to_csv(handle, index=False, header=header, lineterminator="\n")
+
+
+def _write_csv(path: Path, blocks, bar) -> None:
     with path.open("w", encoding="utf-8", newline="") as handle:
         for i, block in enumerate(blocks):
-            pd.DataFrame(block).to_csv(handle, index=False, header=(i == 0), lineterminator="\n")
+            write_csv_block(handle, block, header=(i == 0))
             bar.update(len(block["time_s"]))
 
 

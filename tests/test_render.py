@@ -1,0 +1,228 @@
+"""The viewer on Mesa's software OpenGL through EGL: real shaders, real frames, real files.
+
+Every render here goes through the same Session the window uses. Images are small (a software
+renderer draws them) but the statements are about what a user would see: sky above the
+horizon, the vessel where its pose puts it, more foam in a rougher sea, a wake behind a moving
+ship, a bridge view that rolls with the ship, a video with the frames it should have.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from marinesim.cli import main
+from marinesim.gl import GraphicsError
+from marinesim.render.camera import BridgeCamera
+from marinesim.render.offscreen import Offscreen, render_video
+from marinesim.render.renderer import RenderOptions
+from marinesim.render.simulation import Simulation, scaled_sea
+from marinesim.scenario import load_scenario
+from marinesim.solver.footprint import HullPose
+
+ROOT = Path(__file__).resolve().parents[1]
+DEFAULT = ROOT / "configs" / "default.toml"
+SIZE = (320, 180)
+
+
+@pytest.fixture(scope="module")
+def default():
+    return load_scenario(DEFAULT)
+
+
+@pytest.fixture(scope="module")
+def underway(tmp_path_factory):
+    """The default scenario with the tanker at 14 kn (Fn 0.145): a Kelvin wake worth drawing."""
+    text = DEFAULT.read_text().replace("speed_kn = 4.0", "speed_kn = 14.0").replace('"../', f'"{ROOT.as_posix()}/')
+    path = tmp_path_factory.mktemp("scenario") / "underway.toml"
+    path.write_text(text)
+    return load_scenario(path)
+
+
+def offscreen(scenario, size=SIZE, **options) -> Offscreen:
+    solver = "on" if options.get("solver") else "off"
+    try:
+        return Offscreen(scenario, size, solver=solver, options=RenderOptions(**options))
+    except GraphicsError as error:
+        pytest.skip(f"no EGL OpenGL 4.3 here: {error}")
+
+
+def horizon_row(view: Offscreen) -> float:
+    """Pixel row of the horizon in the middle column: a point 15 km out along the view, at z = 0."""
+    eye = view.session.camera.eye(view.session.sim.pose())
+    ahead = np.array([eye.forward[0], eye.forward[1], 0.0])
+    far = eye.position * [1, 1, 0] + 15_000.0 * ahead / np.linalg.norm(ahead)
+    return float(eye.project(far[None, :], view.size)[0, 1])
+
+
+def luminance(image: np.ndarray) -> np.ndarray:
+    return image.astype(float) @ [0.2126, 0.7152, 0.0722]
+
+
+def test_every_shader_compiles_and_frames_render_at_two_sizes_and_after_a_resize(underway):
+    """Sky, ocean (with wake and solver compositing), vessel, foam, HUD and solver passes all
+    compile, and a frame draws without a GL error at 320x180, at 480x270 and back again."""
+    with offscreen(underway, solver=True, solver_size=64) as view:
+        view.go_to(2.0)
+        frames = []
+        for size in (SIZE, (480, 270), SIZE):
+            view.size = size
+            view._fbo = view.ctx.framebuffer(color_attachments=[view.ctx.renderbuffer(size)],
+                                             depth_attachment=view.ctx.depth_renderbuffer(size))
+            frames.append(view.frame())
+            assert view.ctx.error == "GL_NO_ERROR"
+        assert view.solver_on
+        assert [f.shape for f in frames] == [(180, 320, 3), (270, 480, 3), (180, 320, 3)]
+        assert np.array_equal(frames[0], frames[2]), "the same frame after a resize must be the same picture"
+        assert frames[1].std() > 10.0, "a frame of one colour: nothing was drawn"
+
+
+def test_sky_above_the_horizon_water_below_and_the_vessel_where_its_pose_puts_it(default):
+    with offscreen(default) as view, offscreen(default, vessel=False) as bare:
+        for v in (view, bare):
+            v.go_to(30.0)
+        image, without = view.frame(hud=False), bare.frame(hud=False)
+        row = horizon_row(view)
+        assert 5 < row < SIZE[1] - 20, f"the default orbit camera should see the horizon, got row {row:.1f}"
+        sky, water = image[: int(row) - 3], image[int(row) + 12:]
+        # sky: bright and blue; water: darker than the sky and blue-green, not grey or black
+        assert luminance(sky).mean() > 150.0
+        assert luminance(water).mean() < 0.75 * luminance(sky).mean()
+        assert water[..., 2].mean() > water[..., 0].mean() + 20.0, "water should be bluer than it is red"
+        assert sky[..., 2].mean() > sky[..., 0].mean(), "the sky should be bluer than it is red"
+
+        session = view.session
+        pose = session.sim.pose()
+        corners = pose.world(session.renderer.mesh.bounds())
+        projected = session.camera.eye(pose).project(corners, view.size)
+        (x0, y0), (x1, y1) = projected[:, :2].min(axis=0), projected[:, :2].max(axis=0)
+        changed = np.abs(image.astype(int) - without.astype(int)).max(axis=-1) > 25
+        rows, cols = np.nonzero(changed)
+        inside = (cols >= x0 - 1) & (cols <= x1 + 1) & (rows >= y0 - 1) & (rows <= y1 + 1)
+        assert changed.sum() > 100, "the vessel covers almost no pixels"
+        assert inside.mean() > 0.99, "vessel pixels outside its projected bounding box: the pose or camera is wrong"
+        assert changed.sum() > 0.15 * (x1 - x0) * (y1 - y0), "the vessel fills too little of its bounding box"
+
+
+def foam_fraction(scenario, hs_factor: float) -> float:
+    """Share of the water's pixels that foam brightens (the same frame with foam off is the reference)."""
+    rough = dataclasses.replace(scenario, sea=scaled_sea(scenario.sea, hs_factor, 1.0, 0.0))
+    with offscreen(rough) as view, offscreen(rough, foam=False) as plain:
+        for v in (view, plain):
+            v.go_to(20.0)
+        row = int(horizon_row(view)) + 12
+        brighter = luminance(view.frame(hud=False)[row:]) - luminance(plain.frame(hud=False)[row:])
+    return float((brighter > 20.0).mean())
+
+
+def test_foam_covers_more_of_the_sea_as_hs_rises(default):
+    """Whitecaps grow with wave steepness: Hs x0.5 almost none, x2 several times more than x1."""
+    calm, design, storm = (foam_fraction(default, f) for f in (0.5, 1.0, 2.0))
+    assert calm < design < storm
+    assert calm < 0.002, f"a 1.9 m sea should be almost free of whitecaps, got {calm:.2%}"
+    assert storm > 3.0 * design and storm > 0.01, (calm, design, storm)
+
+
+def sea_plane_points(eye, size: tuple[int, int], rows: np.ndarray, cols: np.ndarray) -> np.ndarray:
+    """Where the rays through pixel centres meet the mean sea surface z = 0 (m, E frame)."""
+    width, height = size
+    ndc = np.c_[(cols + 0.5) / width * 2 - 1, 1 - (rows + 0.5) / height * 2, np.ones(len(rows)), np.ones(len(rows))]
+    far = ndc @ np.linalg.inv(eye.view_projection(width / height)).T
+    direction = far[:, :3] / far[:, 3:] - eye.position
+    return eye.position + direction * (-eye.position[2] / direction[:, 2])[:, None]
+
+
+def test_the_wake_shows_behind_the_moving_vessel_and_not_ahead_of_it(underway):
+    """Kelvin waves trail the ship: every pixel the wake changes looks at water behind the bow
+    (within the sea's own heave of the surface) and inside the wake's grid."""
+    with offscreen(underway, SIZE) as view, offscreen(underway, SIZE, wake=False) as plain:
+        for v in (view, plain):
+            v.go_to(10.0)
+        changed = np.abs(view.frame(hud=False).astype(int) - plain.frame(hud=False).astype(int)).max(axis=-1) > 12
+        session = view.session
+        wake = session.sim.wakes()[0][0]
+        pose = session.sim.pose()
+        eye = session.camera.eye(pose)
+    assert changed.mean() > 0.02, "the wake changed almost nothing in the picture"
+    rows, cols = np.nonzero(changed)
+    on_sea = sea_plane_points(eye, SIZE, rows, cols)
+    ahead = np.array([math.cos(pose.heading), math.sin(pose.heading)])
+    along = (on_sea[:, :2] - [pose.x, pose.y]) @ ahead
+    hull = session.renderer.mesh
+    bow = hull.positions[:, 0].max()
+    assert np.mean(along < bow + 30.0) > 0.98, "wake drawn ahead of the bow: the vessel-frame mapping is wrong"
+    assert np.mean(along > wake.x[0] - 30.0) > 0.98, "wake drawn beyond the end of its grid"
+
+
+def test_the_bridge_camera_rolls_and_pitches_with_the_ship():
+    """The eye is the bridge point carried by the pose; its up vector tilts by exactly the roll and pitch."""
+    camera = BridgeCamera((-105.0, 0.0, 32.0), look_pitch_deg=0.0)
+    level = camera.eye(HullPose(10.0, 20.0, 0.3))
+    roll, pitch = math.radians(5.0), math.radians(2.0)
+    rolled = camera.eye(HullPose(10.0, 20.0, 0.3, (0, 0, 0, roll, 0, 0)))
+    pitched = camera.eye(HullPose(10.0, 20.0, 0.3, (0, 0, 0, 0, pitch, 0)))
+    assert math.degrees(math.acos(rolled.up @ level.up)) == pytest.approx(5.0, abs=1e-9)
+    starboard = np.cross(level.forward, level.up)
+    assert rolled.up @ starboard > 0, "positive roll (starboard down, CONVENTIONS) tilts the mast to starboard"
+    # pitch bow down raises a point 105 m aft by 105 sin(2 deg) = 3.66 m, and the view dips by 2 deg
+    assert pitched.position[2] - level.position[2] == pytest.approx(105.0 * math.sin(pitch) + 32.0 * (math.cos(pitch) - 1),
+                                                                    abs=1e-9)
+    assert math.degrees(math.asin(-pitched.forward[2])) == pytest.approx(2.0, abs=1e-9)
+
+
+def test_a_ten_second_video_has_its_frames_and_its_csv_equals_marinesim_export(default, tmp_path):
+    import imageio_ffmpeg
+
+    out = tmp_path / "run.mp4"
+    result = render_video(default, out, seconds=10.0, size=(160, 90), fps=10.0, solver="off", progress=False)
+    frames, seconds = imageio_ffmpeg.count_frames_and_secs(str(out))
+    assert (result.frames, frames) == (100, 100)
+    assert seconds == pytest.approx(10.0)
+    assert not list(tmp_path.glob(".*part*")), "a temporary file was left behind"
+    assert main(["export", str(DEFAULT), "--out", str(tmp_path / "export.csv"), "--duration", "10", "--quiet"]) == 0
+    pd.testing.assert_frame_equal(pd.read_csv(result.motions), pd.read_csv(tmp_path / "export.csv"))
+
+
+def test_live_changes_blend_smoothly_and_do_not_depend_on_the_frame_rate(default):
+    """A course and sea change at t = 5 s: the same poses at 60 and at 7 frames/s; no jump in heave or heading."""
+    def run(dt: float) -> Simulation:
+        sim = Simulation(default, wake=False)
+        while sim.time < 5.0 - 1e-9:
+            sim.advance(min(dt, 5.0 - sim.time))
+        sim.change(hs_factor=1.5, heading_deg=200.0, speed_kn=8.0, ramp_s=10.0)
+        while sim.time < 30.0 - 1e-9:
+            sim.advance(min(dt, 30.0 - sim.time))
+        return sim
+    fast, slow = run(1 / 60), run(1 / 7)
+    times = np.arange(0.0, 30.0, 0.05)
+    assert np.allclose(fast.frame(times)["heave_m"], slow.frame(times)["heave_m"], atol=1e-9)
+    a, b = fast.pose(17.3), slow.pose(17.3)  # the change starts at 5 s up to the rounding of summed frame times
+    assert np.allclose([a.x, a.y, a.heading, *a.motion], [b.x, b.y, b.heading, *b.motion], rtol=0, atol=1e-9)
+    heave = fast.frame(times)["heave_m"]
+    assert np.abs(np.diff(heave)).max() < 0.1, "heave jumps during the blend"
+    headings = np.unwrap([fast.pose(t).heading for t in times])
+    assert np.abs(np.diff(headings)).max() < math.radians(1.0)
+    assert math.degrees(headings[-1]) % 360 == pytest.approx(250.0, abs=1e-6)  # compass 200 = math 250
+    assert fast.sea.hs == pytest.approx(1.5 * default.sea.hs, rel=1e-9)
+
+
+def test_render_command_refuses_bad_sizes_and_writes_a_screenshot(tmp_path, capsys):
+    assert main(["render", str(DEFAULT), "--screenshot", str(tmp_path / "a.png"), "--size", "321x180"]) == 2
+    assert "--size" in capsys.readouterr().err
+    assert main(["render", str(DEFAULT), "--out", str(tmp_path / "a.avi")]) == 2
+    assert main(["render", str(DEFAULT), "--screenshot", str(tmp_path / "a.png"), "--time", "-1"]) == 2
+    assert not list(tmp_path.iterdir()), "a refused command wrote something"
+    try:
+        code = main(["render", str(DEFAULT), "--screenshot", str(tmp_path / "shot.png"), "--size", "160x90",
+                     "--time", "5", "--camera", "bridge"])
+    except GraphicsError as error:
+        pytest.skip(str(error))
+    from PIL import Image
+
+    assert code == 0
+    assert Image.open(tmp_path / "shot.png").size == (160, 90)
