@@ -86,7 +86,8 @@ def main() -> None:
     for name, value in median.items():
         print(f"  {name:10s} {1000 * value:8.2f} ms")
     print(f"  frame      {1000 * frame:8.2f} ms  ({1 / frame:.1f} frames/s)")
-    print(f"  draw / sky-only pass        {median['draw'] / np.median(sky):6.1f}  (sky pass {1000 * np.median(sky):.2f} ms)")
+    print(f"  draw / sky-only pass        {median['draw'] / np.median(sky):6.1f}  "
+          f"(sky pass {1000 * np.median(sky):.2f} ms)")
     print(f"  simulation / raw cascade FFTs {median['simulation'] / np.median(raw):6.2f}  "
           f"(FFTs {1000 * np.median(raw):.2f} ms)")
     view.release()

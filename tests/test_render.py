@@ -170,8 +170,8 @@ def test_the_bridge_camera_rolls_and_pitches_with_the_ship():
     starboard = np.cross(level.forward, level.up)
     assert rolled.up @ starboard > 0, "positive roll (starboard down, CONVENTIONS) tilts the mast to starboard"
     # pitch bow down raises a point 105 m aft by 105 sin(2 deg) = 3.66 m, and the view dips by 2 deg
-    assert pitched.position[2] - level.position[2] == pytest.approx(105.0 * math.sin(pitch) + 32.0 * (math.cos(pitch) - 1),
-                                                                    abs=1e-9)
+    rise = 105.0 * math.sin(pitch) + 32.0 * (math.cos(pitch) - 1.0)
+    assert pitched.position[2] - level.position[2] == pytest.approx(rise, abs=1e-9)
     assert math.degrees(math.asin(-pitched.forward[2])) == pytest.approx(2.0, abs=1e-9)
 
 

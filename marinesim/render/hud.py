@@ -279,7 +279,8 @@ class Hud:
 
     def _render(self, layer: _Layer) -> None:
         """Panels, then lines, then text of one layer."""
-        shapes = [np.concatenate(layer.triangles or [np.empty((0, 6))]), np.concatenate(layer.lines or [np.empty((0, 6))])]
+        empty = [np.empty((0, 6))]
+        shapes = [np.concatenate(layer.triangles or empty), np.concatenate(layer.lines or empty)]
         if len(shapes[0]) + len(shapes[1]):
             _upload(self.shape_buffer, np.concatenate(shapes))
             if len(shapes[0]):

@@ -17,9 +17,9 @@ import numpy as np
 
 from marinesim.atomic import atomic_path
 from marinesim.errors import ParameterError
-from marinesim.gl import is_software, standalone_context
+from marinesim.gl import standalone_context
 from marinesim.render.renderer import FOAM_TAU_S, RenderOptions
-from marinesim.render.session import Session
+from marinesim.render.session import Session, solver_wanted
 from marinesim.scenario.export import export_motions, with_run
 from marinesim.scenario.schema import Scenario
 
@@ -55,10 +55,8 @@ class Offscreen:
                  options: RenderOptions = RenderOptions(), progress: bool = False) -> None:
         self.ctx = standalone_context()
         self.size = size
-        use_solver = {"on": True, "off": False, "auto": not is_software(self.ctx)}.get(solver)
-        if use_solver is None:
-            raise ParameterError(f"--solver must be auto, on or off, got {solver!r}")
-        self.session = Session(self.ctx, scenario, camera, replace(options, solver=use_solver), progress)
+        self.session = Session(self.ctx, scenario, camera, replace(options, solver=solver_wanted(self.ctx, solver)),
+                               progress)
         self._fbo = self.ctx.framebuffer(color_attachments=[self.ctx.renderbuffer(size)],
                                          depth_attachment=self.ctx.depth_renderbuffer(size))
 

@@ -12,9 +12,11 @@ import math
 import moderngl
 import numpy as np
 
+from marinesim.errors import ParameterError
+from marinesim.gl import is_software
 from marinesim.render.camera import BridgeCamera, FreeCamera, OrbitCamera
 from marinesim.render.hud import Hud, StripHistory
-from marinesim.render.renderer import RenderOptions, Renderer
+from marinesim.render.renderer import Renderer, RenderOptions
 from marinesim.render.simulation import Simulation
 from marinesim.scenario.schema import Scenario
 
@@ -23,6 +25,13 @@ CHARTED = (("heave", "heave_m", "m"), ("roll", "roll_deg", "deg"), ("pitch", "pi
 """Strip charts: title, motion column, unit."""
 HISTORY_STEP_S = 0.2
 """Spacing of the strip charts' samples (s of simulated time)."""
+
+
+def solver_wanted(ctx: moderngl.Context, choice: str) -> bool:
+    """``"on"``, ``"off"``, or ``"auto"``: on with a GPU, off on a software renderer (too slow there)."""
+    if choice not in ("auto", "on", "off"):
+        raise ParameterError(f"--solver must be auto, on or off, got {choice!r}")
+    return choice == "on" or (choice == "auto" and not is_software(ctx))
 
 
 class Session:
@@ -53,7 +62,6 @@ class Session:
     @camera_name.setter
     def camera_name(self, name: str) -> None:
         if name not in CAMERAS:
-            from marinesim.errors import ParameterError
             raise ParameterError(f"unknown camera {name!r} (known: {', '.join(CAMERAS)})")
         self._camera_name = name
 

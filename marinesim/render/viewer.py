@@ -11,10 +11,10 @@ import sys
 import time
 
 from marinesim.errors import MarinesimError
-from marinesim.gl import GL_VERSION, GraphicsError, is_software
+from marinesim.gl import GL_VERSION, GraphicsError
 from marinesim.render.controls import HELP, Controls
 from marinesim.render.renderer import RenderOptions
-from marinesim.render.session import Session
+from marinesim.render.session import Session, solver_wanted
 from marinesim.scenario.schema import Scenario
 
 
@@ -27,6 +27,7 @@ def open_window(size: tuple[int, int], caption: str, headless: bool = False):
     headless mode (for tests). Raises :class:`NoDisplay` when no window can be made."""
     import pyglet
 
+    pyglet.options["debug_gl"] = False  # moderngl draws; pyglet's per-call error checks only slow it
     if headless:
         pyglet.options["headless"] = True
     elif sys.platform.startswith("linux") and not (os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")):
@@ -45,9 +46,10 @@ class Viewer:
 
     def __init__(self, scenario: Scenario, camera: str = "orbit", solver: str = "auto",
                  size: tuple[int, int] = (1280, 720), headless: bool = False, options: RenderOptions = RenderOptions()):
+        from dataclasses import replace
+
         import moderngl
         import pyglet
-        from dataclasses import replace
 
         self.window = open_window(size, f"marinesim - {scenario.name}", headless)
         try:
@@ -56,8 +58,8 @@ class Viewer:
         except Exception as error:  # noqa: BLE001
             self.window.close()
             raise GraphicsError(f"the window has no OpenGL {GL_VERSION / 100:.1f} context ({error})") from None
-        use_solver = {"on": True, "off": False, "auto": not is_software(self.ctx)}[solver]
-        self.session = Session(self.ctx, scenario, camera, replace(options, solver=use_solver), progress=True)
+        options = replace(options, solver=solver_wanted(self.ctx, solver))
+        self.session = Session(self.ctx, scenario, camera, options, progress=True)
         self.controls = Controls(self.session)
         self.held: set[str] = set()
         self._last = time.perf_counter()
