@@ -35,8 +35,8 @@ from marinesim.wake.compute import QUALITATIVE_BELOW_FROUDE, Wake, WakeGrid, fro
 
 RAMP_S = 20.0
 """Default time over which a live change blends in (s)."""
-WAKE_GRID = WakeGrid(nx=1024, ny=512)
-"""The viewer's wake grid: 1024 x 512 cells of lambda0 / 16 (or wider, to reach three hull lengths)."""
+WAKE_GRID = WakeGrid()
+"""The viewer's wake grid: the default one, so the viewer reads the wakes the headless run cached."""
 
 
 @dataclass(frozen=True)
