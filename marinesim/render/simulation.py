@@ -73,6 +73,7 @@ class Simulation:
         speed = self.vessel.speed_m_s if self.vessel else 0.0
         self.legs = [self._leg(0.0, 0.0, scenario.sea, Track(heading, speed))]
         self._pending: list[tuple[SeaState | None, float | None, float | None, float]] = []
+        self._last_pose: tuple[float, int, HullPose | None] = (math.nan, 0, None)
         self.wake_on = wake and self.vessel is not None and self.vessel.hull is not None
         self._wake_grid = wake_grid
         self._wakes: dict[float, Future | Wake | None] = {}
@@ -104,19 +105,27 @@ class Simulation:
         last = self.legs[-1]
         return last.start + last.ramp_s
 
+    def _requested(self, field: int):
+        """The newest waiting change's value of ``field`` (0 sea, 1 speed, 2 heading), or None."""
+        return next((change[field] for change in reversed(self._pending) if change[field] is not None), None)
+
     @property
     def sea(self) -> SeaState:
-        """The sea state the ocean is at or ramping to."""
-        return self.legs[-1].sea
+        """The sea state the ocean is at, ramping to, or will ramp to once the waiting changes start."""
+        requested = self._requested(0)
+        return self.legs[-1].sea if requested is None else requested
 
     @property
     def speed_m_s(self) -> float:
-        return self.legs[-1].track.speed
+        """Speed the vessel is at or changing to (waiting changes included)."""
+        requested = self._requested(1)
+        return self.legs[-1].track.speed if requested is None else requested
 
     @property
     def heading_deg(self) -> float:
-        """Compass heading the vessel is on or turning to."""
-        return math_to_compass(self.legs[-1].track.heading)
+        """Compass heading the vessel is on or turning to (waiting changes included)."""
+        requested = self._requested(2)
+        return math_to_compass(self.legs[-1].track.heading if requested is None else requested)
 
     def change(self, *, hs_factor: float = 1.0, tp_factor: float = 1.0, turn_waves_deg: float = 0.0,
                speed_kn: float | None = None, heading_deg: float | None = None, ramp_s: float = RAMP_S) -> None:
@@ -124,10 +133,9 @@ class Simulation:
         directions turned by ``turn_waves_deg`` (compass, clockwise), a new speed or compass heading."""
         if speed_kn is not None and not 0.0 <= speed_kn <= MAX_SPEED_KN:
             raise ParameterError(f"speed must be within 0..{MAX_SPEED_KN:g} kn, got {speed_kn!r}")
-        base = self._pending[-1][0] if self._pending and self._pending[-1][0] is not None else self.sea
         sea = None
         if (hs_factor, tp_factor, turn_waves_deg) != (1.0, 1.0, 0.0):
-            sea = scaled_sea(base, hs_factor, tp_factor, turn_waves_deg)
+            sea = scaled_sea(self.sea, hs_factor, tp_factor, turn_waves_deg)
         speed = None if speed_kn is None else speed_kn * KNOT
         heading = None if heading_deg is None else compass_to_math(heading_deg % 360.0)
         self._pending.append((sea, speed, heading, float(ramp_s)))
@@ -156,37 +164,45 @@ class Simulation:
     # -- queries ------------------------------------------------------------------------------
 
     def pose(self, t: float | None = None) -> HullPose:
-        """Track point, heading and 6-DOF motion (m, rad) at ``t`` (default: now)."""
+        """Track point, heading and 6-DOF motion (m, rad) at ``t`` (default: now).
+
+        The renderer, the camera and the HUD all ask for the pose at the same time each frame:
+        the last one is kept."""
         t = self.time if t is None else t
+        if self._last_pose[0] == t and len(self.legs) == self._last_pose[1]:
+            return self._last_pose[2]
         previous, leg, w = self._legs_at(t)
         x, y = (1.0 - w) * previous.track_point(t)[0] + w * leg.track_point(t)[0]
         turn = math.remainder(leg.track.heading - previous.track.heading, 2.0 * math.pi)
         motion = (0.0,) * 6
-        if leg.response is not None:
-            linear = (1.0 - w) * previous.response.linear(np.array([t])) + w * leg.response.linear(np.array([t]))
-            motion = tuple(float(v) for v in linear[0, :6])
-        return HullPose(float(x), float(y), previous.track.heading + w * turn, motion)
+        if self.vessel is not None:
+            motion = tuple(float(v) for v in self._linear(np.array([t]))[0, :6])
+        pose = HullPose(float(x), float(y), previous.track.heading + w * turn, motion)
+        self._last_pose = (t, len(self.legs), pose)
+        return pose
 
     def frame(self, times: np.ndarray) -> dict[str, np.ndarray]:
         """Motion columns (as ``marinesim export``) at ``times`` (s), blended across legs."""
         times = np.asarray(times, float).ravel()
         if self.vessel is None:
             raise ParameterError("the scenario has no vessel: no motions to record")
-        out: dict[str, np.ndarray] | None = None
+        return self.legs[-1].response.frame(times, self._linear(times))
+
+    def _linear(self, times: np.ndarray) -> np.ndarray:
+        """The responses' linear outputs (:meth:`Response.linear`) at ``times``, blended across legs;
+        the previous leg is evaluated only where a blend is under way."""
+        out = np.empty((times.size, self.legs[0].response.linear(times[:0]).shape[1]))
         starts = np.array([leg.start for leg in self.legs])
         index = np.maximum(np.searchsorted(starts, times, side="right") - 1, 0)
         for i in np.unique(index):
-            at = index == i
-            leg, previous = self.legs[i], self.legs[max(i - 1, 0)]
-            w = leg.weight(times[at])[:, None]
-            linear = leg.response.linear(times[at])
-            if i > 0:
-                linear = w * linear + (1.0 - w) * previous.response.linear(times[at])
-            part = leg.response.frame(times[at], linear)
-            if out is None:
-                out = {name: np.empty(times.size) for name in part}
-            for name, values in part.items():
-                out[name][at] = values
+            at = np.flatnonzero(index == i)
+            leg = self.legs[i]
+            out[at] = leg.response.linear(times[at])
+            w = leg.weight(times[at])
+            blending = at[w < 1.0]
+            if blending.size:
+                w = w[w < 1.0][:, None]
+                out[blending] = w * out[blending] + (1.0 - w) * self.legs[i - 1].response.linear(times[blending])
         return out
 
     # -- the wake -----------------------------------------------------------------------------
@@ -225,12 +241,13 @@ class Simulation:
         """One line for the HUD: what the wake shows."""
         if not self.wake_on:
             return "wake off"
-        wake = self._wakes.get(self.speed_m_s)
-        froude = froude_number(self.speed_m_s, self._length)
+        speed = self.legs[-1].track.speed  # the wake is requested when a speed change starts
+        wake = self._wakes.get(speed)
+        froude = froude_number(speed, self._length)
         if wake is None:
             return f"no wake drawn: Fn {froude:.2f} < {QUALITATIVE_BELOW_FROUDE}"
         if isinstance(wake, Future) and not wake.done():
-            return f"wake: computing for {self.speed_m_s / KNOT:.1f} kn"
+            return f"wake: computing for {speed / KNOT:.1f} kn"
         return f"Kelvin wake Fn {froude:.2f}"
 
     def close(self) -> None:
@@ -240,11 +257,8 @@ class Simulation:
     def describe(self) -> list[str]:
         """HUD lines: the sea state and the vessel's course."""
         sea = self.sea
-        systems = [s for s in sea.systems]
-        first = systems[0]
-        beta = first.beta
         lines = [f"t {self.time:8.1f} s   Hs {sea.hs:4.2f} m   Tp {sea.tp:4.1f} s   "
-                 f"waves from {wave_compass_from_beta(beta):5.1f} deg ({len(systems)} system(s))"]
+                 f"waves from {wave_compass_from_beta(sea.systems[0].beta):5.1f} deg ({len(sea.systems)} system(s))"]
         if self.vessel is not None:
             lines.append(f"speed {self.speed_m_s / KNOT:4.1f} kn   heading {self.heading_deg:5.1f} deg   "
                          + self.wake_status())
