@@ -16,7 +16,6 @@ from typing import Callable
 import numpy as np
 
 from marinesim.constants import KNOT
-from marinesim.errors import MarinesimError
 from marinesim.render.session import Session
 from marinesim.scenario.export import write_csv_block
 
@@ -64,7 +63,7 @@ class Recorder:
         return self.path
 
     def abandon(self) -> None:
-        """Close without keeping anything (the window closed mid-recording with an error)."""
+        """Close and delete the temporary file, keeping nothing (writing it failed)."""
         self._handle.close()
         self._temp.unlink(missing_ok=True)
 
@@ -153,14 +152,13 @@ class Controls:
             self.recorder = Recorder(self.session, self.recordings / name)
             self.message = f"recording to {self.recorder.path}"
         else:
+            recorder, self.recorder = self.recorder, None
             try:
-                path = self.recorder.stop()
-                self.message = f"recorded {self.recorder.rows} rows to {path}"
-            except OSError as error:
+                path = recorder.stop()
+                self.message = f"recorded {recorder.rows} rows to {path}"
+            except OSError as error:  # a full disk must not end the session
+                recorder.abandon()
                 self.message = f"the recording could not be written: {error}"
-                raise MarinesimError(self.message) from None
-            finally:
-                self.recorder = None
 
     def status(self) -> list[str]:
         state = "PAUSED" if self.paused else f"time x{self.time_scale:g}"

@@ -112,17 +112,19 @@ class Viewer:
     def run(self) -> None:
         import pyglet
 
-        pyglet.clock.schedule_interval(lambda dt: self.tick(), 1.0 / 60.0)
+        pyglet.clock.schedule_interval(self._on_clock, 1.0 / 60.0)
         pyglet.app.run()
+
+    def _on_clock(self, dt: float) -> None:
+        self.tick()
 
     def close(self) -> None:
         import pyglet
 
         if self.controls.recorder is not None:
-            path = self.controls.recorder.stop()
-            print(f"recording stopped: {self.controls.recorder.rows} rows in {path}")
-            self.controls.recorder = None
-        pyglet.clock.unschedule(self.tick)
+            self.controls.toggle_recording()
+            print(self.controls.message)
+        pyglet.clock.unschedule(self._on_clock)
         self.session.release()
         _ = self.ctx.error  # reading clears a pending GL error, which pyglet's close would raise
         self.window.close()
