@@ -56,7 +56,7 @@ def main() -> None:
     for _ in range(args.frames):
         session.sim.advance(1.0 / 60.0)
         times = session.renderer.update(sync=True)
-        view._fbo.use()
+        view.bind()
         start = time.perf_counter()
         session.draw(size)
         ctx.finish()

@@ -17,6 +17,7 @@ import pandas as pd
 import pytest
 
 from marinesim.cli import main
+from marinesim.constants import KNOT
 from marinesim.gl import GraphicsError
 from marinesim.render.camera import BridgeCamera
 from marinesim.render.offscreen import Offscreen, render_video
@@ -71,9 +72,7 @@ def test_every_shader_compiles_and_frames_render_at_two_sizes_and_after_a_resize
         view.go_to(2.0)
         frames = []
         for size in (SIZE, (480, 270), SIZE):
-            view.size = size
-            view._fbo = view.ctx.framebuffer(color_attachments=[view.ctx.renderbuffer(size)],
-                                             depth_attachment=view.ctx.depth_renderbuffer(size))
+            view.resize(size)
             frames.append(view.frame())
             assert view.ctx.error == "GL_NO_ERROR"
         assert view.solver_on
@@ -211,11 +210,31 @@ def test_live_changes_blend_smoothly_and_do_not_depend_on_the_frame_rate(default
     assert fast.sea.hs == pytest.approx(1.5 * default.sea.hs, rel=1e-9)
 
 
+def test_changes_asked_for_during_a_blend_add_up(default):
+    """Two presses of 'waves up' and 'speed up' while a change blends: x1.21 and +2 kn, not x1.1 and +1."""
+    sim = Simulation(default, wake=False)
+    speed_kn = default.vessel.speed_kn
+    for _ in range(2):
+        sim.change(hs_factor=1.1, ramp_s=5.0)
+        sim.change(speed_kn=sim.speed_m_s / KNOT + 1.0, ramp_s=5.0)
+    assert sim.speed_m_s / KNOT == pytest.approx(speed_kn + 2.0)   # the waiting changes already count
+    sim.advance(30.0)
+    assert sim.sea.hs == pytest.approx(1.21 * default.sea.hs, rel=1e-9)
+    assert sim.legs[-1].track.speed / KNOT == pytest.approx(speed_kn + 2.0)
+    assert len(sim.legs) == 5, "each change should have started in turn"
+
+
 def test_render_command_refuses_bad_sizes_and_writes_a_screenshot(tmp_path, capsys):
     assert main(["render", str(DEFAULT), "--screenshot", str(tmp_path / "a.png"), "--size", "321x180"]) == 2
     assert "--size" in capsys.readouterr().err
     assert main(["render", str(DEFAULT), "--out", str(tmp_path / "a.avi")]) == 2
     assert main(["render", str(DEFAULT), "--screenshot", str(tmp_path / "a.png"), "--time", "-1"]) == 2
+    assert main(["render", str(DEFAULT), "--out", str(tmp_path / "a.mp4"), "--seconds", "0"]) == 2
+    assert "--seconds" in capsys.readouterr().err
+    assert main(["render", str(DEFAULT), "--out", str(tmp_path / "a.mp4"), "--fps", "0"]) == 2
+    assert "--fps" in capsys.readouterr().err
+    both = ["--out", str(tmp_path / "a.mp4"), "--screenshot", str(tmp_path / "a.png")]
+    assert main(["render", str(DEFAULT), *both]) == 2
     assert not list(tmp_path.iterdir()), "a refused command wrote something"
     try:
         code = main(["render", str(DEFAULT), "--screenshot", str(tmp_path / "shot.png"), "--size", "160x90",

@@ -57,8 +57,21 @@ class Offscreen:
         self.size = size
         self.session = Session(self.ctx, scenario, camera, replace(options, solver=solver_wanted(self.ctx, solver)),
                                progress)
-        self._fbo = self.ctx.framebuffer(color_attachments=[self.ctx.renderbuffer(size)],
-                                         depth_attachment=self.ctx.depth_renderbuffer(size))
+        self._fbo = self._framebuffer(size)
+
+    def _framebuffer(self, size: tuple[int, int]):
+        return self.ctx.framebuffer(color_attachments=[self.ctx.renderbuffer(size)],
+                                    depth_attachment=self.ctx.depth_renderbuffer(size))
+
+    def resize(self, size: tuple[int, int]) -> None:
+        """Draw at ``size`` (w, h) px from now on (a window being resized)."""
+        old, self._fbo, self.size = self._fbo, self._framebuffer(size), size
+        self._fbo.use()  # never release the bound framebuffer
+        old.release()
+
+    def bind(self) -> None:
+        """Make the offscreen framebuffer the target of the next draw."""
+        self._fbo.use()
 
     @property
     def solver_on(self) -> bool:
@@ -66,7 +79,7 @@ class Offscreen:
 
     def frame(self, hud: bool = True) -> np.ndarray:
         """The current frame as (h, w, 3) uint8 RGB, top row first."""
-        self._fbo.use()
+        self.bind()
         self.session.draw(self.size, hud)
         data = self._fbo.read(components=3, alignment=1)
         return np.frombuffer(data, np.uint8).reshape(self.size[1], self.size[0], 3)[::-1].copy()
