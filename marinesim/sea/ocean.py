@@ -15,12 +15,15 @@ spectrum ``C[q] = (a[-q] e^{iwt} + conj(a[q]) e^{-iwt}) / 2`` for the height and
   Jacobian ``J = (1 + dDx/dx)(1 + dDy/dy) - (dDx/dy)^2`` (J < ~0.3: the surface folds, foam),
 
 the eight real fields packed two per complex FFT (``F + iG`` is the spectrum of ``f + ig``).
-Only the cells of each tile's band are touched per frame.
+Only the cells of each tile's band are touched per frame, and the tiles are split into lanes
+(:mod:`marinesim.sea.synthesis`) that run on worker threads.
 """
 
 from __future__ import annotations
 
 import math
+import os
+from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass
 
 import numpy as np
@@ -28,11 +31,11 @@ import numpy as np
 from marinesim.errors import ParameterError, require_at_least, require_finite, require_positive
 from marinesim.sea.cascades import Tile, cell_variances, choose_tiles, regular_tile
 from marinesim.sea.dispersion import omega_from_k
-from marinesim.sea.fft import InverseFFT2
 from marinesim.sea.seastate import SeaState
+from marinesim.sea.synthesis import Lane
 
 FIELD_PAIRS = (("height", "displacement_xy"), ("displacement_x", "displacement_y"),
-               ("slope_x", "slope_y"), ("displacement_xx", "displacement_yy"))
+               ("slope_x", "slope_y"), ("1 + displacement_xx", "1 + displacement_yy"))
 """The real fields packed as (real, imaginary) parts of the four transforms per tile."""
 
 
@@ -104,7 +107,8 @@ class Ocean:
 
     ``tiles`` default to :func:`choose_tiles` (``tile_count`` cascades of ``resolution``^2).
     ``random_amplitudes=False`` gives deterministic amplitudes ``sqrt(2 E)`` with random
-    phases. ``choppiness`` scales the horizontal displacement (1 = Gerstner).
+    phases. ``choppiness`` scales the horizontal displacement (1 = Gerstner). ``threads``
+    (default: every CPU) synthesise the fields, one lane of tiles each.
     """
 
     def __init__(
@@ -129,17 +133,20 @@ class Ocean:
         if len(sizes) != 1:
             raise ParameterError(f"all tiles must share one resolution, got {sorted(sizes)}")
         self.resolution = sizes.pop()
-        n = self.resolution
         self._noise = np.stack([self._tile_noise(i, random_amplitudes) for i in range(len(self.tiles))])
         self._amplitude0, self.represented_m0 = self._amplitudes_for(sea)
         """Expected variance (m^2) the tiles carry of the initial sea: sum of cell variances."""
         self.m0_fraction = self.represented_m0 / sea.moment(0)
         """Fraction of the sea state's m0 that the tiles carry."""
         self._ramps: list[_Ramp] = []
-        self._fft = InverseFFT2((len(self.tiles), 4, n, n), fft_backend, threads)
-        self._jacobian = np.empty((len(self.tiles), n, n), dtype=np.float32)
-        self._scratch = np.empty_like(self._jacobian)
         self._choppiness = require_finite("choppiness", choppiness)
+        threads = threads or os.cpu_count() or 1
+        if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)) or threads < 1:
+            raise ParameterError(f"threads must be a positive integer, got {threads!r}")
+        self._fft_backend, self._threads = fft_backend, int(threads)
+        self._lane_count = min(self._threads, len(self.tiles))
+        workers = self._lane_count - 1
+        self._pool = ThreadPoolExecutor(workers, thread_name_prefix="ocean") if workers else None
         self._index_cells()
 
     # -- construction ---------------------------------------------------------------------
@@ -199,33 +206,47 @@ class Ocean:
             qx[on], qy[on] = gx[iy[on], ix[on]], gy[iy[on], ix[on]]
         self._qx, self._qy = qx, qy
         self._omega = omega_from_k(np.hypot(qx, qy), self.sea.depth, self.sea.g)
-        self._scatter = (tile * 4 * n * n + iy * n + ix)[None, :] + (np.arange(4) * n * n)[:, None]
-        self._set_multipliers()
+        self._multipliers = self._multipliers_for(qx, qy)
         self._fixed_amplitudes = None if self._ramps else self._half_amplitudes(self._amplitude0[self._cell])
-        self._phase = np.empty(self._half)
-        self._rotation = np.empty(self._half, dtype=np.complex64)
-        self._spectrum = np.empty(tile.size, dtype=np.complex64)
-        self._packed = np.empty((4, tile.size), dtype=np.complex64)
+        self._lanes = self._make_lanes(n)
 
-    def _set_multipliers(self) -> None:
+    def _make_lanes(self, n: int) -> list[tuple[Lane, slice, np.ndarray]]:
+        """One lane per worker thread over consecutive tiles.
+
+        With each lane: the slice of its representative cells and the indices of all its cells
+        (representatives, then mirrors) into the flat cell arrays.
+        """
+        tile, iy, ix = self._cell
+        h = self._half
+        groups = np.array_split(np.arange(len(self.tiles)), self._lane_count)
+        bounds = np.searchsorted(tile[:h], [g[0] for g in groups] + [len(self.tiles)])
+        lanes = []
+        for group, lo, hi in zip(groups, bounds[:-1], bounds[1:], strict=False):
+            cells = np.r_[lo:hi, h + lo:h + hi]
+            lane = Lane(int(group[0]), group.size, n, self._omega[lo:hi], self._multipliers[:, cells],
+                        tile[cells] - group[0], iy[cells] * n + ix[cells], self._fft_backend,
+                        max(1, self._threads // self._lane_count))
+            lanes.append((lane, slice(lo, hi), cells))
+        return lanes
+
+    def _multipliers_for(self, qx: np.ndarray, qy: np.ndarray) -> np.ndarray:
         """Complex multipliers turning C into the four packed spectra (see FIELD_PAIRS)."""
-        qx, qy, lam = self._qx, self._qy, self._choppiness
+        lam = self._choppiness
         q = np.hypot(qx, qy)
         q = np.where(q > 0, q, 1.0)
-        multipliers = np.stack([
+        return np.stack([
             1.0 - 1j * lam * qx * qy / q,
             1j * lam * qx / q - lam * qy / q,
             1j * qx - qy,
             -lam * qx**2 / q - 1j * lam * qy**2 / q,
-        ])
-        self._multipliers = multipliers.astype(np.complex64)
+        ]).astype(np.complex64)
 
     def _half_amplitudes(self, amplitude: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """``(a[-q] / 2, conj(a[q]) / 2)`` for the representative cells: the two halves of C[q]."""
+        """The cosine and sine parts of ``C[q] = (a[-q] e^{iwt} + conj(a[q]) e^{-iwt}) / 2`` for the
+        representative cells: ``(a[-q] + conj(a[q])) / 2`` and ``i (a[-q] - conj(a[q])) / 2``."""
         h = self._half
-        plus = 0.5 * amplitude[h:]
-        minus = 0.5 * np.conj(amplitude[:h])
-        return plus.astype(np.complex64), minus.astype(np.complex64)
+        plus, minus = 0.5 * amplitude[h:], 0.5 * np.conj(amplitude[:h])
+        return (plus + minus).astype(np.complex64), (1j * (plus - minus)).astype(np.complex64)
 
     # -- state over time ------------------------------------------------------------------
 
@@ -236,7 +257,9 @@ class Ocean:
     @choppiness.setter
     def choppiness(self, value: float) -> None:
         self._choppiness = require_finite("choppiness", value)
-        self._set_multipliers()
+        self._multipliers = self._multipliers_for(self._qx, self._qy)
+        for lane, _, cells in self._lanes:
+            lane.set_multipliers(self._multipliers[:, cells])
 
     def ramp_to(self, sea: SeaState, start: float, duration: float) -> None:
         """Change to ``sea`` smoothly over ``[start, start + duration]`` s (smoothstep in time).
@@ -264,36 +287,19 @@ class Ocean:
     # -- fields per frame -----------------------------------------------------------------
 
     def fields(self, t: float) -> list[TileFields]:
-        """All fields of every tile at time ``t`` (s): one batched FFT of 4 transforms per tile."""
+        """All fields of every tile at time ``t`` (s): 4 inverse FFTs per tile, the lanes in parallel."""
         if self._fixed_amplitudes is None:
-            plus, minus = self._half_amplitudes(self.amplitudes(t)[self._cell])
+            even, odd = self._half_amplitudes(self.amplitudes(t)[self._cell])
         else:
-            plus, minus = self._fixed_amplitudes
-        phase = np.multiply(self._omega[: self._half], t, out=self._phase)
-        phase -= np.floor(phase * (0.5 / math.pi)) * (2.0 * math.pi)  # keeps float32 trig exact
-        phase32 = phase.astype(np.float32)
-        rotation = self._rotation
-        np.cos(phase32, out=rotation.real)
-        np.sin(phase32, out=rotation.imag)
-        h, spectrum = self._half, self._spectrum
-        np.multiply(plus, rotation, out=spectrum[:h])
-        np.conjugate(rotation, out=rotation)
-        spectrum[:h] += minus * rotation
-        np.conjugate(spectrum[:h], out=spectrum[h:])  # C[-q] = conj(C[q])
-        np.multiply(self._multipliers, spectrum, out=self._packed)
-        self._fft.input.reshape(-1)[self._scatter] = self._packed
-        out = self._fft()
-        dxx, dyy, dxy = out[:, 3].real, out[:, 3].imag, out[:, 0].imag
-        jac, scratch = self._jacobian, self._scratch
-        np.add(dxx, 1.0, out=jac)
-        np.add(dyy, 1.0, out=scratch)
-        jac *= scratch
-        np.multiply(dxy, dxy, out=scratch)
-        jac -= scratch
+            even, odd = self._fixed_amplitudes
+        (first, rows, _), *others = self._lanes
+        waiting = [(lane, self._pool.submit(lane.run, t, even[r], odd[r])) for lane, r, _ in others]
+        results = [(first, first.run(t, even[rows], odd[rows]))]
+        results += [(lane, future.result()) for lane, future in waiting]
         return [
-            TileFields(tile, out[i, 0].real, out[i, 1].real, out[i, 1].imag,
-                       out[i, 2].real, out[i, 2].imag, jac[i])
-            for i, tile in enumerate(self.tiles)
+            TileFields(self.tiles[lane.first + i], out[i, 0].real, out[i, 1].real, out[i, 1].imag,
+                       out[i, 2].real, out[i, 2].imag, jacobian[i])
+            for lane, (out, jacobian) in results for i in range(lane.count)
         ]
 
     # -- components and direct summation --------------------------------------------------

@@ -1,0 +1,74 @@
+"""One lane of the ocean's per-frame synthesis: a run of tiles, their spectra, FFTs and Jacobians.
+
+The ocean splits its tiles into lanes, one per worker thread, so that one lane's element-wise
+work overlaps another's FFT (numpy and FFTW release the GIL). A lane owns its FFT buffers: the
+lanes never write the same memory, so the fields do not depend on the threads' timing.
+
+Packing per tile (see :data:`~marinesim.sea.ocean.FIELD_PAIRS`): transform 0 holds the height
+and ``dDx/dy``, transform 3 holds ``1 + dDx/dx`` and ``1 + dDy/dy``; the ones come from the
+constant ``1 + i`` in its DC cell, which no wave uses, so the Jacobian
+``J = (1 + dDx/dx)(1 + dDy/dy) - (dDx/dy)^2`` takes three passes over the outputs.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from marinesim.sea.fft import InverseFFT2
+
+
+class Lane:
+    """The tiles ``first .. first + count - 1``, synthesised by one thread.
+
+    ``representatives`` and ``mirrors`` index the ocean's flat cell arrays: the lane's cells
+    ``q`` (whose ``C`` it computes) and their mirrors ``-q`` (which get ``conj C``), in the same
+    order. ``offsets`` are each cell's flat index into one tile's ``N x N`` field and ``tile``
+    its tile index relative to ``first``.
+    """
+
+    def __init__(self, first: int, count: int, resolution: int, omega: np.ndarray,
+                 multipliers: np.ndarray, tile: np.ndarray, offsets: np.ndarray,
+                 fft_backend: str, threads: int) -> None:
+        n = resolution
+        self.first, self.count = first, count
+        self._omega = omega
+        self._multipliers = multipliers
+        self._scatter = ((tile * 4 * n * n + offsets)[None, :] + (np.arange(4) * n * n)[:, None]).ravel()
+        self._fft = InverseFFT2((count, 4, n, n), fft_backend, threads)
+        self._fft.input[:, 3, 0, 0] = 1.0 + 1.0j
+        self._jacobian = np.empty((count, n, n), dtype=np.float32)
+        self._scratch = np.empty_like(self._jacobian)
+        half = omega.size
+        self._phase = np.empty(half)
+        self._cos = np.empty(half, dtype=np.float32)
+        self._sin = np.empty(half, dtype=np.float32)
+        self._term = np.empty(half, dtype=np.complex64)
+        self._spectrum = np.empty(2 * half, dtype=np.complex64)
+        self._packed = np.empty((4, 2 * half), dtype=np.complex64)
+
+    def set_multipliers(self, multipliers: np.ndarray) -> None:
+        self._multipliers = multipliers
+
+    def run(self, t: float, even: np.ndarray, odd: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The FFT outputs ``(count, 4, N, N)`` and Jacobians ``(count, N, N)`` at ``t`` (s).
+
+        ``even`` and ``odd`` are ``(a[-q] + conj(a[q])) / 2`` and ``i (a[-q] - conj(a[q])) / 2`` of
+        the lane's cells, so that ``C[q] = even cos(wt) + odd sin(wt)``.
+        """
+        phase = np.multiply(self._omega, t, out=self._phase)
+        phase -= np.floor(phase * (0.5 / math.pi)) * (2.0 * math.pi)  # keeps float32 trig exact
+        phase32 = phase.astype(np.float32)
+        spectrum, h = self._spectrum, self._omega.size
+        np.multiply(even, np.cos(phase32, out=self._cos), out=spectrum[:h])
+        spectrum[:h] += np.multiply(odd, np.sin(phase32, out=self._sin), out=self._term)
+        np.conjugate(spectrum[:h], out=spectrum[h:])  # C[-q] = conj(C[q])
+        np.multiply(self._multipliers, spectrum, out=self._packed)
+        self._fft.input.reshape(-1)[self._scatter] = self._packed.reshape(-1)
+        out = self._fft()
+        jacobian, scratch = self._jacobian, self._scratch
+        np.multiply(out[:, 3].real, out[:, 3].imag, out=jacobian)
+        np.multiply(out[:, 0].imag, out[:, 0].imag, out=scratch)
+        jacobian -= scratch
+        return out, jacobian
