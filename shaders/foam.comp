@@ -1,17 +1,20 @@
 #version 430
-// Foam with persistence: where a cascade's surface folds (Jacobian below J_START) foam appears,
-// fully at J_FULL; elsewhere it decays as exp(-dt / tau). One texel per invocation.
+// Foam memory per cascade texel: the cascade's Jacobian, held at its lowest and relaxing back
+// to 1 as exp(-dt / tau), so a fold leaves foam that fades. The ocean's fragment shader
+// multiplies the cascades' held Jacobians (the Jacobian of the summed map, to leading order
+// when the scales separate) and turns the product into foam: a short cascade breaks where the
+// long waves compress it, so its foam does not repeat with its tile. The held value and its
+// square are stored, so that mip levels give the mean and the variance under a pixel's
+// footprint. One texel per invocation.
 layout(local_size_x = 16, local_size_y = 16) in;
-layout(r32f, binding = 0) uniform image2DArray u_foam;
+layout(rg32f, binding = 0) uniform image2DArray u_held;
 uniform sampler2DArray u_cascades;   // alpha: Jacobian
 uniform float u_decay;               // exp(-dt / tau)
-uniform float u_j_start;
-uniform float u_j_full;
 
 void main() {
     ivec3 at = ivec3(gl_GlobalInvocationID.xy, gl_WorkGroupID.z);
     float jacobian = texelFetch(u_cascades, at, 0).a;
-    float fresh = clamp((u_j_start - jacobian) / (u_j_start - u_j_full), 0.0, 1.0);
-    float old = imageLoad(u_foam, at).r * u_decay;
-    imageStore(u_foam, at, vec4(max(old, fresh)));
+    float relaxed = 1.0 - (1.0 - imageLoad(u_held, at).r) * u_decay;
+    float held = min(jacobian, relaxed);
+    imageStore(u_held, at, vec4(held, held * held, 0.0, 0.0));
 }

@@ -2,13 +2,14 @@
 // Water: normals from the cascades' slopes (mipmapped), Fresnel (Schlick, F0 = 0.02) between
 // the sky's reflection and a subsurface tint, the sun's glitter, foam from the Jacobian with
 // persistence (foam.comp) and along the wake, haze to the horizon. No water inside the hull.
+// Defines: TILES, TILE_LOD (log2 of the cascades' resolution), FOAM_J_START, FOAM_J_FULL.
 #include "sky.glsl"
 in vec2 v_xy;
 in vec3 v_position;
 in float v_spacing;
 
 uniform sampler2DArray u_slopes;   // per tile: d eta/dx, d eta/dy
-uniform sampler2DArray u_foam;     // per tile: foam coverage 0..1
+uniform sampler2DArray u_foam;     // per tile: Jacobian held with decay (foam.comp)
 uniform float u_tile_size[TILES];
 uniform vec3 u_eye;
 uniform sampler2D u_hull_mask;     // 1 inside the waterplane (vessel frame)
@@ -30,15 +31,30 @@ void main() {
         && texture(u_hull_mask, mask_uv).r > 0.5) discard;
 
     vec2 slope = vec2(0.0);
-    float clear = 1.0;  // probability of no foam from any cascade
+    // The surface's Jacobian is the product of the cascades' held ones, each over its tile mean
+    // (holding biases it low). Foam covers the part of the pixel's footprint where it is below
+    // FOAM_J_START: a Gaussian of the footprint's mean and variance (from the mip levels) seen
+    // through the linear breaking ramp, which widens the ramp by about one deviation.
+    float folded = 1.0;
+    float spread = 0.0;
     for (int i = 0; i < TILES; ++i) {
         vec3 uvw = vec3(v_xy / u_tile_size[i], float(i));
         slope += texture(u_slopes, uvw).xy;
-        clear *= 1.0 - texture(u_foam, uvw).r;
+        vec2 held = texture(u_foam, uvw).rg;          // mean of J and of J^2 under the footprint
+        vec2 whole = textureLod(u_foam, uvw, 16.0).rg;  // ... over the whole tile
+        // A footprint of more than 1/128 of its tile would show the tile's period: take the tile's
+        // own statistics there, so that only the longer cascades place the foam.
+        held = mix(held, whole, smoothstep(TILE_LOD - 7.0, TILE_LOD - 5.0, textureQueryLod(u_foam, uvw.xy).y));
+        float tile_mean = whole.x;
+        folded *= held.x / tile_mean;
+        spread += max(held.y - held.x * held.x, 0.0) / (tile_mean * tile_mean);
     }
     vec3 local = local_slope_foam(v_xy);
     slope += local.xy;
-    float foam = u_foam_on * clamp(1.0 - clear * (1.0 - local.z), 0.0, 1.0);
+    float deviation = sqrt(spread);
+    float breaking = clamp((FOAM_J_START + deviation - folded) / (FOAM_J_START - FOAM_J_FULL + 2.0 * deviation),
+                           0.0, 1.0);
+    float foam = u_foam_on * (1.0 - (1.0 - breaking) * (1.0 - local.z));
 
     vec3 to_eye = u_eye - v_position;
     float distance_m = length(to_eye);

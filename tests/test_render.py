@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -61,6 +62,14 @@ def horizon_row(view: Offscreen) -> float:
     return float(eye.project(far[None, :], view.size)[0, 1])
 
 
+def projected_box(view: Offscreen, mesh) -> tuple[float, float, float, float]:
+    """Pixel columns and rows (x0, y0, x1, y1) spanned by ``mesh``'s body-frame bounding box in the current pose."""
+    session = view.session
+    pose = session.sim.pose()
+    projected = session.camera.eye(pose).project(pose.world(mesh.bounds()), view.size)[:, :2]
+    return (*projected.min(axis=0), *projected.max(axis=0))
+
+
 def luminance(image: np.ndarray) -> np.ndarray:
     return image.astype(float) @ [0.2126, 0.7152, 0.0722]
 
@@ -95,11 +104,7 @@ def test_sky_above_the_horizon_water_below_and_the_vessel_where_its_pose_puts_it
         assert water[..., 2].mean() > water[..., 0].mean() + 20.0, "water should be bluer than it is red"
         assert sky[..., 2].mean() > sky[..., 0].mean(), "the sky should be bluer than it is red"
 
-        session = view.session
-        pose = session.sim.pose()
-        corners = pose.world(session.renderer.mesh.bounds())
-        projected = session.camera.eye(pose).project(corners, view.size)
-        (x0, y0), (x1, y1) = projected[:, :2].min(axis=0), projected[:, :2].max(axis=0)
+        x0, y0, x1, y1 = projected_box(view, view.session.renderer.mesh)
         changed = np.abs(image.astype(int) - without.astype(int)).max(axis=-1) > 25
         rows, cols = np.nonzero(changed)
         inside = (cols >= x0 - 1) & (cols <= x1 + 1) & (rows >= y0 - 1) & (rows <= y1 + 1)
@@ -245,3 +250,58 @@ def test_render_command_refuses_bad_sizes_and_writes_a_screenshot(tmp_path, caps
 
     assert code == 0
     assert Image.open(tmp_path / "shot.png").size == (160, 90)
+
+
+@pytest.fixture(scope="module")
+def barge(tmp_path_factory):
+    """The default sea with the box barge as the hull (no bridge point, so no deckhouse of its own): plain,
+    with hulls/barge_visual.glb (deckhouse and mast, in cm, y up) as its visual mesh, and that mesh alone."""
+    text = (DEFAULT.read_text().replace("tanker.gdf", "box_barge.stl").replace("bridge = [-105.0, 0.0, 32.0]\n", "")
+            .replace('"../', f'"{ROOT.as_posix()}/'))
+    visual = text.replace("[vessel]\n", f'[vessel]\nvisual_mesh = "{ROOT.as_posix()}/hulls/barge_visual.glb"\n'
+                          'visual_mesh_units = "cm"\nvisual_mesh_axes = "x,-z,y"\n'
+                          'visual_mesh_offset_m = [-50.0, 0.0, -5.0]\n')
+    folder = tmp_path_factory.mktemp("barge")
+    (folder / "plain.toml").write_text(text)
+    (folder / "visual.toml").write_text(visual)
+    (folder / "visual_only.toml").write_text(re.sub(r"hull = .*\n", "", visual))
+    return tuple(load_scenario(folder / f"{name}.toml") for name in ("plain", "visual", "visual_only"))
+
+
+def test_the_visual_mesh_is_drawn_in_its_pose_instead_of_the_hull(barge):
+    """With a visual mesh, the vessel on screen is the model with its deckhouse, not the bare barge: the
+    picture changes, every changed pixel lies inside the visual mesh's bounding box carried by the 6-DOF pose,
+    the vessel hides more of the sea (the deckhouse stands 12 m above the deck), and the water still stops at
+    the hydrodynamic hull."""
+    plain, visual, _ = barge
+    with offscreen(plain) as hull_view, offscreen(visual) as view, offscreen(visual, vessel=False) as bare:
+        for v in (hull_view, view, bare):
+            v.go_to(30.0)
+        image, hull_image, without = (v.frame(hud=False).astype(int) for v in (view, hull_view, bare))
+        renderer = view.session.renderer
+        assert renderer.mesh.positions[:, 2].max() == pytest.approx(25.0, abs=1e-4), "not the visual mesh drawn"
+        assert renderer._mask is not None, "the hull mask (no water inside the waterplane) comes from the hull"
+        x0, y0, x1, y1 = projected_box(view, renderer.mesh)
+    for changed in (np.abs(image - hull_image).max(axis=-1) > 25, np.abs(image - without).max(axis=-1) > 25):
+        rows, cols = np.nonzero(changed)
+        inside = (cols >= x0 - 1) & (cols <= x1 + 1) & (rows >= y0 - 1) & (rows <= y1 + 1)
+        assert changed.sum() > 100, "the visual mesh changed almost no pixels"
+        assert inside.mean() > 0.99, "vessel pixels outside the visual mesh's projected box: pose or offset wrong"
+    covered, covered_by_hull = ((np.abs(i - without).max(axis=-1) > 25).sum() for i in (image, hull_image))
+    assert covered > 1.3 * covered_by_hull, "the deckhouse hides no more sea than the bare barge: not drawn"
+
+
+def test_a_visual_mesh_without_a_hull_is_drawn_and_the_sea_runs_under_it(barge):
+    """A visual mesh alone is drawn in its pose (no hull: no wake, no solver, no hull mask), inside its box."""
+    *_, visual_only = barge
+    assert visual_only.vessel.hull is None
+    with offscreen(visual_only) as view, offscreen(visual_only, vessel=False) as bare:
+        for v in (view, bare):
+            v.go_to(30.0)
+        changed = np.abs(view.frame(hud=False).astype(int) - bare.frame(hud=False).astype(int)).max(axis=-1) > 25
+        renderer = view.session.renderer
+        assert renderer._mask is None and renderer.solver is None and not view.session.sim.wakes()
+        x0, y0, x1, y1 = projected_box(view, renderer.mesh)
+    rows, cols = np.nonzero(changed)
+    assert changed.sum() > 100, "the visual mesh covers almost no pixels"
+    assert np.mean((cols >= x0 - 1) & (cols <= x1 + 1) & (rows >= y0 - 1) & (rows <= y1 + 1)) > 0.99

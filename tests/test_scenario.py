@@ -2,6 +2,7 @@
 
 import json
 import math
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -10,7 +11,8 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from marinesim.errors import ScenarioError
+from marinesim.errors import MarinesimError, ScenarioError
+from marinesim.hull import load_hull
 from marinesim.scenario import load_scenario
 from marinesim.scenario.export import VARIANCE_FRACTION, build_ocean
 
@@ -130,3 +132,74 @@ def test_run_with_bad_scenario_exits_2_with_one_line(tmp_path):
     assert not (tmp_path / "out").exists()  # refused before anything ran
     missing = run_cli(str(tmp_path / "nope.toml"), cwd=tmp_path)
     assert missing.returncode == 2 and "no such scenario" in missing.stderr
+
+
+BARGE_VISUAL = ROOT / "hulls" / "barge_visual.glb"
+
+
+def with_visual(tmp_path: Path, lines: str) -> Path:
+    """GOOD with the tanker's RAOs and a [vessel] section ending in ``lines``; mesh paths relative to the file."""
+    rao = ROOT / "rao" / "tanker" / "tanker.4"
+    return write(tmp_path, GOOD + f'\n[vessel]\nrao = "{rao.as_posix()}"\n{lines}\n')
+
+
+def relative(tmp_path: Path, path: Path) -> str:
+    return Path(os.path.relpath(path, tmp_path)).as_posix()
+
+
+def test_visual_mesh_in_centimetres_y_up_lands_in_the_body_frame(tmp_path):
+    """hulls/barge_visual.glb holds 10000 x 3000 cm with y up and its origin at the keel at the stern; with
+    units cm, axes x,-z,y and the offset it is the 100 m barge, keel at z = -5 m, beam along y, and the mast
+    top 25 m above the waterline at x = -38 m (aft: the bow is at +x), while the hull stays the box barge."""
+    path = with_visual(tmp_path, f'hull = "{relative(tmp_path, ROOT / "hulls" / "box_barge.stl")}"\n'
+                                 f'visual_mesh = "{relative(tmp_path, BARGE_VISUAL)}"\n'
+                                 'visual_mesh_units = "cm"\nvisual_mesh_axes = "x,-z,y"\n'
+                                 'visual_mesh_offset_m = [-50.0, 0.0, -5.0]')
+    vessel = load_scenario(path).vessel
+    visual = vessel.visual
+    assert visual.source == str(BARGE_VISUAL)
+    assert np.allclose(visual.vertices.min(axis=0), [-50.0, -10.0, -5.0], atol=1e-4)
+    assert np.allclose(visual.vertices.max(axis=0), [50.0, 10.0, 25.0], atol=1e-4)
+    top = visual.vertices[visual.vertices[:, 2] > 25.0 - 1e-4]
+    assert np.allclose(top[:, 0].mean(), -38.0, atol=1e-4) and np.allclose(top[:, 1].mean(), 0.0, atol=1e-4)
+    # the file's own colours: anti-fouling red on every face reaching below the waterline, none above it
+    red = np.all(np.abs(visual.colours - np.array([115, 23, 18]) / 255.0) < 1e-3, axis=(1, 2))
+    z = visual.vertices[visual.faces][:, :, 2]
+    assert red[z.min(axis=1) < -1e-6].all() and not red[z.max(axis=1) > 1e-6].any()
+    assert vessel.hull.overall_length_m == pytest.approx(100.0) and vessel.hull_path.name == "box_barge.stl"
+
+
+def test_an_open_superstructure_alone_is_a_visual_mesh_without_a_hull(tmp_path):
+    """A visual mesh may be open and lie wholly above the waterline (a superstructure model): it loads
+    (no hull, so no wake or solver), though as a hull it would be refused, and it keeps no colours."""
+    wall = tmp_path / "house.obj"
+    wall.write_text("v -15 0 5\nv 15 0 5\nv 15 0 15\nv -15 0 15\nf 1 2 3\nf 1 3 4\n")
+    vessel = load_scenario(with_visual(tmp_path, 'visual_mesh = "house.obj"')).vessel
+    assert vessel.hull is None and vessel.visual.colours is None
+    assert vessel.visual.vertices[:, 2].min() == pytest.approx(5.0)
+    with pytest.raises(MarinesimError, match="nothing below the waterline"):
+        load_hull(wall)
+
+
+@pytest.mark.parametrize("lines, message", [
+    ('visual_mesh = "nothere.glb"', r"vessel.visual_mesh: .*nothere.glb: no such file"),
+    ('visual_mesh = "model.fbx"', r"vessel.visual_mesh: .*model.fbx: unknown visual mesh format '.fbx'"),
+    ('visual_mesh = "empty.obj"', r"vessel.visual_mesh: .*empty.obj: the mesh has no faces"),
+    ('visual_mesh = "nan.obj"', r"vessel.visual_mesh: .*nan.obj: vertex 1 is not finite"),
+    ('visual_mesh = "BARGE"', r"vessel.visual_mesh: .*barge_visual.glb: a visual mesh 1e\+04 m long \(x\) is not a "
+                              r"vessel .*units='cm' gives 100 m"),
+    ('visual_mesh = "BARGE"\nvisual_mesh_units = "cm"\nvisual_mesh_axes = "x,x,z"', r"vessel.visual_mesh: axes"),
+    ('visual_mesh = "BARGE"\nvisual_mesh_units = "cm"\nvisual_mesh_offset_m = [1.0, 2.0]',
+     r"vessel.visual_mesh: offset must be \[x, y, z\]"),
+    ('visual_mesh = "BARGE"\nvisual_mesh_units = "cm"\nvisual_mesh_scale = 0.0',
+     r"vessel.visual_mesh: scale must be > 0"),
+    ('visual_mesh_units = "cm"', r"vessel.visual_mesh_units: given without vessel.visual_mesh"),
+    ('visual_mesh_offset_m = "up"', r"vessel.visual_mesh_offset_m: expected list"),
+])
+def test_bad_visual_meshes_are_refused_naming_the_key_and_file(tmp_path, lines, message):
+    (tmp_path / "model.fbx").write_text("not a mesh")
+    (tmp_path / "empty.obj").write_text("# no faces\nv 0 0 0\n")
+    (tmp_path / "nan.obj").write_text("v 0 0 0\nv 30 0 nan\nv 0 1 0\nf 1 2 3\n")
+    path = with_visual(tmp_path, lines.replace("BARGE", relative(tmp_path, BARGE_VISUAL)))
+    with pytest.raises(ScenarioError, match=message):
+        load_scenario(path)

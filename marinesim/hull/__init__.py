@@ -1,9 +1,10 @@
-"""Hull meshes in the body frame, their wetted surface and hydrostatics, and parametric hulls."""
+"""Hull meshes in the body frame, their wetted surface and hydrostatics, parametric hulls, visual meshes."""
 
 from marinesim.hull.hydrostatics import Hydrostatics, format_hydrostatics, hydrostatics
 from marinesim.hull.mesh import Hull, load_hull, make_hull
 from marinesim.hull.shapes import box_hull, wigley_half_breadth, wigley_hull
+from marinesim.hull.visual import VisualMesh, load_visual_mesh
 from marinesim.hull.wetted import Surface
 
-__all__ = ["Hull", "Hydrostatics", "Surface", "box_hull", "format_hydrostatics", "hydrostatics", "load_hull",
-           "make_hull", "wigley_half_breadth", "wigley_hull"]
+__all__ = ["Hull", "Hydrostatics", "Surface", "VisualMesh", "box_hull", "format_hydrostatics", "hydrostatics",
+           "load_hull", "load_visual_mesh", "make_hull", "wigley_half_breadth", "wigley_hull"]

@@ -6,7 +6,8 @@ no units and often another axis convention, so :func:`load_hull` takes them as o
 refuses what cannot be a vessel: an empty or non-finite mesh, nothing below the waterline, a
 length no ship has (millimetres read as metres), a hull open below the waterline. What it can
 repair (winding that disagrees between faces, normals pointing inwards) it repairs and says so
-in ``notes``.
+in ``notes``. Reading a mesh file and placing it in the body frame (:func:`mesh_file`,
+:func:`read_mesh`, :func:`to_body_frame`) are shared with the visual meshes of :mod:`marinesim.hull.visual`.
 """
 
 from __future__ import annotations
@@ -65,27 +66,13 @@ def load_hull(path: str | Path, *, units: str = "m", scale: float = 1.0, axes: s
     (default: the mesh's own z = 0 is the waterline); ``trim_deg`` then rotates the hull about
     the y axis through the origin, bow down positive.
     """
-    path = Path(path)
-    if not path.is_file():
-        raise FileFormatError(path, None, "no such file")
+    path = mesh_file(path, (".gdf", *MESH_EXTENSIONS), "hull")
     if path.suffix.lower() == ".gdf":
         _, vertices, faces = read_gdf(path)
-    elif path.suffix.lower() in MESH_EXTENSIONS:
-        vertices, faces = _read_mesh(path)
     else:
-        raise FileFormatError(path, None, f"unknown hull format {path.suffix!r} (supported: .gdf, "
-                              + ", ".join(MESH_EXTENSIONS) + ")")
-    if len(faces) == 0:
-        raise FileFormatError(path, None, "the mesh has no faces")
-    if not np.isfinite(vertices).all():
-        bad = int(np.flatnonzero(~np.isfinite(vertices).all(axis=1))[0])
-        raise FileFormatError(path, None, f"vertex {bad} is not finite: {vertices[bad].tolist()}")
-    factor = UNITS.get(units)
-    if factor is None:
-        raise ParameterError(f"units must be one of {', '.join(UNITS)}, got {units!r}")
-    factor *= require_positive("scale", scale)
-    vertices, faces = _remap_axes(vertices * factor, faces, axes)
-    _check_length(vertices, str(path), factor)
+        mesh = read_mesh(path)
+        vertices, faces = np.asarray(mesh.vertices, float), np.asarray(mesh.faces, np.int64)
+    vertices, faces = to_body_frame(vertices, faces, path, units=units, scale=scale, axes=axes, what="hull")
     if draft is not None:
         draft = require_positive("draft", draft)
         vertices = vertices - [0.0, 0.0, vertices[:, 2].min() + draft]
@@ -125,14 +112,49 @@ def make_hull(vertices: np.ndarray, faces: np.ndarray, source: str, notes: tuple
     return Hull(np.array(mesh.vertices), np.array(mesh.faces), source, tuple(notes))
 
 
-def _read_mesh(path: Path) -> tuple[np.ndarray, np.ndarray]:
+def mesh_file(path: str | Path, formats: tuple[str, ...], what: str) -> Path:
+    """``path`` as a :class:`Path`; :class:`FileFormatError` if there is no such file or its extension is not
+    one of ``formats`` (``what`` names the kind of mesh in the message)."""
+    path = Path(path)
+    if not path.is_file():
+        raise FileFormatError(path, None, "no such file")
+    if path.suffix.lower() not in formats:
+        raise FileFormatError(path, None, f"unknown {what} format {path.suffix!r} (supported: {', '.join(formats)})")
+    return path
+
+
+def read_mesh(path: Path) -> trimesh.Trimesh:
+    """The triangles of a trimesh-readable file (:data:`MESH_EXTENSIONS`) as one mesh, in the file's own
+    numbers and axes, with its colours or materials (``visual``); scene transforms applied, nothing merged."""
     try:
         mesh = trimesh.load(path, force="mesh", process=False)
     except Exception as error:  # trimesh raises many types for unreadable files
         raise FileFormatError(path, None, f"cannot read the mesh: {error}") from None
     if not isinstance(mesh, trimesh.Trimesh):
         raise FileFormatError(path, None, "the file holds no triangle mesh")
-    return np.asarray(mesh.vertices, float), np.asarray(mesh.faces, np.int64)
+    return mesh
+
+
+def to_body_frame(vertices: np.ndarray, faces: np.ndarray, path: str | Path, *, units: str = "m",
+                  scale: float = 1.0, axes: str = "x,y,z", what: str) -> tuple[np.ndarray, np.ndarray]:
+    """A mesh's vertices in metres in the body frame and its faces (reversed if ``axes`` mirror, so that
+    they keep their outward side); ``units``, ``scale`` and ``axes`` as in :func:`load_hull`.
+
+    Refuses a mesh with no faces or a non-finite vertex (:class:`FileFormatError` naming ``path``) and a
+    length along body x that no vessel has (:class:`ParameterError` naming the units that would fit).
+    """
+    if len(faces) == 0:
+        raise FileFormatError(path, None, "the mesh has no faces")
+    if not np.isfinite(vertices).all():
+        bad = int(np.flatnonzero(~np.isfinite(vertices).all(axis=1))[0])
+        raise FileFormatError(path, None, f"vertex {bad} is not finite: {vertices[bad].tolist()}")
+    factor = UNITS.get(units)
+    if factor is None:
+        raise ParameterError(f"units must be one of {', '.join(UNITS)}, got {units!r}")
+    factor *= require_positive("scale", scale)
+    vertices, faces = _remap_axes(vertices * factor, faces, axes)
+    _check_length(vertices, str(path), factor, what)
+    return vertices, faces
 
 
 def _remap_axes(vertices: np.ndarray, faces: np.ndarray, axes: str) -> tuple[np.ndarray, np.ndarray]:
@@ -149,10 +171,10 @@ def _remap_axes(vertices: np.ndarray, faces: np.ndarray, axes: str) -> tuple[np.
     return vertices @ matrix.T, faces
 
 
-def _check_length(vertices: np.ndarray, source: str, factor: float) -> None:
+def _check_length(vertices: np.ndarray, source: str, factor: float, what: str) -> None:
     """Refuse lengths no vessel has, naming the units (or axes) that would give a plausible one.
 
-    ``factor`` converted the mesh's numbers to metres (units x scale).
+    ``factor`` converted the mesh's numbers to metres (units x scale); ``what`` names the mesh (hull, visual mesh).
     """
     extent = np.ptp(vertices, axis=0)
     length = float(extent[0])
@@ -164,7 +186,7 @@ def _check_length(vertices: np.ndarray, source: str, factor: float) -> None:
     longest = int(np.argmax(extent))
     if longest != 0 and low <= extent[longest] <= high:
         hints.append(f"the longest side is along body {'xyz'[longest]}: the axes option maps it to x")
-    raise ParameterError(f"{source}: a hull {length:.4g} m long (x) is not a vessel (expected {low:g}..{high:g} m)"
+    raise ParameterError(f"{source}: a {what} {length:.4g} m long (x) is not a vessel (expected {low:g}..{high:g} m)"
                          + ("; " + "; ".join(hints) if hints else ""))
 
 

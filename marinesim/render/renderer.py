@@ -9,7 +9,7 @@ solver stepped) and :meth:`Renderer.draw` draws a camera's view into the bound f
    the cascades (mip level from its spacing), the Kelvin wake (vessel frame) and the solver's
    field (Earth-fixed grid); shaded with Fresnel, sky reflection, subsurface tint, glitter, foam
    and haze (``shaders/ocean.*``, ``surface.glsl``, ``sky.glsl``); no water inside the hull;
-3. the vessel mesh in its 6-DOF pose.
+3. the vessel mesh (the scenario's visual mesh, else one made from the hull) in its 6-DOF pose.
 
 Everything is in the Earth frame (m); the shaders state their inputs' units.
 """
@@ -28,7 +28,7 @@ from marinesim.angles import compass_to_math
 from marinesim.gl import GraphicsError, is_software, shader_source
 from marinesim.render.camera import Eye
 from marinesim.render.simulation import Simulation
-from marinesim.render.vessel_mesh import vessel_mesh, waterline
+from marinesim.render.vessel_mesh import VesselMesh, vessel_mesh, visual_mesh, waterline
 from marinesim.solver.gpu import GpuSolver
 from marinesim.solver.local import SolverConfig
 from marinesim.wake.compute import Wake
@@ -38,8 +38,8 @@ RING_SEGMENTS = 192
 INNER_SPACING_M = 0.5
 FOAM_TAU_S = 4.0
 """Foam decays as exp(-t / tau) once the surface stops folding."""
-FOAM_J_START, FOAM_J_FULL = 0.80, 0.50
-"""Jacobian of a cascade where foam starts and where it covers the surface fully."""
+FOAM_J_START, FOAM_J_FULL = 0.90, 0.60
+"""Jacobian of the surface where foam starts and where it covers the surface fully."""
 BREAKING_SLOPE = 0.3
 """Steepest wake slope drawn (a Stokes wave breaks at a slope of about 0.45; groups break earlier)."""
 WAKE_SLOPE_FOAM = (0.2, 0.3)
@@ -85,7 +85,8 @@ class Renderer:
         self.times = FrameTimes(0.0, 0.0)
         tiles = sim.ocean.tiles
         self._tile_count, n = len(tiles), sim.ocean.resolution
-        defines = {"TILES": self._tile_count}
+        defines = {"TILES": self._tile_count, "TILE_LOD": f"{math.log2(n):.1f}", "FOAM_J_START": FOAM_J_START,
+                   "FOAM_J_FULL": FOAM_J_FULL}
 
         def program(name: str) -> moderngl.Program:
             return ctx.program(vertex_shader=shader_source(f"{name}.vert", **defines),
@@ -98,8 +99,8 @@ class Renderer:
 
         self._cascades = self._texture_array(n, 4)
         self._slopes = self._texture_array(n, 2)
-        self._foam = self._texture_array(n, 1)
-        self._foam.write(np.zeros((self._tile_count, n, n), np.float32).tobytes())
+        self._foam = self._texture_array(n, 2)  # held Jacobian and its square (foam.comp)
+        self._foam.write(np.ones((self._tile_count, n, n, 2), np.float32).tobytes())  # nothing folded yet
         self._packed = np.empty((self._tile_count, n, n, 4), np.float32)
         self._packed_slopes = np.empty((self._tile_count, n, n, 2), np.float32)
 
@@ -107,20 +108,20 @@ class Renderer:
         grid, indices = ring_grid(OCEAN_RADIUS_M, RING_SEGMENTS, INNER_SPACING_M)
         self._grid_vbo, self._grid_ibo = ctx.buffer(grid.tobytes()), ctx.buffer(indices.tobytes())
         self._ocean_vao = ctx.vertex_array(self._ocean, [(self._grid_vbo, "3f", "in_grid")], self._grid_ibo)
-        self._set(self._ocean, "u_tile_size", [t.size for t in tiles])
-        self._set(self._ocean, "u_tile_spacing", [t.spacing for t in tiles])
+        # as bytes: moderngl takes a one-element array uniform only as a scalar
+        self._set(self._ocean, "u_tile_size", np.array([t.size for t in tiles], np.float32).tobytes())
+        self._set(self._ocean, "u_tile_spacing", np.array([t.spacing for t in tiles], np.float32).tobytes())
 
         self._wake_textures: dict[int, tuple[moderngl.Texture, tuple[float, float, float, float]]] = {}
         self._blank = ctx.texture((1, 1), 4, np.zeros(4, np.float32).tobytes(), dtype="f4")
         hull = sim.vessel.hull if sim.vessel is not None else None
         self._vessel_vao = self._mask = None
-        self.mesh = None
-        if hull is not None:
-            points = sim.vessel.points
-            self.mesh = vessel_mesh(hull, house_at=points.get("bridge"))
+        self.mesh = drawn_mesh(sim)
+        if self.mesh is not None:
             self._vessel_vbo = ctx.buffer(self.mesh.vertex_data().tobytes())
             self._vessel_vao = ctx.vertex_array(self._vessel_program, [
                 (self._vessel_vbo, "3f 3f 3f", "in_position", "in_normal", "in_colour")])
+        if hull is not None:
             self._mask, self._mask_rect = self._hull_mask(hull)
         self.solver: GpuSolver | None = None
         if options.solver and hull is not None:
@@ -197,8 +198,6 @@ class Renderer:
         shader = self._foam_pass
         self._set(shader, "u_cascades", 0)
         self._set(shader, "u_decay", math.exp(-dt / FOAM_TAU_S))
-        self._set(shader, "u_j_start", FOAM_J_START)
-        self._set(shader, "u_j_full", FOAM_J_FULL)
         shader.run(n // 16, n // 16, self._tile_count)
         self.ctx.memory_barrier()
         self._foam.build_mipmaps()
@@ -299,7 +298,19 @@ class Renderer:
         if self._vessel_vao is not None:
             self._vessel_vao.release()
             self._vessel_vbo.release()
+        if self._mask is not None:
             self._mask.release()
+
+
+def drawn_mesh(sim: Simulation) -> VesselMesh | None:
+    """The vessel as drawn (body frame, m): the scenario's visual mesh, else the hull with topsides and a
+    deckhouse around the bridge point; None without either."""
+    vessel = sim.vessel
+    if vessel is not None and vessel.visual is not None:
+        return visual_mesh(vessel.visual)
+    if vessel is not None and vessel.hull is not None:
+        return vessel_mesh(vessel.hull, house_at=vessel.points.get("bridge"))
+    return None
 
 
 def ring_grid(radius_m: float, segments: int, inner_spacing_m: float) -> tuple[np.ndarray, np.ndarray]:

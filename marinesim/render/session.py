@@ -45,7 +45,8 @@ class Session:
         self.renderer = Renderer(ctx, self.sim, options)
         self.hud = Hud(ctx)
         vessel = scenario.vessel
-        length = float(np.ptp(vessel.hull.vertices[:, 0])) if vessel is not None and vessel.hull is not None else 100.0
+        mesh = self.renderer.mesh  # the vessel as drawn frames the orbit camera
+        length = float(np.ptp(mesh.positions[:, 0])) if mesh is not None else 100.0
         bridge = vessel.points.get("bridge", (0.0, 0.0, 10.0)) if vessel is not None else (0.0, 0.0, 10.0)
         self.cameras = {"orbit": OrbitCamera(distance_m=2.2 * length), "bridge": BridgeCamera(tuple(bridge)),
                         "free": FreeCamera()}

@@ -5,6 +5,7 @@ topsides: its waterline outline extruded up by the freeboard and closed with a d
 board above the deck (the bridge) gets a deckhouse around it. Colours: anti-fouling red below the
 waterline, dark topsides, a deck, a white deckhouse. Faces are wound counter-clockwise seen from
 outside, so back-face culling hides the deckhouse from an eye inside it (the bridge camera).
+A scenario's visual mesh is drawn instead when it has one, in its own colours or these.
 """
 
 from __future__ import annotations
@@ -13,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from marinesim.hull import Hull
+from marinesim.hull import Hull, VisualMesh
 
 BOTTOM = (0.45, 0.09, 0.07)
 TOPSIDES = (0.10, 0.12, 0.16)
@@ -56,14 +57,40 @@ def vessel_mesh(hull: Hull, freeboard_m: float | None = None, house_at: tuple[fl
     if house_at is not None and house_at[2] > deck_z + 1.0:
         triangles.append(_house(v, house_at, deck_z))
     corners = np.concatenate(triangles)
+    normals = _face_normals(corners)
+    colours = _hull_colours(corners, normals)
+    if house_at is not None and house_at[2] > deck_z + 1.0:
+        colours[-12:] = HOUSE
+    return _flat(corners, normals, colours)
+
+
+def visual_mesh(mesh: VisualMesh) -> VesselMesh:
+    """The drawable vessel for a scenario's visual mesh (body frame, m): flat-shaded, in the mesh's own
+    colours, or coloured like a hull (bottom, topsides, deck) when the file has none."""
+    corners = np.asarray(mesh.vertices, float)[mesh.faces]
+    normals = _face_normals(corners)
+    colours = mesh.colours if mesh.colours is not None else _hull_colours(corners, normals)
+    return _flat(corners, normals, colours)
+
+
+def _face_normals(corners: np.ndarray) -> np.ndarray:
+    """Unit normals (t, 3) of triangles (t, 3, 3) wound counter-clockwise seen from outside."""
     normals = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
-    normals /= np.maximum(np.linalg.norm(normals, axis=1, keepdims=True), 1e-12)
+    return normals / np.maximum(np.linalg.norm(normals, axis=1, keepdims=True), 1e-12)
+
+
+def _hull_colours(corners: np.ndarray, normals: np.ndarray) -> np.ndarray:
+    """RGB per corner (t, 3, 3) of triangles (t, 3, 3): bottom below the waterline (z = 0), topsides above
+    it, deck where they face up."""
     centre_z = corners[:, :, 2].mean(axis=1)
     colours = np.where((centre_z < 0.0)[:, None], BOTTOM, TOPSIDES)
     colours[(normals[:, 2] > 0.7) & (centre_z > 0.0)] = DECK
-    if house_at is not None and house_at[2] > deck_z + 1.0:
-        colours[-12:] = HOUSE
-    return VesselMesh(corners.reshape(-1, 3), np.repeat(normals, 3, axis=0), np.repeat(colours, 3, axis=0))
+    return np.repeat(colours[:, None, :], 3, axis=1)
+
+
+def _flat(corners: np.ndarray, normals: np.ndarray, colours: np.ndarray) -> VesselMesh:
+    """Unindexed flat-shaded triangles from corners (t, 3, 3), face normals (t, 3), corner colours (t, 3, 3)."""
+    return VesselMesh(corners.reshape(-1, 3), np.repeat(normals, 3, axis=0), colours.reshape(-1, 3))
 
 
 def waterline(hull: Hull) -> np.ndarray:

@@ -26,6 +26,11 @@ hull_axes = "x,y,z"          # optional: mesh axes that become body x, y, z (e.g
 hull_draft_m = 10.0          # optional: lowest point of the hull at z = -draft (default: mesh z = 0)
 hull_trim_deg = 0.0          # optional: trim, bow down positive
 wake_speeds_kn = [8.0, 12.0] # optional: more speeds to precompute the Kelvin wake for
+visual_mesh = "../hulls/barge_visual.glb"  # optional: drawn instead of the hull (may be open, above water)
+visual_mesh_units = "cm"     # optional: as hull_units, hull_scale, hull_axes, for the visual mesh
+visual_mesh_scale = 1.0
+visual_mesh_axes = "x,-z,y"
+visual_mesh_offset_m = [-50.0, 0.0, -5.0]  # optional: the mesh's origin in the body frame, m (after units, axes)
 speed_kn = 0.0               # 0..40 kn, within the RAO table's speeds if it has several
 heading_deg = 0.0            # compass, where the bow points
 ulen_m = 1.0                 # optional: WAMIT length scale (default: from the .gdf beside)
@@ -45,13 +50,14 @@ from __future__ import annotations
 
 import math
 import tomllib
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from marinesim.constants import KNOT
 from marinesim.errors import MarinesimError, ScenarioError, require_finite
-from marinesim.hull import Hull, load_hull
+from marinesim.hull import Hull, VisualMesh, load_hull, load_visual_mesh
 from marinesim.sea.build import wave_system
 from marinesim.sea.cascades import check_resolution, check_tile_count
 from marinesim.sea.seastate import SeaState
@@ -68,9 +74,13 @@ RUN_KEYS: dict[str, type] = {"duration_s": float, "dt_s": float, "seed": int}
 VESSEL_KEYS: dict[str, type] = {"rao": str, "hull": str, "speed_kn": float, "heading_deg": float,
                                 "ulen_m": float, "roll_damping_pct": float, "points": dict, "hull_units": str,
                                 "hull_scale": float, "hull_axes": str, "hull_draft_m": float,
-                                "hull_trim_deg": float, "wake_speeds_kn": list}
+                                "hull_trim_deg": float, "wake_speeds_kn": list, "visual_mesh": str,
+                                "visual_mesh_units": str, "visual_mesh_scale": float, "visual_mesh_axes": str,
+                                "visual_mesh_offset_m": list}
 HULL_OPTIONS = {"hull_units": "units", "hull_scale": "scale", "hull_axes": "axes", "hull_draft_m": "draft",
                 "hull_trim_deg": "trim_deg"}  # scenario key -> load_hull option
+VISUAL_MESH_OPTIONS = {"visual_mesh_units": "units", "visual_mesh_scale": "scale", "visual_mesh_axes": "axes",
+                       "visual_mesh_offset_m": "offset"}  # scenario key -> load_visual_mesh option
 SECTIONS = ("ocean", "sea", "vessel", "run")
 MAX_SPEED_KN = 40.0
 MAX_DURATION_S = 7 * 24 * 3600.0
@@ -92,7 +102,7 @@ class RunOptions:
 
 @dataclass(frozen=True)
 class Vessel:
-    """The vessel of a scenario: its RAO table (read and checked), hull file, course and points."""
+    """The vessel of a scenario: its RAO table (read and checked), hull file, course, points, visual mesh."""
 
     rao_path: Path
     rao: RaoTable
@@ -102,6 +112,7 @@ class Vessel:
     heading_deg: float                      # compass, where the bow points
     points: dict[str, tuple[float, float, float]]
     wake_speeds_m_s: tuple[float, ...] = ()  # the vessel's speed (if > 0) and the extra wake speeds
+    visual: VisualMesh | None = None        # drawn instead of the hull, body frame
 
     @property
     def speed_kn(self) -> float:
@@ -192,8 +203,8 @@ def _vessel(path: Path, table: dict) -> Vessel:
         where = f"vessel.points.{name}"
         if not name.isidentifier():
             raise ScenarioError(f"{where}: a point name must be a plain identifier (letters, digits, _)")
-        if (not isinstance(point, list) or len(point) != 3
-                or not all(isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in point)):
+        if (not isinstance(point, list) or len(point) != 3 or not all(
+                isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v) for v in point)):
             raise ScenarioError(f"{where}: expected [x, y, z] in metres (body frame), got {point!r}")
         points[name] = tuple(float(v) for v in point)
     rao_path = (path.parent / values["rao"]).resolve()
@@ -203,23 +214,28 @@ def _vessel(path: Path, table: dict) -> Vessel:
     if rao.speed.size > 1 and not low - 1e-6 <= speed <= high + 1e-6:
         raise ScenarioError(f"vessel.speed_kn: {speed_kn:g} kn is outside the RAO table's speeds "
                             f"{low / KNOT:.3g}..{high / KNOT:.3g} kn")
-    hull_path = hull = None
-    hull_keys = [key for key in HULL_OPTIONS if key in values]
-    if "hull" in values:
-        hull_path = (path.parent / values["hull"]).resolve()
-        if not hull_path.is_file():
-            raise ScenarioError(f"vessel.hull: no such file {hull_path}")
-        options = {HULL_OPTIONS[key]: values[key] for key in hull_keys}
-        hull = _checked("vessel.hull", lambda: load_hull(hull_path, **options))
-    elif hull_keys:
-        raise ScenarioError(f"vessel.{hull_keys[0]}: given without vessel.hull")
+    hull_path, hull = _mesh(path, values, "hull", HULL_OPTIONS, load_hull)
+    _, visual = _mesh(path, values, "visual_mesh", VISUAL_MESH_OPTIONS, load_visual_mesh)
     extra = values.get("wake_speeds_kn", [])
     if not all(isinstance(v, (int, float)) and not isinstance(v, bool) and 0.0 < v <= MAX_SPEED_KN for v in extra):
         raise ScenarioError(f"vessel.wake_speeds_kn: expected speeds in 0..{MAX_SPEED_KN:g} kn, got {extra!r}")
     if extra and hull is None:
         raise ScenarioError("vessel.wake_speeds_kn: given without vessel.hull")
     wake_speeds = tuple(sorted({v * KNOT for v in ([speed_kn] if speed_kn > 0 else []) + list(extra)}))
-    return Vessel(rao_path, rao, hull_path, hull, speed, heading, points, wake_speeds)
+    return Vessel(rao_path, rao, hull_path, hull, speed, heading, points, wake_speeds, visual)
+
+
+def _mesh(path: Path, values: dict, key: str, options: dict[str, str],
+          load: Callable[..., Any]) -> tuple[Path | None, Any]:
+    """(file, loaded mesh) for ``vessel.<key>`` (relative to the scenario ``path``) with its option keys
+    (scenario key -> ``load`` option), or (None, None) without it; options without the file are refused."""
+    given = [name for name in options if name in values]
+    if key not in values:
+        if given:
+            raise ScenarioError(f"vessel.{given[0]}: given without vessel.{key}")
+        return None, None
+    file = (path.parent / values[key]).resolve()
+    return file, _checked(f"vessel.{key}", lambda: load(file, **{options[name]: values[name] for name in given}))
 
 
 def _known(table: dict, allowed: tuple[str, ...] | dict, where: str) -> None:

@@ -8,8 +8,11 @@ which keeps bilinear texture lookups and finite differences of them accurate.
 
 Tile sizes follow from the sea state: the largest tile puts the frequency below which only
 0.1 % of m0 lies at ``|n| = 8`` (the peak near |n| = 19); each next tile is smaller by
-``phi^3`` (an irrational ratio, so the tiles never share a period). A regular wave gets a tile of its own whose size makes its
-wave vector fall exactly on the grid.
+``phi^3`` (an irrational ratio, so the tiles never share a period). A short sea (Tp under about
+6 s) would then repeat its peak waves within a kilometre, a pattern the eye picks out from the
+bridge or the air: there the smallest tile stays, and the ratio grows (up to 8, where the next
+band starts at ``|n| = 8``) until the largest tile spans :data:`VIEW_TILE_M`. A regular wave
+gets a tile of its own whose size makes its wave vector fall exactly on the grid.
 """
 
 from __future__ import annotations
@@ -29,6 +32,9 @@ TILE_RATIO = ((1.0 + math.sqrt(5.0)) / 2.0) ** 3
 
 LOWEST_INDEX = 8
 """Grid index |n| of the 0.1 % lower frequency quantile in the largest tile."""
+
+VIEW_TILE_M = 1000.0
+"""The largest tile spans at least this (m) where the ratio allows: no visible tiling at 1 km."""
 
 _GAUSS_X = np.array([-math.sqrt(0.6), 0.0, math.sqrt(0.6)])
 _GAUSS_W = np.array([5.0, 8.0, 5.0]) / 9.0
@@ -103,12 +109,17 @@ def choose_tiles(sea: SeaState, count: int = 4, resolution: int = 256) -> list[T
     tiles: list[Tile] = []
     if sea.spectral_systems:
         k_low = float(sea.wavenumber(sea.omega_quantile(0.001)))
-        size = LOWEST_INDEX * 2.0 * math.pi / k_low
+        size, ratio = LOWEST_INDEX * 2.0 * math.pi / k_low, TILE_RATIO
+        if count > 1 and size < VIEW_TILE_M:
+            smallest = size / TILE_RATIO ** (count - 1)
+            widest = max(TILE_RATIO, (resolution // 4) / LOWEST_INDEX)
+            ratio = min((VIEW_TILE_M / smallest) ** (1.0 / (count - 1)), widest)
+            size = smallest * ratio ** (count - 1)
         k_lo = 0.5 * 2.0 * math.pi / size  # everything but the mean (DC) cell
         for _ in range(count):
             k_hi = (resolution // 4) * 2.0 * math.pi / size
             tiles.append(Tile(size, resolution, k_lo, k_hi))
-            size /= TILE_RATIO
+            size /= ratio
             k_lo = k_hi
     tiles.extend(regular_tile(wave, sea, resolution) for wave in sea.regular_waves)
     return tiles
