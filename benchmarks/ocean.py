@@ -1,8 +1,9 @@
 """Benchmark: update of all ocean fields for 4 cascades x 256^2 per frame (issue 2).
 
 Prints milliseconds per update and the ratio to the floor: the same batch of planned pyfftw
-inverse transforms (4 per tile) timed alone in the same run. Also the numpy.fft fallback and
-the ocean's memory (numpy allocations, traced). Run: ``python benchmarks/ocean.py``.
+inverse transforms (4 per tile, one plan on every CPU) timed alone in the same run. The ocean
+itself runs one lane of tiles per CPU (``marinesim/sea/synthesis.py``). Also the numpy.fft
+fallback and the ocean's memory (numpy allocations, traced). Run: ``python benchmarks/ocean.py``.
 """
 
 from __future__ import annotations
@@ -45,7 +46,7 @@ def measure(backend: str, sea: SeaState, tiles: int, resolution: int, repeats: i
     floor = InverseFFT2((len(ocean.tiles), 4, resolution, resolution), backend)
     raw = per_call_ms(floor, repeats)
     return {"backend": backend, "update_ms": update, "fft_ms": raw, "ratio": update / raw,
-            "memory_mb": memory / 2**20, "components": len(ocean.components())}
+            "memory_mb": memory / 2**20, "components": len(ocean.components()), "lanes": ocean.lane_count}
 
 
 def main() -> None:
@@ -62,7 +63,8 @@ def main() -> None:
     for backend in ("pyfftw", "numpy"):
         r = measure(backend, sea, args.tiles, args.resolution, args.repeats if backend == "pyfftw" else 10)
         print(f"{r['backend']:>7}: update {r['update_ms']:6.2f} ms, raw FFTs {r['fft_ms']:6.2f} ms, "
-              f"ratio {r['ratio']:.2f}, memory {r['memory_mb']:.1f} MB, {r['components']:,} components")
+              f"ratio {r['ratio']:.2f}, memory {r['memory_mb']:.1f} MB, {r['components']:,} components, "
+              f"{r['lanes']} lanes")
 
 
 if __name__ == "__main__":

@@ -12,6 +12,7 @@ import numpy as np
 
 from marinesim.constants import G
 
+
 def omega_from_k(k: np.ndarray | float, depth: float = math.inf, g: float = G) -> np.ndarray:
     """Angular frequency (rad/s) of wave number ``k`` (rad/m) in water of ``depth`` (m)."""
     k = np.asarray(k, dtype=float)

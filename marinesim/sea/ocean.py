@@ -140,12 +140,14 @@ class Ocean:
         """Fraction of the sea state's m0 that the tiles carry."""
         self._ramps: list[_Ramp] = []
         self._choppiness = require_finite("choppiness", choppiness)
-        threads = threads or os.cpu_count() or 1
+        if threads is None:
+            threads = os.cpu_count() or 1
         if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)) or threads < 1:
             raise ParameterError(f"threads must be a positive integer, got {threads!r}")
         self._fft_backend, self._threads = fft_backend, int(threads)
-        self._lane_count = min(self._threads, len(self.tiles))
-        workers = self._lane_count - 1
+        self.lane_count = min(self._threads, len(self.tiles))
+        """Lanes of tiles synthesised in parallel, one per thread."""
+        workers = self.lane_count - 1
         self._pool = ThreadPoolExecutor(workers, thread_name_prefix="ocean") if workers else None
         self._index_cells()
 
@@ -218,14 +220,14 @@ class Ocean:
         """
         tile, iy, ix = self._cell
         h = self._half
-        groups = np.array_split(np.arange(len(self.tiles)), self._lane_count)
+        groups = np.array_split(np.arange(len(self.tiles)), self.lane_count)
         bounds = np.searchsorted(tile[:h], [g[0] for g in groups] + [len(self.tiles)])
         lanes = []
         for group, lo, hi in zip(groups, bounds[:-1], bounds[1:], strict=False):
             cells = np.r_[lo:hi, h + lo:h + hi]
             lane = Lane(int(group[0]), group.size, n, self._omega[lo:hi], self._multipliers[:, cells],
                         tile[cells] - group[0], iy[cells] * n + ix[cells], self._fft_backend,
-                        max(1, self._threads // self._lane_count))
+                        max(1, self._threads // self.lane_count))
             lanes.append((lane, slice(lo, hi), cells))
         return lanes
 

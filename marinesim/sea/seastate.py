@@ -129,7 +129,8 @@ class SeaState:
         """Energy-weighted circular mean travel direction (rad): ``arg integral S D e^{i theta}``."""
         vector = 0j
         for s in self.spectral_systems:
-            weighted = lambda w, s=s: s.spectrum.density(w) * s.spreading.mean_resultant_length(w)
+            def weighted(w, s=s):
+                return s.spectrum.density(w) * s.spreading.mean_resultant_length(w)
             vector += spectral_moment(weighted, 0, _omega_peak(s)) * np.exp(1j * s.beta)
         for r in self.regular_waves:
             vector += r.variance * np.exp(1j * r.beta)
