@@ -28,6 +28,7 @@ import numpy as np  # noqa: E402
 from marinesim.render.offscreen import Offscreen, parse_size  # noqa: E402
 from marinesim.render.renderer import RenderOptions  # noqa: E402
 from marinesim.scenario import load_scenario  # noqa: E402
+from marinesim.sea.fft import InverseFFT2  # noqa: E402
 
 
 def underway(folder: Path) -> Path:
@@ -71,7 +72,8 @@ def main() -> None:
         renderer._sky_vao.render(moderngl.TRIANGLES, vertices=3)
         ctx.finish()
         sky.append(time.perf_counter() - start)
-    fft = session.sim.ocean._fft
+    ocean = session.sim.ocean
+    fft = InverseFFT2((len(ocean.tiles), 4, ocean.resolution, ocean.resolution))  # the cascades' transforms
     raw = []
     for _ in range(args.frames):
         start = time.perf_counter()
