@@ -45,7 +45,7 @@ void main() {
         // A footprint of more than 1/128 of its tile would show the tile's period: take the tile's
         // own statistics there, so that only the longer cascades place the foam.
         held = mix(held, whole, smoothstep(TILE_LOD - 7.0, TILE_LOD - 5.0, textureQueryLod(u_foam, uvw.xy).y));
-        float tile_mean = whole.x;
+        float tile_mean = max(whole.x, 0.5);  // a very steep sea holds its J low everywhere
         folded *= held.x / tile_mean;
         spread += max(held.y - held.x * held.x, 0.0) / (tile_mean * tile_mean);
     }

@@ -106,6 +106,18 @@ def test_fields_do_not_depend_on_how_the_tiles_are_split_into_lanes(north_sea):
             np.testing.assert_allclose(x, y, rtol=0, atol=1e-6 * np.abs(x).max() + 1e-7)
 
 
+def test_changing_choppiness_on_a_running_ocean_rebuilds_every_lane(north_sea):
+    """Choppiness set while running equals choppiness given at construction, in every lane:
+    a lane keeping its old multipliers would keep the old displacement (off by the factor)."""
+    running = Ocean(north_sea, seed=2, resolution=64, threads=2)
+    running.fields(1.0)
+    running.choppiness = 1.6
+    built = Ocean(north_sea, seed=2, resolution=64, threads=2, choppiness=1.6)
+    for a, b in zip(running.fields(4.0), built.fields(4.0)):
+        np.testing.assert_array_equal(a.displacement_x, b.displacement_x)
+        np.testing.assert_array_equal(a.jacobian, b.jacobian)
+
+
 # -- 3. variance -----------------------------------------------------------------------------
 
 def test_cell_variances_integrate_the_spectrum(north_sea, finite_depth_sea):

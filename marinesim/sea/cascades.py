@@ -10,9 +10,13 @@ Tile sizes follow from the sea state: the largest tile puts the frequency below 
 0.1 % of m0 lies at ``|n| = 8`` (the peak near |n| = 19); each next tile is smaller by
 ``phi^3`` (an irrational ratio, so the tiles never share a period). A short sea (Tp under about
 6 s) would then repeat its peak waves within a kilometre, a pattern the eye picks out from the
-bridge or the air: there the smallest tile stays, and the ratio grows (up to 8, where the next
-band starts at ``|n| = 8``) until the largest tile spans :data:`VIEW_TILE_M`. A regular wave
-gets a tile of its own whose size makes its wave vector fall exactly on the grid.
+bridge or the air. There the smallest tile stays and the ratio grows until the largest tile
+spans :data:`VIEW_TILE_M`, as far as two limits allow:
+- the peak stays at ``|n| <= 0.625 N/4`` of the largest tile, so its band keeps the peak's
+  energy (at N = 256 this reaches 1 km at Tp = 4 s; shorter seas need N = 512);
+- the ratio stays below ``(N/4) / 8``, where the next band would start under ``|n| = 8``,
+  and off that exact (rational) value.
+A regular wave gets a tile of its own whose size makes its wave vector fall exactly on the grid.
 """
 
 from __future__ import annotations
@@ -34,7 +38,10 @@ LOWEST_INDEX = 8
 """Grid index |n| of the 0.1 % lower frequency quantile in the largest tile."""
 
 VIEW_TILE_M = 1000.0
-"""The largest tile spans at least this (m) where the ratio allows: no visible tiling at 1 km."""
+"""The largest tile spans at least this (m) where the limits allow: no visible tiling at 1 km."""
+
+PEAK_INDEX_LIMIT = 0.625
+"""Highest grid index of the spectral peak in a stretched largest tile, as a share of N/4."""
 
 _GAUSS_X = np.array([-math.sqrt(0.6), 0.0, math.sqrt(0.6)])
 _GAUSS_W = np.array([5.0, 8.0, 5.0]) / 9.0
@@ -110,10 +117,11 @@ def choose_tiles(sea: SeaState, count: int = 4, resolution: int = 256) -> list[T
     if sea.spectral_systems:
         k_low = float(sea.wavenumber(sea.omega_quantile(0.001)))
         size, ratio = LOWEST_INDEX * 2.0 * math.pi / k_low, TILE_RATIO
-        if count > 1 and size < VIEW_TILE_M:
+        wanted = min(VIEW_TILE_M, PEAK_INDEX_LIMIT * (resolution // 4) * sea.g * float(sea.tp) ** 2 / (2.0 * math.pi))
+        if count > 1 and size < wanted:  # the peak wavelength is the deep-water g Tp^2 / 2 pi at most
             smallest = size / TILE_RATIO ** (count - 1)
-            widest = max(TILE_RATIO, (resolution // 4) / LOWEST_INDEX)
-            ratio = min((VIEW_TILE_M / smallest) ** (1.0 / (count - 1)), widest)
+            widest = max(TILE_RATIO, 0.97 * (resolution // 4) / LOWEST_INDEX)
+            ratio = min((wanted / smallest) ** (1.0 / (count - 1)), widest)
             size = smallest * ratio ** (count - 1)
         k_lo = 0.5 * 2.0 * math.pi / size  # everything but the mean (DC) cell
         for _ in range(count):

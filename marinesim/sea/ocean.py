@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import math
 import os
-from concurrent.futures import ThreadPoolExecutor
+from concurrent.futures import ThreadPoolExecutor, wait
 from dataclasses import dataclass
 
 import numpy as np
@@ -149,6 +149,9 @@ class Ocean:
         """Lanes of tiles synthesised in parallel, one per thread."""
         workers = self.lane_count - 1
         self._pool = ThreadPoolExecutor(workers, thread_name_prefix="ocean") if workers else None
+        groups = np.array_split(np.arange(len(self.tiles)), self.lane_count)
+        self._lanes = [Lane(int(g[0]), g.size, self.resolution, fft_backend, max(1, self._threads // len(groups)))
+                       for g in groups]
         self._index_cells()
 
     # -- construction ---------------------------------------------------------------------
@@ -210,26 +213,21 @@ class Ocean:
         self._omega = omega_from_k(np.hypot(qx, qy), self.sea.depth, self.sea.g)
         self._multipliers = self._multipliers_for(qx, qy)
         self._fixed_amplitudes = None if self._ramps else self._half_amplitudes(self._amplitude0[self._cell])
-        self._lanes = self._make_lanes(n)
+        self._lane_cells = self._assign_cells(n)
 
-    def _make_lanes(self, n: int) -> list[tuple[Lane, slice, np.ndarray]]:
-        """One lane per worker thread over consecutive tiles.
-
-        With each lane: the slice of its representative cells and the indices of all its cells
-        (representatives, then mirrors) into the flat cell arrays.
-        """
+    def _assign_cells(self, n: int) -> list[tuple[slice, np.ndarray]]:
+        """Give each lane its cells. Per lane: the slice of its representative cells and the
+        indices of all its cells (representatives, then mirrors) into the flat cell arrays."""
         tile, iy, ix = self._cell
         h = self._half
-        groups = np.array_split(np.arange(len(self.tiles)), self.lane_count)
-        bounds = np.searchsorted(tile[:h], [g[0] for g in groups] + [len(self.tiles)])
-        lanes = []
-        for group, lo, hi in zip(groups, bounds[:-1], bounds[1:], strict=False):
+        bounds = np.searchsorted(tile[:h], [lane.first for lane in self._lanes] + [len(self.tiles)])
+        assigned = []
+        for lane, lo, hi in zip(self._lanes, bounds[:-1], bounds[1:], strict=False):
             cells = np.r_[lo:hi, h + lo:h + hi]
-            lane = Lane(int(group[0]), group.size, n, self._omega[lo:hi], self._multipliers[:, cells],
-                        tile[cells] - group[0], iy[cells] * n + ix[cells], self._fft_backend,
-                        max(1, self._threads // self.lane_count))
-            lanes.append((lane, slice(lo, hi), cells))
-        return lanes
+            lane.set_cells(self._omega[lo:hi], self._multipliers[:, cells], tile[cells] - lane.first,
+                           iy[cells] * n + ix[cells])
+            assigned.append((slice(lo, hi), cells))
+        return assigned
 
     def _multipliers_for(self, qx: np.ndarray, qy: np.ndarray) -> np.ndarray:
         """Complex multipliers turning C into the four packed spectra (see FIELD_PAIRS)."""
@@ -260,7 +258,7 @@ class Ocean:
     def choppiness(self, value: float) -> None:
         self._choppiness = require_finite("choppiness", value)
         self._multipliers = self._multipliers_for(self._qx, self._qy)
-        for lane, _, cells in self._lanes:
+        for lane, (_, cells) in zip(self._lanes, self._lane_cells, strict=True):
             lane.set_multipliers(self._multipliers[:, cells])
 
     def ramp_to(self, sea: SeaState, start: float, duration: float) -> None:
@@ -294,9 +292,12 @@ class Ocean:
             even, odd = self._half_amplitudes(self.amplitudes(t)[self._cell])
         else:
             even, odd = self._fixed_amplitudes
-        (first, rows, _), *others = self._lanes
-        waiting = [(lane, self._pool.submit(lane.run, t, even[r], odd[r])) for lane, r, _ in others]
-        results = [(first, first.run(t, even[rows], odd[rows]))]
+        (first, *others), (rows, *other_rows) = self._lanes, [r for r, _ in self._lane_cells]
+        waiting = [(lane, self._pool.submit(lane.run, t, even[r], odd[r])) for lane, r in zip(others, other_rows)]
+        try:
+            results = [(first, first.run(t, even[rows], odd[rows]))]
+        finally:  # never leave a lane running into the next call's buffers
+            wait([future for _, future in waiting])
         results += [(lane, future.result()) for lane, future in waiting]
         return [
             TileFields(self.tiles[lane.first + i], out[i, 0].real, out[i, 1].real, out[i, 1].imag,

@@ -20,26 +20,29 @@ from marinesim.sea.fft import InverseFFT2
 
 
 class Lane:
-    """The tiles ``first .. first + count - 1``, synthesised by one thread.
+    """The tiles ``first .. first + count - 1`` of ``resolution``^2, synthesised by one thread.
 
-    ``representatives`` and ``mirrors`` index the ocean's flat cell arrays: the lane's cells
-    ``q`` (whose ``C`` it computes) and their mirrors ``-q`` (which get ``conj C``), in the same
-    order. ``offsets`` are each cell's flat index into one tile's ``N x N`` field and ``tile``
-    its tile index relative to ``first``.
+    The FFT is planned once; :meth:`set_cells` gives the lane its wave cells (again when a
+    sea-state ramp adds cells) and :meth:`set_multipliers` new packing multipliers.
     """
 
-    def __init__(self, first: int, count: int, resolution: int, omega: np.ndarray,
-                 multipliers: np.ndarray, tile: np.ndarray, offsets: np.ndarray,
-                 fft_backend: str, threads: int) -> None:
+    def __init__(self, first: int, count: int, resolution: int, fft_backend: str, threads: int) -> None:
         n = resolution
-        self.first, self.count = first, count
+        self.first, self.count, self._n = first, count, n
+        self._fft = InverseFFT2((count, 4, n, n), fft_backend, threads)
+        self._jacobian = np.empty((count, n, n), dtype=np.float32)
+        self._scratch = np.empty_like(self._jacobian)
+
+    def set_cells(self, omega: np.ndarray, multipliers: np.ndarray, tile: np.ndarray, offsets: np.ndarray) -> None:
+        """The lane's cells: representatives ``q`` (their ``omega``, rad/s), then their mirrors
+        ``-q`` in the same order; for all of them the packing ``multipliers`` (4, cells), the tile
+        relative to ``first`` and the flat index into the tile's ``N x N`` field."""
+        n = self._n
         self._omega = omega
         self._multipliers = multipliers
         self._scatter = ((tile * 4 * n * n + offsets)[None, :] + (np.arange(4) * n * n)[:, None]).ravel()
-        self._fft = InverseFFT2((count, 4, n, n), fft_backend, threads)
-        self._fft.input[:, 3, 0, 0] = 1.0 + 1.0j
-        self._jacobian = np.empty((count, n, n), dtype=np.float32)
-        self._scratch = np.empty_like(self._jacobian)
+        self._fft.input[...] = 0.0
+        self._fft.input[:, 3, 0, 0] = 1.0 + 1.0j  # the ones of (1 + dDx/dx) + i (1 + dDy/dy)
         half = omega.size
         self._phase = np.empty(half)
         self._cos = np.empty(half, dtype=np.float32)
