@@ -2,15 +2,25 @@
 
 The transform is the unnormalised inverse DFT, ``f[m] = sum_n F[n] exp(+2 pi i n m / N)``,
 so a spectrum of complex amplitudes gives the field directly.
+
+FFTW_MEASURE picks its algorithm by timing candidates, so two runs could pick different ones
+and round differently. The plans are therefore kept as FFTW wisdom in
+``fftw-wisdom.json`` under :func:`~marinesim.cache.cache_root`: every run after the first
+plans exactly as the first did, and the same scenario and seed give the same bits.
 """
 
 from __future__ import annotations
 
+import contextlib
+import json
 import os
+from pathlib import Path
 
 import numpy as np
 
-from marinesim.errors import ParameterError
+from marinesim.atomic import atomic_path
+from marinesim.cache import cache_root
+from marinesim.errors import MarinesimError, ParameterError
 
 try:
     import pyfftw
@@ -18,6 +28,36 @@ except ImportError:  # pragma: no cover - exercised by the numpy-fallback benchm
     pyfftw = None
 
 BACKENDS = ("auto", "pyfftw", "numpy")
+_WISDOM_KINDS = ("double", "single", "long double")
+_wisdom_read = False
+
+
+def _wisdom_file() -> Path:
+    return cache_root() / "fftw-wisdom.json"
+
+
+def _read_wisdom() -> None:
+    """Import the saved plans once per process (an unreadable file is ignored and replaced)."""
+    global _wisdom_read
+    if _wisdom_read:
+        return
+    _wisdom_read = True
+    with contextlib.suppress(OSError, ValueError, KeyError, TypeError):
+        saved = json.loads(_wisdom_file().read_text())
+        pyfftw.import_wisdom(tuple(saved[kind].encode("ascii") for kind in _WISDOM_KINDS))
+
+
+def _save_wisdom() -> None:
+    """Store the plans made so far if they add to the saved ones (atomically; skipped if unwritable)."""
+    wisdom = {kind: blob.decode("ascii") for kind, blob in zip(_WISDOM_KINDS, pyfftw.export_wisdom(), strict=True)}
+    path = _wisdom_file()
+    with contextlib.suppress(OSError, ValueError):
+        if json.loads(path.read_text()) == wisdom:
+            return
+    with contextlib.suppress(OSError, MarinesimError):
+        path.parent.mkdir(parents=True, exist_ok=True)
+        with atomic_path(path) as temp:
+            temp.write_text(json.dumps(wisdom))
 
 
 class InverseFFT2:
@@ -36,10 +76,12 @@ class InverseFFT2:
         if self.backend == "pyfftw":
             self.input = pyfftw.empty_aligned(shape, dtype=np.complex64)
             self.output = pyfftw.empty_aligned(shape, dtype=np.complex64)
+            _read_wisdom()
             self._plan = pyfftw.FFTW(
                 self.input, self.output, axes=axes, direction="FFTW_BACKWARD",
                 flags=("FFTW_MEASURE",), threads=threads or os.cpu_count() or 1,
             )
+            _save_wisdom()
         else:
             self.input = np.empty(shape, dtype=np.complex64)
             self.output = np.empty(shape, dtype=np.complex64)

@@ -2,22 +2,22 @@
 
 The key is a sha256 of everything the field depends on: the hull geometry in the body frame
 (so units, axes, draft and trim are in it), the speed, the grid, rho, g, the angular refinement
-and CACHE_FORMAT (bumped whenever the numerics change). The folder is ``$MARINESIM_CACHE_DIR``,
-else ``$XDG_CACHE_HOME/marinesim/wake``, else ``~/.cache/marinesim/wake``. Entries are written
-atomically; an unreadable entry is recomputed and replaced.
+and CACHE_FORMAT (bumped whenever the numerics change). The folder is ``wake`` in
+:func:`~marinesim.cache.cache_root`. Entries are written atomically; an unreadable entry is
+recomputed and replaced.
 """
 
 from __future__ import annotations
 
 import hashlib
 import json
-import os
 from pathlib import Path
 from typing import Iterable
 
 from tqdm import tqdm
 
-from marinesim.constants import G, RHO_SEAWATER
+from marinesim.cache import cache_root
+from marinesim.constants import RHO_SEAWATER, G
 from marinesim.errors import FileFormatError
 from marinesim.hull import Hull
 from marinesim.wake.compute import Wake, WakeGrid, compute_wake
@@ -26,10 +26,7 @@ CACHE_FORMAT = 2
 
 
 def cache_dir() -> Path:
-    if os.environ.get("MARINESIM_CACHE_DIR"):
-        return Path(os.environ["MARINESIM_CACHE_DIR"])
-    base = Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache")
-    return base / "marinesim" / "wake"
+    return cache_root() / "wake"
 
 
 def cache_key(hull: Hull, speed_m_s: float, grid: WakeGrid, rho: float, g: float, refinement: float) -> str:
