@@ -292,17 +292,17 @@ class Ocean:
             even, odd = self._half_amplitudes(self.amplitudes(t)[self._cell])
         else:
             even, odd = self._fixed_amplitudes
-        (first, *others), (rows, *other_rows) = self._lanes, [r for r, _ in self._lane_cells]
-        waiting = [(lane, self._pool.submit(lane.run, t, even[r], odd[r])) for lane, r in zip(others, other_rows)]
-        try:
-            results = [(first, first.run(t, even[rows], odd[rows]))]
+        rows = [r for r, _ in self._lane_cells]
+        waiting = [self._pool.submit(lane.run, t, even[r], odd[r]) for lane, r in zip(self._lanes[1:], rows[1:])]
+        try:  # the first lane on this thread
+            outputs = [self._lanes[0].run(t, even[rows[0]], odd[rows[0]])]
         finally:  # never leave a lane running into the next call's buffers
-            wait([future for _, future in waiting])
-        results += [(lane, future.result()) for lane, future in waiting]
+            wait(waiting)
+        outputs += [future.result() for future in waiting]
         return [
             TileFields(self.tiles[lane.first + i], out[i, 0].real, out[i, 1].real, out[i, 1].imag,
                        out[i, 2].real, out[i, 2].imag, jacobian[i])
-            for lane, (out, jacobian) in results for i in range(lane.count)
+            for lane, (out, jacobian) in zip(self._lanes, outputs, strict=True) for i in range(lane.count)
         ]
 
     # -- components and direct summation --------------------------------------------------
