@@ -12,7 +12,8 @@ spectrum ``C[q] = (a[-q] e^{iwt} + conj(a[q]) e^{-iwt}) / 2`` for the height and
 - horizontal (choppy) displacement ``D = i lambda (q/|q|) C`` (Gerstner: crests sharpen),
 - slopes ``i q C``,
 - displacement derivatives ``dDx/dx = -lambda qx^2/|q| C`` (and ``yy``, ``xy``) giving the
-  Jacobian ``J = (1 + dDx/dx)(1 + dDy/dy) - (dDx/dy)^2`` (J < ~0.3: the surface folds, foam),
+  Jacobian ``J = (1 + dDx/dx)(1 + dDy/dy) - (dDx/dy)^2`` (below 1 the surface is compressed,
+  below 0 it folds: where waves break),
 
 the eight real fields packed two per complex FFT (``F + iG`` is the spectrum of ``f + ig``).
 Only the cells of each tile's band are touched per frame, and the tiles are split into lanes
@@ -192,8 +193,9 @@ class Ocean:
         same order, so ``C`` is computed for half of them and conjugated for the rest.
         """
         n = self.resolution
-        states = [self._amplitude0] + [r.target for r in self._ramps]
-        used = np.any(np.stack(states) != 0, axis=0)
+        used = self._amplitude0 != 0
+        for ramp in self._ramps:
+            used |= ramp.target != 0
         used |= _mirror(used)
         tile, iy, ix = np.nonzero(used)
         mirror_iy, mirror_ix = (-iy) % n, (-ix) % n
@@ -212,7 +214,8 @@ class Ocean:
         self._qx, self._qy = qx, qy
         self._omega = omega_from_k(np.hypot(qx, qy), self.sea.depth, self.sea.g)
         self._multipliers = self._multipliers_for(qx, qy)
-        self._fixed_amplitudes = None if self._ramps else self._half_amplitudes(self._amplitude0[self._cell])
+        settled = self._ramps[-1].target if self._ramps else self._amplitude0
+        self._settled_amplitudes = self._half_amplitudes(settled[self._cell])  # after the last ramp
         self._lane_cells = self._assign_cells(n)
 
     def _assign_cells(self, n: int) -> list[tuple[slice, np.ndarray]]:
@@ -222,7 +225,7 @@ class Ocean:
         h = self._half
         bounds = np.searchsorted(tile[:h], [lane.first for lane in self._lanes] + [len(self.tiles)])
         assigned = []
-        for lane, lo, hi in zip(self._lanes, bounds[:-1], bounds[1:], strict=False):
+        for lane, lo, hi in zip(self._lanes, bounds[:-1], bounds[1:], strict=True):
             cells = np.r_[lo:hi, h + lo:h + hi]
             lane.set_cells(self._omega[lo:hi], self._multipliers[:, cells], tile[cells] - lane.first,
                            iy[cells] * n + ix[cells])
@@ -280,18 +283,22 @@ class Ocean:
         for ramp in self._ramps:
             if t <= ramp.start:
                 break
-            s = min((t - ramp.start) / ramp.duration, 1.0)
-            amplitude = amplitude + (3.0 * s * s - 2.0 * s**3) * (ramp.target - amplitude)
+            s = (t - ramp.start) / ramp.duration
+            amplitude = ramp.target if s >= 1.0 else amplitude + (3.0 * s * s - 2.0 * s**3) * (ramp.target - amplitude)
         return amplitude
+
+    def _settled(self, t: float) -> bool:
+        """Whether ``t`` (s) is after the last ramp (or there is none): the amplitudes no longer change."""
+        return not self._ramps or t >= self._ramps[-1].start + self._ramps[-1].duration
 
     # -- fields per frame -----------------------------------------------------------------
 
     def fields(self, t: float) -> list[TileFields]:
         """All fields of every tile at time ``t`` (s): 4 inverse FFTs per tile, the lanes in parallel."""
-        if self._fixed_amplitudes is None:
-            even, odd = self._half_amplitudes(self.amplitudes(t)[self._cell])
+        if self._settled(t):
+            even, odd = self._settled_amplitudes
         else:
-            even, odd = self._fixed_amplitudes
+            even, odd = self._half_amplitudes(self.amplitudes(t)[self._cell])
         rows = [r for r, _ in self._lane_cells]
         waiting = [self._pool.submit(lane.run, t, even[r], odd[r]) for lane, r in zip(self._lanes[1:], rows[1:])]
         try:  # the first lane on this thread
