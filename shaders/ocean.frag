@@ -9,7 +9,7 @@ in vec3 v_position;
 in float v_spacing;
 
 uniform sampler2DArray u_slopes;   // per tile: d eta/dx, d eta/dy
-uniform sampler2DArray u_foam;     // per tile: Jacobian held with decay (foam.comp)
+uniform sampler2DArray u_foam;     // per tile: held Jacobian and its square (foam.comp)
 uniform float u_tile_size[TILES];
 uniform vec3 u_eye;
 uniform sampler2D u_hull_mask;     // 1 inside the waterplane (vessel frame)

@@ -37,7 +37,7 @@ OCEAN_RADIUS_M = 20_000.0
 RING_SEGMENTS = 192
 INNER_SPACING_M = 0.5
 FOAM_TAU_S = 4.0
-"""Foam decays as exp(-t / tau) once the surface stops folding."""
+"""The held Jacobian relaxes back to 1 as exp(-t / tau) once the surface stops folding (foam.comp)."""
 FOAM_J_START, FOAM_J_FULL = 0.90, 0.60
 """Jacobian of the surface where foam starts and where it covers the surface fully."""
 BREAKING_SLOPE = 0.3

@@ -48,7 +48,7 @@ def _read_wisdom() -> None:
 
 
 def _save_wisdom() -> None:
-    """Store the plans made so far if they add to the saved ones (atomically; skipped if unwritable)."""
+    """Store the plans made so far if they differ from the saved ones (atomically; skipped if unwritable)."""
     wisdom = {kind: blob.decode("ascii") for kind, blob in zip(_WISDOM_KINDS, pyfftw.export_wisdom(), strict=True)}
     path = _wisdom_file()
     with contextlib.suppress(OSError, ValueError):
