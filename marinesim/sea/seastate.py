@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 from scipy import optimize
@@ -62,7 +63,10 @@ class RegularWave:
 
 @dataclass(frozen=True)
 class SeaState:
-    """The sum of wave systems over water of ``depth`` (m; ``math.inf`` = deep)."""
+    """The sum of wave systems over water of ``depth`` (m; ``math.inf`` = deep).
+
+    Immutable: its integral figures (Hs, Tz, Tp, mean direction) are computed once and kept, so a
+    display may ask for them every frame."""
 
     systems: tuple[WaveSystem | RegularWave, ...]
     depth: float = math.inf
@@ -99,17 +103,17 @@ class SeaState:
         m = sum(spectral_moment(s.spectrum.density, n, _omega_peak(s)) for s in self.spectral_systems)
         return m + sum(r.variance * r.omega**n for r in self.regular_waves)
 
-    @property
+    @cached_property
     def hs(self) -> float:
         """Significant wave height ``4 sqrt(m0)`` (m)."""
         return 4.0 * math.sqrt(self.moment(0))
 
-    @property
+    @cached_property
     def tz(self) -> float:
         """Mean zero-crossing period ``2 pi sqrt(m0 / m2)`` (s)."""
         return 2.0 * math.pi * math.sqrt(self.moment(0) / self.moment(2))
 
-    @property
+    @cached_property
     def tp(self) -> float:
         """Peak period (s) of the summed continuous spectra; of the largest regular wave if none."""
         if not self.spectral_systems:
@@ -124,7 +128,7 @@ class SeaState:
         )
         return 2.0 * math.pi / best.x
 
-    @property
+    @cached_property
     def mean_beta(self) -> float:
         """Energy-weighted circular mean travel direction (rad): ``arg integral S D e^{i theta}``."""
         vector = 0j
