@@ -181,8 +181,8 @@ class Renderer:
             packed[i, ..., 0], packed[i, ..., 1] = f.displacement_x, f.displacement_y
             packed[i, ..., 2], packed[i, ..., 3] = f.height, f.jacobian
             slopes[i, ..., 0], slopes[i, ..., 1] = f.slope_x, f.slope_y
-        self._cascades.write(packed.tobytes())
-        self._slopes.write(slopes.tobytes())
+        self._cascades.write(packed)  # buffer protocol: no copy
+        self._slopes.write(slopes)
         self._cascades.build_mipmaps()
         self._slopes.build_mipmaps()
         self._update_foam(dt)
