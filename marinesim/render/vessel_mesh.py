@@ -38,8 +38,7 @@ class VesselMesh:
 
     def bounds(self) -> np.ndarray:
         """The eight corners of the body-frame bounding box (8, 3)."""
-        lo, hi = self.positions.min(axis=0), self.positions.max(axis=0)
-        return np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
+        return _box_corners(self.positions.min(axis=0), self.positions.max(axis=0))
 
 
 def vessel_mesh(hull: Hull, freeboard_m: float | None = None, house_at: tuple[float, float, float] | None = None
@@ -54,13 +53,14 @@ def vessel_mesh(hull: Hull, freeboard_m: float | None = None, house_at: tuple[fl
         deck_z = freeboard_m if freeboard_m is not None else max(0.6 * draft, 1.0)
         outline = waterline(hull)
         triangles += [_walls(outline, deck_z), _fan(outline, deck_z)]
-    if house_at is not None and house_at[2] > deck_z + 1.0:
+    house = house_at is not None and house_at[2] > deck_z + 1.0
+    if house:
         triangles.append(_house(v, house_at, deck_z))
     corners = np.concatenate(triangles)
     normals = _face_normals(corners)
     colours = _hull_colours(corners, normals)
-    if house_at is not None and house_at[2] > deck_z + 1.0:
-        colours[-12:] = HOUSE
+    if house:
+        colours[-12:] = HOUSE  # the house's 12 triangles, appended last
     return _flat(corners, normals, colours)
 
 
@@ -132,6 +132,11 @@ def _house(v: np.ndarray, point: tuple[float, float, float], deck_z: float) -> n
     length, beam = np.ptp(v[:, 0]), np.ptp(v[:, 1])
     lo = np.array([point[0] - 0.06 * length, -0.35 * beam, deck_z])
     hi = np.array([point[0] + 1.0, 0.35 * beam, point[2] + 1.5])
-    c = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
+    c = _box_corners(lo, hi)
     quads = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (1, 5, 7, 3), (0, 2, 6, 4)]
     return np.array([[c[q[0]], c[q[1]], c[q[2]]] for q in quads] + [[c[q[0]], c[q[2]], c[q[3]]] for q in quads])
+
+
+def _box_corners(lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+    """The eight corners (8, 3) of the box ``lo..hi``, z fastest, then y, then x."""
+    return np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
