@@ -5,6 +5,7 @@ import math
 import os
 import subprocess
 import sys
+import tracemalloc
 
 import numpy as np
 import pytest
@@ -333,6 +334,34 @@ def test_ramp_changes_sea_state_without_jumps(north_sea):
         h0 = np.concatenate([f.height.ravel().copy() for f in ocean.fields(t - 1e-3)])
         h1 = np.concatenate([f.height.ravel() for f in ocean.fields(t + 1e-3)])
         assert np.max(np.abs(h1 - h0)) < 0.02  # m, with ~2 m/s vertical speeds at most
+
+
+def test_many_live_changes_keep_memory_flat_and_the_past_exact(north_sea):
+    """Thirty sea changes, as in a long training session: the ocean's memory does not grow with
+    them (each ramp used to keep its amplitude grid, 4 x 64^2 complex here, 4 MB at 256^2), and a
+    time inside the second ramp, whose states were dropped, gives the same bits as before."""
+    calm, rough = ramp_pair(north_sea)
+    ocean = Ocean(calm, seed=3, resolution=64)
+    grid_mb = ocean.amplitudes(0.0).nbytes / 2**20
+    for i in range(3):
+        ocean.ramp_to(rough if i % 2 == 0 else calm, start=10.0 * i, duration=5.0)
+    past = [(f.height.copy(), f.jacobian.copy()) for f in ocean.fields(12.5)]
+    past_components = ocean.components(12.5, variance_fraction=0.999)
+    tracemalloc.start()
+    held = []
+    for i in range(3, 30):
+        ocean.ramp_to(rough if i % 2 == 0 else calm, start=10.0 * i, duration=5.0)
+        held.append(tracemalloc.get_traced_memory()[0] / 2**20)  # every buffer now allocated while traced
+    tracemalloc.stop()
+    assert held[-1] - held[4] < grid_mb  # keeping 25 more grids would add 25 x grid_mb
+    for (height, jacobian), f in zip(past, ocean.fields(12.5), strict=True):
+        np.testing.assert_array_equal(f.height, height)
+        np.testing.assert_array_equal(f.jacobian, jacobian)
+    again = ocean.components(12.5, variance_fraction=0.999)
+    np.testing.assert_array_equal(again.amplitude, past_components.amplitude)
+    np.testing.assert_array_equal(again.omega, past_components.omega)
+    # and the newest sea is still the one asked for last (i = 29: calm)
+    assert ocean.components(400.0).variance == pytest.approx(Ocean(calm, seed=3, resolution=64).components().variance)
 
 
 def test_bad_ramps_are_refused(north_sea):

@@ -11,6 +11,7 @@ from __future__ import annotations
 import dataclasses
 import math
 import re
+import tracemalloc
 from pathlib import Path
 
 import numpy as np
@@ -236,6 +237,30 @@ def test_changes_asked_for_during_a_blend_add_up(default):
     assert sim.sea.hs == pytest.approx(1.21 * default.sea.hs, rel=1e-9)
     assert sim.legs[-1].track.speed / KNOT == pytest.approx(speed_kn + 2.0)
     assert len(sim.legs) == 5, "each change should have started in turn"
+
+
+def test_a_long_session_of_changes_keeps_memory_flat_and_the_past_exact(default):
+    """Twenty sea and speed changes, as an instructor makes in a training session: memory stays
+    flat (each change used to keep its sea's amplitude grid and the ship's response to it, 10 MB
+    at the default 4 x 256^2), and motions at times of the first change, whose states were since
+    dropped, come back to the same bits."""
+    sim = Simulation(default, wake=False)
+    sim.advance(2.0)
+    sim.change(hs_factor=1.2, speed_kn=6.0, ramp_s=2.0)
+    times = np.array([3.0, 4.25])  # blending into the first change, then settled in it (the next starts at 4.5)
+    past = sim.frame(times)
+    tracemalloc.start()
+    held = []
+    for i in range(20):
+        sim.advance(2.5)
+        sim.change(hs_factor=0.9 if i % 2 else 1.1, speed_kn=5.0 + i % 3, ramp_s=2.0)
+        held.append(tracemalloc.get_traced_memory()[0] / 2**20)
+    tracemalloc.stop()
+    assert held[-1] - held[4] < 5.0  # MB over 15 changes; kept, they were about 150
+    again = sim.frame(times)
+    for column, values in past.items():
+        np.testing.assert_array_equal(again[column], values, err_msg=column)
+    assert sim.sea.hs == pytest.approx(1.2 * 1.1**10 * 0.9**10 * default.sea.hs, rel=1e-9)
 
 
 def test_render_command_refuses_bad_sizes_and_writes_a_screenshot(tmp_path, capsys):

@@ -24,6 +24,7 @@ from marinesim.angles import compass_to_math, math_to_compass, wave_compass_from
 from marinesim.constants import KNOT
 from marinesim.errors import ParameterError
 from marinesim.hull import hydrostatics
+from marinesim.recent import Recent
 from marinesim.scenario.export import VARIANCE_FRACTION, build_ocean
 from marinesim.scenario.schema import MAX_SPEED_KN, Scenario
 from marinesim.sea.seastate import RegularWave, SeaState, WaveSystem
@@ -41,13 +42,12 @@ WAKE_GRID = WakeGrid()
 
 @dataclass(frozen=True)
 class Leg:
-    """From ``start`` (s) the vessel follows ``track`` and moves as ``response``, blending in over ``ramp_s``."""
+    """From ``start`` (s) the vessel follows ``track`` in ``sea``, blending in over ``ramp_s``."""
 
     start: float
     ramp_s: float
     sea: SeaState
     track: Track
-    response: Response | None
 
     def weight(self, t: np.ndarray) -> np.ndarray:
         s = np.clip((np.asarray(t, float) - self.start) / self.ramp_s, 0.0, 1.0) if self.ramp_s > 0 else 1.0
@@ -71,7 +71,9 @@ class Simulation:
         self.vessel = scenario.vessel
         heading = compass_to_math(self.vessel.heading_deg) if self.vessel else 0.0
         speed = self.vessel.speed_m_s if self.vessel else 0.0
-        self.legs = [self._leg(0.0, 0.0, scenario.sea, Track(heading, speed))]
+        self.legs = [Leg(0.0, 0.0, scenario.sea, Track(heading, speed))]
+        self._responses = Recent(self._respond)
+        """The vessel's response on each leg (the newest kept, older recomputed: memory stays flat)."""
         self._pending: list[tuple[SeaState | None, float | None, float | None, float]] = []
         self._last_pose: tuple[float, int, HullPose | None] = (math.nan, 0, None)
         self.wake_on = wake and self.vessel is not None and self.vessel.hull is not None
@@ -85,13 +87,15 @@ class Simulation:
 
     # -- timeline -----------------------------------------------------------------------------
 
-    def _leg(self, start: float, ramp_s: float, sea: SeaState, track: Track) -> Leg:
-        response = None
-        if self.vessel is not None:
-            ocean = self.ocean
-            components = ocean.components(t=start + ramp_s, variance_fraction=VARIANCE_FRACTION)
-            response = Response(self.vessel.rao, components, track, self.vessel.points)
-        return Leg(start, ramp_s, sea, track, response)
+    def _respond(self, index: int) -> Response:
+        """The response on leg ``index``: to the sea it blends into, along its track."""
+        leg = self.legs[index]
+        components = self.ocean.components(t=leg.start + leg.ramp_s, variance_fraction=VARIANCE_FRACTION)
+        return Response(self.vessel.rao, components, leg.track, self.vessel.points)
+
+    def response(self, index: int) -> Response:
+        """The vessel's response on leg ``index`` (the scenario must have a vessel)."""
+        return self._responses.get(index, len(self.legs) - 1)
 
     def advance(self, dt: float) -> None:
         """Move the clock on by ``dt`` (s) and start the changes waiting for a blend to end."""
@@ -150,7 +154,9 @@ class Simulation:
         heading = last.track.heading if heading is None else heading
         speed = last.track.speed if speed is None else speed
         start = (x - speed * math.cos(heading) * t, y - speed * math.sin(heading) * t)
-        self.legs.append(self._leg(t, ramp_s, sea or last.sea, Track(heading, speed, *start)))
+        self.legs.append(Leg(t, ramp_s, sea or last.sea, Track(heading, speed, *start)))
+        if self.vessel is not None:
+            self.response(len(self.legs) - 1)  # computed now, at the change, not in the next frame
         if self.wake_on:
             self._request_wake(speed)
 
@@ -186,23 +192,23 @@ class Simulation:
         times = np.asarray(times, float).ravel()
         if self.vessel is None:
             raise ParameterError("the scenario has no vessel: no motions to record")
-        return self.legs[-1].response.frame(times, self._linear(times))
+        return self.response(len(self.legs) - 1).frame(times, self._linear(times))
 
     def _linear(self, times: np.ndarray) -> np.ndarray:
         """The responses' linear outputs (:meth:`Response.linear`) at ``times``, blended across legs;
         the previous leg is evaluated only where a blend is under way."""
-        out = np.empty((times.size, self.legs[0].response.linear(times[:0]).shape[1]))
+        out = np.empty((times.size, self.response(len(self.legs) - 1).linear(times[:0]).shape[1]))
         starts = np.array([leg.start for leg in self.legs])
         index = np.maximum(np.searchsorted(starts, times, side="right") - 1, 0)
         for i in np.unique(index):
             at = np.flatnonzero(index == i)
             leg = self.legs[i]
-            out[at] = leg.response.linear(times[at])
+            out[at] = self.response(i).linear(times[at])
             w = leg.weight(times[at])
             blending = at[w < 1.0]
             if blending.size:
                 w = w[w < 1.0][:, None]
-                out[blending] = w * out[blending] + (1.0 - w) * self.legs[i - 1].response.linear(times[blending])
+                out[blending] = w * out[blending] + (1.0 - w) * self.response(i - 1).linear(times[blending])
         return out
 
     # -- the wake -----------------------------------------------------------------------------

@@ -29,7 +29,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from marinesim.errors import ParameterError, require_at_least, require_finite, require_positive
+from marinesim.errors import MarinesimError, ParameterError, require_at_least, require_finite, require_positive
+from marinesim.recent import Recent
 from marinesim.sea.cascades import Tile, cell_variances, choose_tiles, regular_tile
 from marinesim.sea.dispersion import omega_from_k
 from marinesim.sea.seastate import SeaState
@@ -100,7 +101,7 @@ class PointSample:
 class _Ramp:
     start: float
     duration: float
-    target: np.ndarray  # amplitudes of every cell of every tile after the ramp
+    sea: SeaState  # after the ramp
 
 
 class Ocean:
@@ -140,6 +141,10 @@ class Ocean:
         self.m0_fraction = self.represented_m0 / sea.moment(0)
         """Fraction of the sea state's m0 that the tiles carry."""
         self._ramps: list[_Ramp] = []
+        self._states = Recent(self._state)
+        """Amplitudes of every cell after 0, 1, 2, ... ramps (the newest kept, older recomputed)."""
+        self._used = self._amplitude0 != 0
+        self._used |= _mirror(self._used)
         self._choppiness = require_finite("choppiness", choppiness)
         if threads is None:
             threads = os.cpu_count() or 1
@@ -193,11 +198,7 @@ class Ocean:
         same order, so ``C`` is computed for half of them and conjugated for the rest.
         """
         n = self.resolution
-        used = self._amplitude0 != 0
-        for ramp in self._ramps:
-            used |= ramp.target != 0
-        used |= _mirror(used)
-        tile, iy, ix = np.nonzero(used)
+        tile, iy, ix = np.nonzero(self._used)
         mirror_iy, mirror_ix = (-iy) % n, (-ix) % n
         first = (iy * n + ix) < (mirror_iy * n + mirror_ix)  # DC and Nyquist cells are never used
         tile = np.concatenate([tile[first], tile[first]])
@@ -214,7 +215,7 @@ class Ocean:
         self._qx, self._qy = qx, qy
         self._omega = omega_from_k(np.hypot(qx, qy), self.sea.depth, self.sea.g)
         self._multipliers = self._multipliers_for(qx, qy)
-        settled = self._ramps[-1].target if self._ramps else self._amplitude0
+        settled = self._states.get(len(self._ramps), len(self._ramps))
         self._settled_amplitudes = self._half_amplitudes(settled[self._cell])  # after the last ramp
         self._lane_cells = self._assign_cells(n)
 
@@ -274,18 +275,36 @@ class Ocean:
         duration = require_positive("ramp duration", duration)
         if self._ramps and start < self._ramps[-1].start + self._ramps[-1].duration:
             raise ParameterError("a sea-state ramp must start after the previous one has ended")
-        self._ramps.append(_Ramp(start, duration, self._amplitudes_for(sea)[0]))
+        self._ramps.append(_Ramp(start, duration, sea))
+        try:
+            target = self._states.get(len(self._ramps), len(self._ramps))
+        except MarinesimError:  # a sea these tiles cannot carry: no ramp
+            self._ramps.pop()
+            raise
+        used = target != 0
+        self._used |= used | _mirror(used)
         self._index_cells()
 
+    def _state(self, ramps: int) -> np.ndarray:
+        """Complex amplitude of every cell after the first ``ramps`` ramps, shape (tiles, N, N)."""
+        return self._amplitude0 if ramps == 0 else self._amplitudes_for(self._ramps[ramps - 1].sea)[0]
+
     def amplitudes(self, t: float) -> np.ndarray:
-        """Complex amplitude of every cell at time ``t`` (s), shape (tiles, N, N)."""
-        amplitude = self._amplitude0
-        for ramp in self._ramps:
-            if t <= ramp.start:
-                break
-            s = (t - ramp.start) / ramp.duration
-            amplitude = ramp.target if s >= 1.0 else amplitude + (3.0 * s * s - 2.0 * s**3) * (ramp.target - amplitude)
-        return amplitude
+        """Complex amplitude of every cell at time ``t`` (s), shape (tiles, N, N).
+
+        Only the newest states stay in memory, so live changes do not add up: a time before the
+        last two ramps costs recomputing its states (``cell_variances``), to the same bits.
+        """
+        started = sum(1 for ramp in self._ramps if t > ramp.start)
+        after = self._states.get(started, len(self._ramps))
+        if started == 0:
+            return after
+        ramp = self._ramps[started - 1]
+        s = (t - ramp.start) / ramp.duration
+        if s >= 1.0:
+            return after
+        before = self._states.get(started - 1, len(self._ramps))
+        return before + (3.0 * s * s - 2.0 * s**3) * (after - before)
 
     def _settled(self, t: float) -> bool:
         """Whether ``t`` (s) is after the last ramp (or there is none): the amplitudes no longer change."""

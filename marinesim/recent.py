@@ -1,0 +1,30 @@
+"""A history computed on demand of which only the newest entries stay in memory.
+
+Live changes in a training session (a new sea state, speed or heading) each add an entry, a
+few megabytes, to a timeline that must stay queryable at any time. Keeping every entry would
+grow memory with every change; :class:`Recent` keeps the two newest and the last older one
+asked for, and recomputes the others when asked: ``compute`` is a pure function of the index,
+so a recomputed entry is bit-identical to the one dropped.
+"""
+
+from __future__ import annotations
+
+from typing import Callable, Generic, TypeVar
+
+T = TypeVar("T")
+
+
+class Recent(Generic[T]):
+    """Entries ``compute(index)`` for ``index = 0, 1, 2, ...``; at most three kept."""
+
+    def __init__(self, compute: Callable[[int], T]) -> None:
+        self._compute = compute
+        self._kept: dict[int, T] = {}
+
+    def get(self, index: int, newest: int) -> T:
+        """Entry ``index`` of a history whose newest entry is ``newest``."""
+        if index not in self._kept:
+            self._kept[index] = self._compute(index)
+        value = self._kept[index]
+        self._kept = {i: v for i, v in self._kept.items() if i >= newest - 1 or i == index}
+        return value
