@@ -21,6 +21,10 @@ class Recent(Generic[T]):
         self._compute = compute
         self._kept: dict[int, T] = {}
 
+    def put(self, index: int, value: T) -> None:
+        """Give entry ``index`` computed elsewhere (it must equal ``compute(index)``)."""
+        self._kept[index] = value
+
     def get(self, index: int, newest: int) -> T:
         """Entry ``index`` of a history whose newest entry is ``newest``."""
         if index not in self._kept:

@@ -11,6 +11,7 @@ from __future__ import annotations
 import dataclasses
 import math
 import re
+import threading
 import tracemalloc
 from pathlib import Path
 
@@ -20,12 +21,15 @@ import pytest
 
 from marinesim.cli import main
 from marinesim.constants import KNOT
+from marinesim.errors import ParameterError
 from marinesim.gl import GraphicsError
 from marinesim.render.camera import BridgeCamera
 from marinesim.render.offscreen import Offscreen, render_video
 from marinesim.render.renderer import RenderOptions
-from marinesim.render.simulation import Simulation, scaled_sea
+from marinesim.render.simulation import PREPARE_S, Simulation, scaled_sea
 from marinesim.scenario import load_scenario
+from marinesim.scenario.export import build_ocean
+from marinesim.sea.cascades import cell_variances
 from marinesim.solver.footprint import HullPose
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -239,6 +243,49 @@ def test_changes_asked_for_during_a_blend_add_up(default):
     assert len(sim.legs) == 5, "each change should have started in turn"
 
 
+def test_a_sea_change_is_prepared_off_the_frame_thread_and_starts_at_a_fixed_time(default, monkeypatch):
+    """The costly part of a sea change (every cell's variance, 0.1-0.2 s at 4 x 256^2) runs on the
+    change's worker while frames go on; on the frame thread it would stall the picture at each key
+    press. The change starts PREPARE_S after it was asked for, however fast the worker was."""
+    threads = []
+
+    def variances(*args):
+        threads.append(threading.current_thread().name)
+        return cell_variances(*args)
+
+    monkeypatch.setattr("marinesim.sea.ocean.cell_variances", variances)
+    sim = Simulation(default, wake=False)
+    sim.advance(1.0)
+    threads.clear()
+    sim.change(hs_factor=1.3, ramp_s=4.0)
+    assert sim.sea.hs == pytest.approx(1.3 * default.sea.hs)  # the HUD shows what was asked for at once
+    assert len(sim.legs) == 1
+    while len(sim.legs) == 1:
+        sim.advance(1 / 60)
+    assert sim.legs[-1].start == pytest.approx(1.0 + PREPARE_S, abs=1e-12)
+    assert threads and all(name.startswith("sea-change") for name in threads), threads
+    sim.advance(10.0)
+    assert sim.ocean.components(sim.time).variance == pytest.approx(1.3**2 * build_ocean(default).components().variance,
+                                                                    rel=1e-9)
+    sim.close()
+
+
+def test_a_sea_change_the_ocean_cannot_carry_is_refused_when_asked(underway, tmp_path):
+    """A regular wave's period change needs a tile the ocean does not have: the refusal must come
+    from change() (the viewer shows it), not half a second later from the frame loop."""
+    text = underway.path.read_text() + '\n[[sea]]\ntype = "regular"\nheight_m = 1.0\nperiod_s = 8.0\nfrom_deg = 90.0\n'
+    path = tmp_path / "regular.toml"
+    path.write_text(text)
+    sim = Simulation(load_scenario(path), wake=False)
+    with pytest.raises(ParameterError, match="cannot carry a regular wave of 8.4 s"):
+        sim.change(tp_factor=1.05, ramp_s=5.0)
+    sim.advance(1.0)  # nothing was left waiting
+    assert len(sim.legs) == 1 and sim.sea.tp == pytest.approx(load_scenario(path).sea.tp)
+    sim.change(hs_factor=1.1, ramp_s=5.0)  # heights can change
+    sim.advance(6.0)
+    assert len(sim.legs) == 2
+
+
 def test_a_long_session_of_changes_keeps_memory_flat_and_the_past_exact(default):
     """Twenty sea and speed changes, as an instructor makes in a training session: memory stays
     flat (each change used to keep its sea's amplitude grid and the ship's response to it, 10 MB
@@ -246,8 +293,9 @@ def test_a_long_session_of_changes_keeps_memory_flat_and_the_past_exact(default)
     dropped, come back to the same bits."""
     sim = Simulation(default, wake=False)
     sim.advance(2.0)
-    sim.change(hs_factor=1.2, speed_kn=6.0, ramp_s=2.0)
-    times = np.array([3.0, 4.25])  # blending into the first change, then settled in it (the next starts at 4.5)
+    sim.change(hs_factor=1.2, speed_kn=6.0, ramp_s=1.0)  # starts at 2.5 s (PREPARE_S), settled at 3.5 s
+    sim.advance(2.0)
+    times = np.array([3.0, 3.75])  # blending into the first change, then settled in it
     past = sim.frame(times)
     tracemalloc.start()
     held = []

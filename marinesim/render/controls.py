@@ -16,6 +16,7 @@ from typing import Callable
 import numpy as np
 
 from marinesim.constants import KNOT
+from marinesim.errors import MarinesimError
 from marinesim.render.session import Session
 from marinesim.scenario.export import write_csv_block
 
@@ -103,7 +104,10 @@ class Controls:
         """React to the key named ``key``; unknown keys do nothing."""
         action = self.actions().get(key)
         if action is not None:
-            action()
+            try:
+                action()
+            except MarinesimError as error:  # e.g. a period change the ocean's tiles cannot carry
+                self.message = str(error)
 
     def actions(self) -> dict[str, Callable[[], None]]:
         sim = self.session.sim

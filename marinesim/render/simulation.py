@@ -36,8 +36,25 @@ from marinesim.wake.compute import QUALITATIVE_BELOW_FROUDE, Wake, WakeGrid, fro
 
 RAMP_S = 20.0
 """Default time over which a live change blends in (s)."""
+PREPARE_S = 0.5
+"""A sea change starts this long (s) after it is asked for, or when the blend before it ends if
+later: meanwhile a worker thread computes its amplitudes (:meth:`Ocean.prepare`, 0.1-0.2 s at
+4 x 256^2), so the frames go on without a hitch. The start is a fixed time, never "when the
+worker is done": the same changes give the same timeline whatever the machine."""
 WAKE_GRID = WakeGrid()
 """The viewer's wake grid: the default one, so the viewer reads the wakes the headless run cached."""
+
+
+@dataclass(frozen=True)
+class _Change:
+    """A change asked for and not yet started; ``None`` leaves that quantity as it is."""
+
+    sea: SeaState | None
+    speed: float | None
+    heading: float | None
+    ramp_s: float
+    ready_at: float                 # s, the earliest start
+    prepared: Future | None = None  # the ocean's PreparedSea for ``sea``, computing
 
 
 @dataclass(frozen=True)
@@ -74,7 +91,8 @@ class Simulation:
         self.legs = [Leg(0.0, 0.0, scenario.sea, Track(heading, speed))]
         self._responses = Recent(self._respond)
         """The vessel's response on each leg (the newest kept, older recomputed: memory stays flat)."""
-        self._pending: list[tuple[SeaState | None, float | None, float | None, float]] = []
+        self._pending: list[_Change] = []
+        self._preparing = ThreadPoolExecutor(max_workers=1, thread_name_prefix="sea-change")
         self._last_pose: tuple[float, int, HullPose | None] = (math.nan, 0, None)
         self.wake_on = wake and self.vessel is not None and self.vessel.hull is not None
         self._wake_grid = wake_grid
@@ -102,33 +120,35 @@ class Simulation:
         if not math.isfinite(dt) or dt < 0:
             raise ParameterError(f"time step must be a finite non-negative number of seconds, got {dt!r}")
         self.time += dt
-        while self._pending and self.time >= self._blend_end():
-            self._start(*self._pending.pop(0), at=max(self._blend_end(), self.time - dt))
+        while self._pending and self.time >= (at := self._next_start()):
+            self._start(self._pending.pop(0), at)
 
-    def _blend_end(self) -> float:
+    def _next_start(self) -> float:
+        """When the first waiting change starts (s): once asked and prepared, after the blend before it."""
         last = self.legs[-1]
-        return last.start + last.ramp_s
+        return max(last.start + last.ramp_s, self._pending[0].ready_at)
 
-    def _requested(self, field: int):
-        """The newest waiting change's value of ``field`` (0 sea, 1 speed, 2 heading), or None."""
-        return next((change[field] for change in reversed(self._pending) if change[field] is not None), None)
+    def _requested(self, field: str):
+        """The newest waiting change's value of ``field`` (sea, speed, heading), or None."""
+        values = (getattr(change, field) for change in reversed(self._pending))
+        return next((value for value in values if value is not None), None)
 
     @property
     def sea(self) -> SeaState:
         """The sea state the ocean is at, ramping to, or will ramp to once the waiting changes start."""
-        requested = self._requested(0)
+        requested = self._requested("sea")
         return self.legs[-1].sea if requested is None else requested
 
     @property
     def speed_m_s(self) -> float:
         """Speed the vessel is at or changing to (waiting changes included)."""
-        requested = self._requested(1)
+        requested = self._requested("speed")
         return self.legs[-1].track.speed if requested is None else requested
 
     @property
     def heading_deg(self) -> float:
         """Compass heading the vessel is on or turning to (waiting changes included)."""
-        requested = self._requested(2)
+        requested = self._requested("heading")
         return math_to_compass(self.legs[-1].track.heading if requested is None else requested)
 
     def change(self, *, hs_factor: float = 1.0, tp_factor: float = 1.0, turn_waves_deg: float = 0.0,
@@ -137,24 +157,26 @@ class Simulation:
         directions turned by ``turn_waves_deg`` (compass, clockwise), a new speed or compass heading."""
         if speed_kn is not None and not 0.0 <= speed_kn <= MAX_SPEED_KN:
             raise ParameterError(f"speed must be within 0..{MAX_SPEED_KN:g} kn, got {speed_kn!r}")
-        sea = None
-        if (hs_factor, tp_factor, turn_waves_deg) != (1.0, 1.0, 0.0):
-            sea = scaled_sea(self.sea, hs_factor, tp_factor, turn_waves_deg)
         speed = None if speed_kn is None else speed_kn * KNOT
         heading = None if heading_deg is None else compass_to_math(heading_deg % 360.0)
-        self._pending.append((sea, speed, heading, float(ramp_s)))
+        change = _Change(None, speed, heading, float(ramp_s), self.time)
+        if (hs_factor, tp_factor, turn_waves_deg) != (1.0, 1.0, 0.0):
+            sea = scaled_sea(self.sea, hs_factor, tp_factor, turn_waves_deg)
+            self.ocean.check(sea)
+            change = dataclasses.replace(change, sea=sea, ready_at=self.time + PREPARE_S,
+                                         prepared=self._preparing.submit(self.ocean.prepare, sea))
+        self._pending.append(change)
         self.advance(0.0)
 
-    def _start(self, sea: SeaState | None, speed: float | None, heading: float | None, ramp_s: float,
-               at: float) -> None:
+    def _start(self, change: _Change, at: float) -> None:
         t, last = at, self.legs[-1]
-        if sea is not None:
-            self.ocean.ramp_to(sea, t, ramp_s)
+        if change.sea is not None:
+            self.ocean.ramp_to(change.prepared.result(), t, change.ramp_s)  # ready unless the machine is slow
         x, y = last.track_point(t)[0]
-        heading = last.track.heading if heading is None else heading
-        speed = last.track.speed if speed is None else speed
+        heading = last.track.heading if change.heading is None else change.heading
+        speed = last.track.speed if change.speed is None else change.speed
         start = (x - speed * math.cos(heading) * t, y - speed * math.sin(heading) * t)
-        self.legs.append(Leg(t, ramp_s, sea or last.sea, Track(heading, speed, *start)))
+        self.legs.append(Leg(t, change.ramp_s, change.sea or last.sea, Track(heading, speed, *start)))
         if self.vessel is not None:
             self.response(len(self.legs) - 1)  # computed now, at the change, not in the next frame
         if self.wake_on:
@@ -257,6 +279,7 @@ class Simulation:
         return f"Kelvin wake Fn {froude:.2f}"
 
     def close(self) -> None:
+        self._preparing.shutdown(wait=False, cancel_futures=True)
         if self._pool is not None:
             self._pool.shutdown(wait=False, cancel_futures=True)
 

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from marinesim.errors import MarinesimError, ParameterError, require_at_least, require_finite, require_positive
+from marinesim.errors import ParameterError, require_at_least, require_finite, require_positive
 from marinesim.recent import Recent
 from marinesim.sea.cascades import Tile, cell_variances, choose_tiles, regular_tile
 from marinesim.sea.dispersion import omega_from_k
@@ -95,6 +95,15 @@ class PointSample:
     displacement_y: np.ndarray
     slope_x: np.ndarray
     slope_y: np.ndarray
+
+
+@dataclass(frozen=True, eq=False)
+class PreparedSea:
+    """A sea state with the amplitude of every cell of ``ocean`` computed (:meth:`Ocean.prepare`)."""
+
+    ocean: Ocean
+    sea: SeaState
+    amplitudes: np.ndarray  # complex, m, (tiles, N, N)
 
 
 @dataclass(frozen=True)
@@ -175,17 +184,11 @@ class Ocean:
 
         Also returns the expected variance the tiles carry (m^2): the sum of the cell variances.
         """
-        if sea.depth != self.sea.depth:
-            raise ParameterError("the depth cannot change while the ocean runs")
+        self.check(sea)
         variance = np.stack([cell_variances(tile, sea) for tile in self.tiles])
         amplitude = np.sqrt(variance) * self._noise
         for wave in sea.regular_waves:
             tile = regular_tile(wave, sea, self.resolution)
-            if tile not in self.tiles:
-                raise ParameterError(
-                    f"the ocean's tiles cannot carry a regular wave of {wave.period:g} s in this "
-                    "direction (build the ocean with it, ramps change heights only)"
-                )
             ix, iy = tile.wave_index
             amplitude[self.tiles.index(tile), iy % self.resolution, ix % self.resolution] += (
                 0.5 * wave.height * np.exp(1j * wave.phase))
@@ -265,7 +268,24 @@ class Ocean:
         for lane, (_, cells) in zip(self._lanes, self._lane_cells, strict=True):
             lane.set_multipliers(self._multipliers[:, cells])
 
-    def ramp_to(self, sea: SeaState, start: float, duration: float) -> None:
+    def check(self, sea: SeaState) -> None:
+        """Refuse a sea this ocean cannot ramp to (a new depth, a regular wave off its tiles); cheap."""
+        if sea.depth != self.sea.depth:
+            raise ParameterError("the depth cannot change while the ocean runs")
+        for wave in sea.regular_waves:
+            if regular_tile(wave, sea, self.resolution) not in self.tiles:
+                raise ParameterError(
+                    f"the ocean's tiles cannot carry a regular wave of {wave.period:g} s in this "
+                    "direction (build the ocean with it, ramps change heights only)"
+                )
+
+    def prepare(self, sea: SeaState) -> PreparedSea:
+        """The amplitudes :meth:`ramp_to` needs for ``sea`` (the costly part of a change: the
+        cells' variances). Safe to call on another thread while the ocean runs, as the viewer
+        does so that a live change costs its frames nothing: it reads only what never changes."""
+        return PreparedSea(self, sea, self._amplitudes_for(sea)[0])
+
+    def ramp_to(self, sea: SeaState | PreparedSea, start: float, duration: float) -> None:
         """Change to ``sea`` smoothly over ``[start, start + duration]`` s (smoothstep in time).
 
         The tiles and the seeded noise stay, so the surface changes shape without a jump: each
@@ -275,13 +295,12 @@ class Ocean:
         duration = require_positive("ramp duration", duration)
         if self._ramps and start < self._ramps[-1].start + self._ramps[-1].duration:
             raise ParameterError("a sea-state ramp must start after the previous one has ended")
-        self._ramps.append(_Ramp(start, duration, sea))
-        try:
-            target = self._states.get(len(self._ramps), len(self._ramps))
-        except MarinesimError:  # a sea these tiles cannot carry: no ramp
-            self._ramps.pop()
-            raise
-        used = target != 0
+        prepared = sea if isinstance(sea, PreparedSea) else self.prepare(sea)
+        if prepared.ocean is not self:
+            raise ParameterError("a sea prepared by another ocean cannot ramp this one")
+        self._ramps.append(_Ramp(start, duration, prepared.sea))
+        self._states.put(len(self._ramps), prepared.amplitudes)
+        used = prepared.amplitudes != 0
         self._used |= used | _mirror(used)
         self._index_cells()
 
