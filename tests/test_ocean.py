@@ -336,6 +336,22 @@ def test_ramp_changes_sea_state_without_jumps(north_sea):
         assert np.max(np.abs(h1 - h0)) < 0.02  # m, with ~2 m/s vertical speeds at most
 
 
+def test_a_ramp_onto_cells_no_earlier_state_used(north_sea):
+    """A long-crested sea turned by 30 degrees lies on a new ray of cells: the ocean must grow its
+    per-cell arrays for them, or the turned sea would be drawn without its waves."""
+    beta = north_sea.systems[0].beta
+    before = SeaState((WaveSystem(Jonswap(3.0, 9.0, 3.3), beta, LongCrested()),))
+    turned = SeaState((WaveSystem(Jonswap(3.0, 9.0, 3.3), beta + math.radians(30.0), LongCrested()),))
+    ocean = Ocean(before, seed=5, resolution=64)
+    ocean.fields(1.0)
+    ocean.ramp_to(turned, start=2.0, duration=3.0)
+    fresh = Ocean(turned, seed=5, resolution=64, tiles=ocean.tiles)
+    for a, b in zip(ocean.fields(8.0), fresh.fields(8.0), strict=True):
+        assert np.abs(b.height).max() > 0.1
+        np.testing.assert_allclose(a.height, b.height, rtol=0, atol=1e-6 * np.abs(b.height).max())
+        np.testing.assert_allclose(a.jacobian, b.jacobian, rtol=0, atol=1e-5)
+
+
 def test_many_live_changes_keep_memory_flat_and_the_past_exact(north_sea):
     """Thirty sea changes, as in a long training session: the ocean's memory does not grow with
     them (each ramp used to keep its amplitude grid, 4 x 64^2 complex here, 4 MB at 256^2), and a

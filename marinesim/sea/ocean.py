@@ -168,6 +168,7 @@ class Ocean:
         self._lanes = [Lane(int(g[0]), g.size, self.resolution, fft_backend, max(1, self._threads // len(groups)))
                        for g in groups]
         self._index_cells()
+        self._settle()
 
     # -- construction ---------------------------------------------------------------------
 
@@ -218,9 +219,12 @@ class Ocean:
         self._qx, self._qy = qx, qy
         self._omega = omega_from_k(np.hypot(qx, qy), self.sea.depth, self.sea.g)
         self._multipliers = self._multipliers_for(qx, qy)
-        settled = self._states.get(len(self._ramps), len(self._ramps))
-        self._settled_amplitudes = self._half_amplitudes(settled[self._cell])  # after the last ramp
         self._lane_cells = self._assign_cells(n)
+
+    def _settle(self) -> None:
+        """Keep the spectrum's parts after the last ramp: every frame after it reuses them."""
+        newest = len(self._ramps)
+        self._settled_amplitudes = self._half_amplitudes(self._states.get(newest, newest)[self._cell])
 
     def _assign_cells(self, n: int) -> list[tuple[slice, np.ndarray]]:
         """Give each lane its cells. Per lane: the slice of its representative cells and the
@@ -301,8 +305,11 @@ class Ocean:
         self._ramps.append(_Ramp(start, duration, prepared.sea))
         self._states.put(len(self._ramps), prepared.amplitudes)
         used = prepared.amplitudes != 0
-        self._used |= used | _mirror(used)
-        self._index_cells()
+        used |= _mirror(used)
+        if np.any(used & ~self._used):  # new cells: every per-cell array grows
+            self._used |= used
+            self._index_cells()
+        self._settle()
 
     def _state(self, ramps: int) -> np.ndarray:
         """Complex amplitude of every cell after the first ``ramps`` ramps, shape (tiles, N, N)."""

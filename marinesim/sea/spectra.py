@@ -7,6 +7,7 @@ numerically so that ``4 sqrt(m0) = Hs`` exactly (the DNV factor ``A_g`` is only 
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass, field
 from typing import Callable, Protocol
@@ -128,18 +129,26 @@ class Jonswap:
         gamma = require_at_least("gamma", self.gamma, 1.0)
         if gamma > 20.0:
             raise ParameterError(f"gamma must be <= 20, got {self.gamma!r}")
-        object.__setattr__(self, "_scale", 1.0)
-        m0 = spectral_moment(self.density, 0, self.omega_peak)
-        object.__setattr__(self, "_scale", self.hs**2 / 16.0 / m0)
+        object.__setattr__(self, "_scale", self.hs**2 / 16.0 / _jonswap_shape_m0(self.tp, gamma, self.depth, self.g))
 
     @property
     def omega_peak(self) -> float:
         return 2.0 * math.pi / self.tp
 
     def density(self, omega: np.ndarray) -> np.ndarray:
-        wp = self.omega_peak
-        shape = _pm_shape(omega, wp) * _peak_enhancement(omega, wp, self.gamma)
-        return self._scale * shape * kitaigorodskii_factor(omega, self.depth, self.g)
+        return self._scale * _jonswap_shape(omega, self.tp, self.gamma, self.depth, self.g)
+
+
+def _jonswap_shape(omega: np.ndarray, tp: float, gamma: float, depth: float, g: float) -> np.ndarray:
+    """The JONSWAP (TMA at finite depth) shape before scaling to Hs."""
+    wp = 2.0 * math.pi / tp
+    return _pm_shape(omega, wp) * _peak_enhancement(omega, wp, gamma) * kitaigorodskii_factor(omega, depth, g)
+
+
+@functools.lru_cache(maxsize=256)
+def _jonswap_shape_m0(tp: float, gamma: float, depth: float, g: float) -> float:
+    """m0 of :func:`_jonswap_shape`, kept: a live change of Hs alone needs no new quadrature."""
+    return spectral_moment(lambda w: _jonswap_shape(w, tp, gamma, depth, g), 0, 2.0 * math.pi / tp)
 
 
 @dataclass(frozen=True)
