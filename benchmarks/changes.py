@@ -2,7 +2,7 @@
 
 The default scenario runs at 60 frames/s of simulated time (``Simulation.advance`` and the
 ocean's fields, no GL). Every 15 s an instructor's key press changes the sea (Hs x1.1 or /1.1
-over 10 s). Printed: the frame time without changes (the baseline, same run), the longest frame
+over 10 s). Printed: the frame time with no blend under way (the baseline, same run), the longest frame
 within a second of each key press, the key press itself, and the traced memory after each
 change. Run: ``python benchmarks/changes.py [--changes 20]``.
 """
@@ -50,7 +50,7 @@ def main() -> None:
         press.append(time.perf_counter() - start)
         frames = [frame(sim) for _ in range(int(15.0 / FRAME_S))]
         worst.append(max(frames[:60]))
-        steady += frames[60:]
+        steady += frames[int(11.0 / FRAME_S):]  # after the blend (0.5 s + 10 s)
     sim.close()
     # memory on its own pass: tracing every allocation would slow the frames timed above
     sim = Simulation(scenario, wake=False)

@@ -2,9 +2,10 @@
 
 Live changes in a training session (a new sea state, speed or heading) each add an entry, a
 few megabytes, to a timeline that must stay queryable at any time. Keeping every entry would
-grow memory with every change; :class:`Recent` keeps the two newest and the last older one
-asked for, and recomputes the others when asked: ``compute`` is a pure function of the index,
-so a recomputed entry is bit-identical to the one dropped.
+grow memory with every change; :class:`Recent` keeps the two newest and the three older ones
+asked for last (a blend reads an entry and the one before it, and a scan over the past reads
+them in order), and recomputes the others when asked: ``compute`` is a pure function of the
+index, so a recomputed entry is bit-identical to the one dropped.
 """
 
 from __future__ import annotations
@@ -15,11 +16,14 @@ T = TypeVar("T")
 
 
 class Recent(Generic[T]):
-    """Entries ``compute(index)`` for ``index = 0, 1, 2, ...``; at most three kept."""
+    """Entries ``compute(index)`` for ``index = 0, 1, 2, ...``; at most five kept."""
+
+    OLDER_KEPT = 3
 
     def __init__(self, compute: Callable[[int], T]) -> None:
         self._compute = compute
         self._kept: dict[int, T] = {}
+        self._older: list[int] = []  # older entries asked for, the last first
 
     def put(self, index: int, value: T) -> None:
         """Give entry ``index`` computed elsewhere (it must equal ``compute(index)``)."""
@@ -30,5 +34,7 @@ class Recent(Generic[T]):
         if index not in self._kept:
             self._kept[index] = self._compute(index)
         value = self._kept[index]
-        self._kept = {i: v for i, v in self._kept.items() if i >= newest - 1 or i == index}
+        if index < newest - 1:
+            self._older = [index] + [i for i in self._older if i != index][:self.OLDER_KEPT - 1]
+        self._kept = {i: v for i, v in self._kept.items() if i >= newest - 1 or i in self._older}
         return value

@@ -14,6 +14,7 @@ from scipy import integrate, optimize
 from marinesim.angles import wave_beta_from_compass
 from marinesim.constants import G
 from marinesim.errors import ParameterError
+from marinesim.recent import Recent
 from marinesim.sea import (
     Cos2s,
     Jonswap,
@@ -359,17 +360,17 @@ def test_many_live_changes_keep_memory_flat_and_the_past_exact(north_sea):
     calm, rough = ramp_pair(north_sea)
     ocean = Ocean(calm, seed=3, resolution=64)
     grid_mb = ocean.amplitudes(0.0).nbytes / 2**20
-    for i in range(3):
+    for i in range(2):
         ocean.ramp_to(rough if i % 2 == 0 else calm, start=10.0 * i, duration=5.0)
-    past = [(f.height.copy(), f.jacobian.copy()) for f in ocean.fields(12.5)]
+    past = [(f.height.copy(), f.jacobian.copy()) for f in ocean.fields(12.5)]  # the newest two states, as computed
     past_components = ocean.components(12.5, variance_fraction=0.999)
     tracemalloc.start()
     held = []
-    for i in range(3, 30):
+    for i in range(2, 30):
         ocean.ramp_to(rough if i % 2 == 0 else calm, start=10.0 * i, duration=5.0)
         held.append(tracemalloc.get_traced_memory()[0] / 2**20)  # every buffer now allocated while traced
     tracemalloc.stop()
-    assert held[-1] - held[4] < grid_mb  # keeping 25 more grids would add 25 x grid_mb
+    assert held[-1] - held[4] < grid_mb  # keeping 23 more grids would add 23 x grid_mb
     for (height, jacobian), f in zip(past, ocean.fields(12.5), strict=True):
         np.testing.assert_array_equal(f.height, height)
         np.testing.assert_array_equal(f.jacobian, jacobian)
@@ -378,6 +379,26 @@ def test_many_live_changes_keep_memory_flat_and_the_past_exact(north_sea):
     np.testing.assert_array_equal(again.omega, past_components.omega)
     # and the newest sea is still the one asked for last (i = 29: calm)
     assert ocean.components(400.0).variance == pytest.approx(Ocean(calm, seed=3, resolution=64).components().variance)
+
+
+def test_reading_the_past_in_order_computes_each_state_once():
+    """A blend reads a state and the one before it, and a scan over the past (a recording, a
+    chart) reads them in order. Keeping a single older state made every step recompute both,
+    150 ms each at 4 x 256^2, in every frame that showed an old blend."""
+    computed = []
+
+    def square(index: int) -> int:
+        computed.append(index)
+        return index * index
+
+    history = Recent(square)
+    newest = 10
+    for index in range(newest + 1):  # the history grows, its newest two kept
+        history.get(index, index)
+    computed.clear()
+    for index in range(1, newest - 1):
+        assert history.get(index, newest) == index**2 and history.get(index - 1, newest) == (index - 1) ** 2
+    assert computed == [1, 0, *range(2, newest - 1)]  # each once, in the order first asked for
 
 
 def test_bad_ramps_are_refused(north_sea):

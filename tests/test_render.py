@@ -219,7 +219,7 @@ def test_live_changes_blend_smoothly_and_do_not_depend_on_the_frame_rate(default
     fast, slow = run(1 / 60), run(1 / 7)
     times = np.arange(0.0, 30.0, 0.05)
     assert np.allclose(fast.frame(times)["heave_m"], slow.frame(times)["heave_m"], atol=1e-9)
-    a, b = fast.pose(17.3), slow.pose(17.3)  # the change starts at 5 s up to the rounding of summed frame times
+    a, b = fast.pose(17.3), slow.pose(17.3)  # the change starts at 5.5 s, up to the rounding of summed frame times
     assert np.allclose([a.x, a.y, a.heading, *a.motion], [b.x, b.y, b.heading, *b.motion], rtol=0, atol=1e-9)
     heave = fast.frame(times)["heave_m"]
     assert np.abs(np.diff(heave)).max() < 0.1, "heave jumps during the blend"
@@ -284,6 +284,19 @@ def test_a_sea_change_the_ocean_cannot_carry_is_refused_when_asked(underway, tmp
     sim.change(hs_factor=1.1, ramp_s=5.0)  # heights can change
     sim.advance(6.0)
     assert len(sim.legs) == 2
+
+
+def test_bad_change_arguments_are_refused_when_asked(default):
+    """A sea change starts PREPARE_S later; its ramp time must still be refused by change(),
+    where the viewer shows the message, and not by a later frame, which would lose the change."""
+    sim = Simulation(default, wake=False)
+    for ramp_s in (0.0, -1.0, math.nan):
+        with pytest.raises(ParameterError, match="ramp time"):
+            sim.change(hs_factor=1.2, ramp_s=ramp_s)
+    sim.advance(2.0)
+    assert len(sim.legs) == 1 and sim.sea.hs == pytest.approx(default.sea.hs)
+    sim.change(speed_kn=6.0, ramp_s=0.0)  # a speed change may be instant
+    assert sim.speed_m_s / KNOT == pytest.approx(6.0) and len(sim.legs) == 2
 
 
 def test_a_long_session_of_changes_keeps_memory_flat_and_the_past_exact(default):

@@ -22,7 +22,7 @@ import numpy as np
 
 from marinesim.angles import compass_to_math, math_to_compass, wave_compass_from_beta
 from marinesim.constants import KNOT
-from marinesim.errors import ParameterError
+from marinesim.errors import ParameterError, require_at_least, require_positive
 from marinesim.hull import hydrostatics
 from marinesim.recent import Recent
 from marinesim.scenario.export import VARIANCE_FRACTION, build_ocean
@@ -159,9 +159,10 @@ class Simulation:
             raise ParameterError(f"speed must be within 0..{MAX_SPEED_KN:g} kn, got {speed_kn!r}")
         speed = None if speed_kn is None else speed_kn * KNOT
         heading = None if heading_deg is None else compass_to_math(heading_deg % 360.0)
-        change = _Change(None, speed, heading, float(ramp_s), self.time)
+        change = _Change(None, speed, heading, require_at_least("ramp time (s)", ramp_s, 0.0), self.time)
         if (hs_factor, tp_factor, turn_waves_deg) != (1.0, 1.0, 0.0):
             sea = scaled_sea(self.sea, hs_factor, tp_factor, turn_waves_deg)
+            require_positive("ramp time of a sea change (s)", ramp_s)  # refused now, not when it starts
             self.ocean.check(sea)
             change = dataclasses.replace(change, sea=sea, ready_at=self.time + PREPARE_S,
                                          prepared=self._preparing.submit(self.ocean.prepare, sea))

@@ -121,15 +121,17 @@ class Jonswap:
     _scale: float = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
-        require_positive("hs", self.hs)
-        require_positive("tp", self.tp)
-        require_positive("depth", self.depth, allow_infinite=True)
+        values = {"hs": require_positive("hs", self.hs), "tp": require_positive("tp", self.tp),
+                  "depth": require_positive("depth", self.depth, allow_infinite=True), "g": float(self.g)}
         if self.gamma is None:
-            object.__setattr__(self, "gamma", dnv_gamma(self.hs, self.tp))
-        gamma = require_at_least("gamma", self.gamma, 1.0)
-        if gamma > 20.0:
-            raise ParameterError(f"gamma must be <= 20, got {self.gamma!r}")
-        object.__setattr__(self, "_scale", self.hs**2 / 16.0 / _jonswap_shape_m0(self.tp, gamma, self.depth, self.g))
+            values["gamma"] = dnv_gamma(values["hs"], values["tp"])
+        values["gamma"] = require_at_least("gamma", values.get("gamma", self.gamma), 1.0)
+        if values["gamma"] > 20.0:
+            raise ParameterError(f"gamma must be <= 20, got {values['gamma']!r}")
+        for name, value in values.items():  # plain floats: the m0 cache's key, and one arithmetic
+            object.__setattr__(self, name, value)
+        m0 = _jonswap_shape_m0(self.tp, self.gamma, self.depth, self.g)
+        object.__setattr__(self, "_scale", self.hs**2 / 16.0 / m0)
 
     @property
     def omega_peak(self) -> float:
