@@ -121,15 +121,13 @@ class Jonswap:
     _scale: float = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
-        values = {"hs": require_positive("hs", self.hs), "tp": require_positive("tp", self.tp),
-                  "depth": require_positive("depth", self.depth, allow_infinite=True), "g": float(self.g)}
-        if self.gamma is None:
-            values["gamma"] = dnv_gamma(values["hs"], values["tp"])
-        values["gamma"] = require_at_least("gamma", values.get("gamma", self.gamma), 1.0)
-        if values["gamma"] > 20.0:
-            raise ParameterError(f"gamma must be <= 20, got {values['gamma']!r}")
-        for name, value in values.items():  # plain floats: the m0 cache's key, and one arithmetic
-            object.__setattr__(self, name, value)
+        hs, tp = require_positive("hs", self.hs), require_positive("tp", self.tp)
+        depth = require_positive("depth", self.depth, allow_infinite=True)
+        gamma = require_at_least("gamma", dnv_gamma(hs, tp) if self.gamma is None else self.gamma, 1.0)
+        if gamma > 20.0:
+            raise ParameterError(f"gamma must be <= 20, got {self.gamma!r}")
+        for name, value in (("hs", hs), ("tp", tp), ("gamma", gamma), ("depth", depth), ("g", float(self.g))):
+            object.__setattr__(self, name, value)  # plain floats: the m0 cache's key, and one arithmetic
         m0 = _jonswap_shape_m0(self.tp, self.gamma, self.depth, self.g)
         object.__setattr__(self, "_scale", self.hs**2 / 16.0 / m0)
 
