@@ -2,10 +2,10 @@
 
 The simulation owns no GL state; the renderer reads it. Its state is a timeline of *legs*: the
 vessel's straight track and its response to the sea at that time. A live change (sea state,
-speed, heading) starts a new leg that blends in over ``ramp_s`` seconds with the smoothstep
-weight ``w = 3 s^2 - 2 s^3``, the same weight the ocean ramps its amplitudes with
-(:meth:`Ocean.ramp_to`): the response is linear in the amplitudes, so blending the two legs'
-motions with ``w`` is the response to the ramping sea. Track position and heading blend with the
+speed, heading) starts a new leg that blends in over ``ramp_s`` seconds with the weight
+``w = 3 s^2 - 2 s^3`` (:func:`~marinesim.sea.ocean.smoothstep`), the one the ocean ramps its
+amplitudes with (:meth:`Ocean.ramp_to`): the response is linear in the amplitudes, so blending
+the two legs' motions with ``w`` is the response to the ramping sea. Track position and heading blend with the
 same weight, which turns the ship along a smooth curve. A change asked for while another blends
 waits for it to end. Motions, poses and recordings at any time come from the timeline, so the
 same scenario, seed and changes give the same numbers whatever the frame rate.
@@ -27,6 +27,7 @@ from marinesim.hull import hydrostatics
 from marinesim.recent import Recent
 from marinesim.scenario.export import VARIANCE_FRACTION, build_ocean
 from marinesim.scenario.schema import MAX_SPEED_KN, Scenario
+from marinesim.sea.ocean import smoothstep
 from marinesim.sea.seastate import RegularWave, SeaState, WaveSystem
 from marinesim.sea.spectra import Jonswap, JonswapFetch
 from marinesim.solver.footprint import HullPose
@@ -68,7 +69,7 @@ class Leg:
 
     def weight(self, t: np.ndarray) -> np.ndarray:
         s = np.clip((np.asarray(t, float) - self.start) / self.ramp_s, 0.0, 1.0) if self.ramp_s > 0 else 1.0
-        return np.broadcast_to(3.0 * s * s - 2.0 * s**3, np.shape(t)).astype(float)
+        return np.broadcast_to(smoothstep(s), np.shape(t)).astype(float)
 
     def track_point(self, t: np.ndarray) -> np.ndarray:
         """(T, 2) track point (m, E frame)."""

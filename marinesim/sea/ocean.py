@@ -330,7 +330,7 @@ class Ocean:
         if s >= 1.0:
             return after
         before = self._states.get(started - 1, len(self._ramps))
-        return before + (3.0 * s * s - 2.0 * s**3) * (after - before)
+        return before + smoothstep(s) * (after - before)
 
     def _settled(self, t: float) -> bool:
         """Whether ``t`` (s) is after the last ramp (or there is none): the amplitudes no longer change."""
@@ -401,6 +401,11 @@ class Ocean:
             waves = np.exp(-1j * (np.outer(x[lo:hi], c.kx) + np.outer(y[lo:hi], c.ky)))
             fields[:, lo:hi] = (waves @ weights.T).real.T
         return PointSample(*fields)
+
+
+def smoothstep(s: float | np.ndarray) -> float | np.ndarray:
+    """The weight ``3 s^2 - 2 s^3`` of the new state at fraction ``s`` of a ramp (0 to 1, flat at both ends)."""
+    return 3.0 * s * s - 2.0 * s**3
 
 
 def _mirror(used: np.ndarray) -> np.ndarray:
