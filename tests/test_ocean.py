@@ -30,6 +30,7 @@ from marinesim.sea import (
 from marinesim.sea.cascades import TILE_RATIO
 from marinesim.sea.dispersion import omega_from_k
 from marinesim.sea.summary import surface_summary
+from marinesim.sea.synthesis import available_cpus
 from tests.conftest import close_angle_deg
 
 FIELD_NAMES = ("height", "displacement_x", "displacement_y", "slope_x", "slope_y")
@@ -110,6 +111,20 @@ def test_fields_do_not_depend_on_how_the_tiles_are_split_into_lanes(north_sea):
     for a, b in zip(one, three):
         for x, y in zip(a[1:], b[1:]):
             np.testing.assert_allclose(x, y, rtol=0, atol=1e-6 * np.abs(x).max() + 1e-7)
+
+
+@pytest.mark.skipif(not hasattr(os, "sched_setaffinity") or len(available_cpus()) < 2,
+                    reason="needs two CPUs and thread affinity")
+def test_each_lane_runs_on_a_cpu_of_its_own(north_sea):
+    """Two lanes, two workers, each pinned to a different CPU. Unpinned, a viewer calling once per
+    frame got both lanes on one CPU about half the time, and an update took their sum."""
+    ocean = Ocean(north_sea, seed=1, resolution=64, threads=2)
+    before = [f.height.copy() for f in ocean.fields(3.0)]
+    cpus = [worker.submit(os.sched_getaffinity, 0).result() for worker in ocean._workers]
+    assert cpus == [{cpu} for cpu in available_cpus()[:2]]
+    after = [f.height for f in ocean.fields(3.0)]
+    for a, b in zip(before, after):
+        np.testing.assert_array_equal(a, b)
 
 
 def test_changing_choppiness_on_a_running_ocean_rebuilds_every_lane(north_sea):

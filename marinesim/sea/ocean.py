@@ -17,14 +17,13 @@ spectrum ``C[q] = (a[-q] e^{iwt} + conj(a[q]) e^{-iwt}) / 2`` for the height and
 
 the eight real fields packed two per complex FFT (``F + iG`` is the spectrum of ``f + ig``).
 Only the cells of each tile's band are touched per frame, and the tiles are split into lanes
-(:mod:`marinesim.sea.synthesis`) that run on worker threads.
+(:mod:`marinesim.sea.synthesis`) that run on worker threads, one per CPU.
 """
 
 from __future__ import annotations
 
 import math
-import os
-from concurrent.futures import ThreadPoolExecutor, wait
+from concurrent.futures import wait
 from dataclasses import dataclass
 
 import numpy as np
@@ -34,7 +33,7 @@ from marinesim.recent import Recent
 from marinesim.sea.cascades import Tile, cell_variances, choose_tiles, regular_tile
 from marinesim.sea.dispersion import omega_from_k
 from marinesim.sea.seastate import SeaState
-from marinesim.sea.synthesis import Lane
+from marinesim.sea.synthesis import Lane, available_cpus, lane_workers
 
 FIELD_PAIRS = (("height", "displacement_xy"), ("displacement_x", "displacement_y"),
                ("slope_x", "slope_y"), ("1 + displacement_xx", "1 + displacement_yy"))
@@ -119,7 +118,8 @@ class Ocean:
     ``tiles`` default to :func:`choose_tiles` (``tile_count`` cascades of ``resolution``^2).
     ``random_amplitudes=False`` gives deterministic amplitudes ``sqrt(2 E)`` with random
     phases. ``choppiness`` scales the horizontal displacement (1 = Gerstner). ``threads``
-    (default: every CPU) synthesise the fields, one lane of tiles each.
+    (default: every CPU the process may use) synthesise the fields, one lane of tiles each, each
+    on its own CPU; with one lane the calling thread does the work.
     """
 
     def __init__(
@@ -156,14 +156,13 @@ class Ocean:
         self._used |= _mirror(self._used)
         self._choppiness = require_finite("choppiness", choppiness)
         if threads is None:
-            threads = os.cpu_count() or 1
+            threads = len(available_cpus())
         if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)) or threads < 1:
             raise ParameterError(f"threads must be a positive integer, got {threads!r}")
         self._fft_backend, self._threads = fft_backend, int(threads)
         self.lane_count = min(self._threads, len(self.tiles))
         """Lanes of tiles synthesised in parallel, one per thread."""
-        workers = self.lane_count - 1
-        self._pool = ThreadPoolExecutor(workers, thread_name_prefix="ocean") if workers else None
+        self._workers = lane_workers(self.lane_count) if self.lane_count > 1 else []
         groups = np.array_split(np.arange(len(self.tiles)), self.lane_count)
         self._lanes = [Lane(int(g[0]), g.size, self.resolution, fft_backend, max(1, self._threads // len(groups)))
                        for g in groups]
@@ -345,12 +344,13 @@ class Ocean:
         else:
             even, odd = self._half_amplitudes(self.amplitudes(t)[self._cell])
         rows = [r for r, _ in self._lane_cells]
-        waiting = [self._pool.submit(lane.run, t, even[r], odd[r]) for lane, r in zip(self._lanes[1:], rows[1:])]
-        try:  # the first lane on this thread
+        if self._workers:
+            running = [worker.submit(lane.run, t, even[r], odd[r])
+                       for worker, lane, r in zip(self._workers, self._lanes, rows, strict=True)]
+            wait(running)  # every lane done before a result is read (or its error raised)
+            outputs = [future.result() for future in running]
+        else:
             outputs = [self._lanes[0].run(t, even[rows[0]], odd[rows[0]])]
-        finally:  # never leave a lane running into the next call's buffers
-            wait(waiting)
-        outputs += [future.result() for future in waiting]
         return [
             TileFields(self.tiles[lane.first + i], out[i, 0].real, out[i, 1].real, out[i, 1].imag,
                        out[i, 2].real, out[i, 2].imag, jacobian[i])

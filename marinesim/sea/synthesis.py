@@ -1,8 +1,9 @@
 """One lane of the ocean's per-frame synthesis: a run of tiles, their spectra, FFTs and Jacobians.
 
-The ocean splits its tiles into lanes, one per worker thread, so that one lane's element-wise
-work overlaps another's FFT (numpy and FFTW release the GIL). A lane owns its FFT buffers: the
-lanes never write the same memory, so the fields do not depend on the threads' timing.
+The ocean splits its tiles into lanes, one per worker thread (:func:`lane_workers`), so that the
+lanes run at the same time on different CPUs (numpy and FFTW release the GIL). A lane owns its
+FFT buffers: the lanes never write the same memory, so the fields do not depend on the threads'
+timing.
 
 Packing per tile (see :data:`~marinesim.sea.ocean.FIELD_PAIRS`): transform 0 holds the height
 and ``dDx/dy``, transform 3 holds ``1 + dDx/dx`` and ``1 + dDy/dy``; the ones come from the
@@ -12,7 +13,10 @@ constant ``1 + i`` in its DC cell, which no wave uses, so the Jacobian
 
 from __future__ import annotations
 
+import contextlib
 import math
+import os
+from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
@@ -75,3 +79,31 @@ class Lane:
         np.multiply(out[:, 0].imag, out[:, 0].imag, out=scratch)
         jacobian -= scratch
         return out, jacobian
+
+
+def available_cpus() -> list[int]:
+    """The CPUs this process may run on (all of them where the OS cannot say)."""
+    if hasattr(os, "sched_getaffinity"):
+        return sorted(os.sched_getaffinity(0))
+    return list(range(os.cpu_count() or 1))
+
+
+def lane_workers(count: int) -> list[ThreadPoolExecutor]:
+    """One single-thread executor per lane, each pinned to its own CPU where the OS allows
+    (round robin if there are more lanes than CPUs).
+
+    Unpinned, the lanes ran one after the other about half the time: a viewer asks for the
+    fields once per frame, the workers sleep in between, and on the 2-CPU test machine the
+    scheduler woke both lanes' threads on one CPU and left the other idle for milliseconds. In a
+    60 Hz loop that made an update 6.6-6.9 ms, against 4.8-5.2 ms pinned (benchmarks/RESULTS.md).
+    """
+    cpus = available_cpus()
+    return [ThreadPoolExecutor(1, thread_name_prefix=f"ocean-lane-{i}", initializer=_pin_to,
+                               initargs=(cpus[i % len(cpus)],))
+            for i in range(count)]
+
+
+def _pin_to(cpu: int) -> None:
+    """Pin the calling thread to ``cpu`` (nothing where the OS does not allow it)."""
+    with contextlib.suppress(AttributeError, OSError):
+        os.sched_setaffinity(0, {cpu})
