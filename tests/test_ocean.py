@@ -5,6 +5,7 @@ import math
 import os
 import subprocess
 import sys
+import threading
 import tracemalloc
 
 import numpy as np
@@ -30,7 +31,7 @@ from marinesim.sea import (
 from marinesim.sea.cascades import TILE_RATIO
 from marinesim.sea.dispersion import omega_from_k
 from marinesim.sea.summary import surface_summary
-from marinesim.sea.synthesis import available_cpus
+from marinesim.sea.synthesis import Lane, available_cpus
 from tests.conftest import close_angle_deg
 
 FIELD_NAMES = ("height", "displacement_x", "displacement_y", "slope_x", "slope_y")
@@ -115,16 +116,34 @@ def test_fields_do_not_depend_on_how_the_tiles_are_split_into_lanes(north_sea):
 
 @pytest.mark.skipif(not hasattr(os, "sched_setaffinity") or len(available_cpus()) < 2,
                     reason="needs two CPUs and thread affinity")
-def test_each_lane_runs_on_a_cpu_of_its_own(north_sea):
-    """Two lanes, two workers, each pinned to a different CPU. Unpinned, a viewer calling once per
-    frame got both lanes on one CPU about half the time, and an update took their sum."""
-    ocean = Ocean(north_sea, seed=1, resolution=64, threads=2)
-    before = [f.height.copy() for f in ocean.fields(3.0)]
-    cpus = [worker.submit(os.sched_getaffinity, 0).result() for worker in ocean._workers]
-    assert cpus == [{cpu} for cpu in available_cpus()[:2]]
-    after = [f.height for f in ocean.fields(3.0)]
-    for a, b in zip(before, after):
-        np.testing.assert_array_equal(a, b)
+def test_each_lane_runs_on_a_cpu_of_its_own(north_sea, monkeypatch):
+    """Two lanes run on two threads, neither the caller's, each pinned to a different CPU.
+    Unpinned, a viewer calling once per frame got both lanes on one CPU in most frames, and an
+    update took their sum."""
+    ran_on = []
+
+    def recording(lane, *args):
+        ran_on.append((threading.get_ident(), frozenset(os.sched_getaffinity(0))))
+        return run(lane, *args)
+
+    run = Lane.run
+    monkeypatch.setattr(Lane, "run", recording)
+    Ocean(north_sea, seed=1, resolution=64, threads=2).fields(3.0)
+    threads, cpus = zip(*ran_on)
+    assert len(set(threads)) == 2 and threading.get_ident() not in threads
+    assert sorted(map(min, cpus)) == available_cpus()[:2] and all(len(c) == 1 for c in cpus)
+
+
+def test_lanes_give_the_same_fields_where_threads_cannot_be_pinned(north_sea, monkeypatch):
+    """Pinning changes where a lane runs, never what it computes: without thread affinity (as on
+    macOS or Windows) the ocean runs its lanes unpinned and gives the same bits."""
+    ocean = Ocean(north_sea, seed=3, resolution=64, threads=2)
+    pinned = [(f.height.copy(), f.jacobian.copy()) for f in ocean.fields(7.0)]
+    monkeypatch.delattr(os, "sched_setaffinity", raising=False)
+    free = Ocean(north_sea, seed=3, resolution=64, threads=2).fields(7.0)
+    for (height, jacobian), f in zip(pinned, free, strict=True):
+        np.testing.assert_array_equal(height, f.height)
+        np.testing.assert_array_equal(jacobian, f.jacobian)
 
 
 def test_changing_choppiness_on_a_running_ocean_rebuilds_every_lane(north_sea):

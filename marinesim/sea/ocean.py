@@ -17,7 +17,7 @@ spectrum ``C[q] = (a[-q] e^{iwt} + conj(a[q]) e^{-iwt}) / 2`` for the height and
 
 the eight real fields packed two per complex FFT (``F + iG`` is the spectrum of ``f + ig``).
 Only the cells of each tile's band are touched per frame, and the tiles are split into lanes
-(:mod:`marinesim.sea.synthesis`) that run on worker threads, one per CPU.
+(:mod:`marinesim.sea.synthesis`) that run side by side on worker threads pinned to CPUs of their own.
 """
 
 from __future__ import annotations
@@ -119,7 +119,7 @@ class Ocean:
     ``random_amplitudes=False`` gives deterministic amplitudes ``sqrt(2 E)`` with random
     phases. ``choppiness`` scales the horizontal displacement (1 = Gerstner). ``threads``
     (default: every CPU the process may use) synthesise the fields, one lane of tiles each, each
-    on its own CPU; with one lane the calling thread does the work.
+    lane's thread pinned to CPUs of its own; with one lane the calling thread does the work.
     """
 
     def __init__(
@@ -159,7 +159,7 @@ class Ocean:
             threads = len(available_cpus())
         if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)) or threads < 1:
             raise ParameterError(f"threads must be a positive integer, got {threads!r}")
-        self._fft_backend, self._threads = fft_backend, int(threads)
+        self._threads = int(threads)
         self.lane_count = min(self._threads, len(self.tiles))
         """Lanes of tiles synthesised in parallel, one per thread."""
         self._workers = lane_workers(self.lane_count) if self.lane_count > 1 else []

@@ -89,21 +89,25 @@ def available_cpus() -> list[int]:
 
 
 def lane_workers(count: int) -> list[ThreadPoolExecutor]:
-    """One single-thread executor per lane, each pinned to its own CPU where the OS allows
-    (round robin if there are more lanes than CPUs).
+    """One single-thread executor per lane, each pinned where the OS allows: to a block of CPUs
+    of its own (its FFT's threads inherit it), or round robin if there are more lanes than CPUs.
 
-    Unpinned, the lanes ran one after the other about half the time: a viewer asks for the
-    fields once per frame, the workers sleep in between, and on the 2-CPU test machine the
-    scheduler woke both lanes' threads on one CPU and left the other idle for milliseconds. In a
-    60 Hz loop that made an update 6.6-6.9 ms, against 4.8-5.2 ms pinned (benchmarks/RESULTS.md).
+    Unpinned, the lanes ran one after the other in most frames: a viewer asks for the fields
+    once per frame, the workers sleep in between, and on the 2-CPU test machine the scheduler
+    woke both lanes' threads on one CPU and left the other idle for milliseconds. In a 60 Hz
+    loop an update took 5.8-6.3 ms, against 3.7 ms pinned (benchmarks/RESULTS.md). The blocks
+    are the same for every ocean: two oceans updating at the same time share them.
     """
     cpus = available_cpus()
-    return [ThreadPoolExecutor(1, thread_name_prefix=f"ocean-lane-{i}", initializer=_pin_to,
-                               initargs=(cpus[i % len(cpus)],))
-            for i in range(count)]
+    if count <= len(cpus):
+        blocks = [{int(cpu) for cpu in block} for block in np.array_split(cpus, count)]
+    else:
+        blocks = [{cpus[i % len(cpus)]} for i in range(count)]
+    return [ThreadPoolExecutor(1, thread_name_prefix=f"ocean-lane-{i}", initializer=_pin_to, initargs=(block,))
+            for i, block in enumerate(blocks)]
 
 
-def _pin_to(cpu: int) -> None:
-    """Pin the calling thread to ``cpu`` (nothing where the OS does not allow it)."""
+def _pin_to(cpus: set[int]) -> None:
+    """Pin the calling thread to ``cpus`` (nothing where the OS does not allow it)."""
     with contextlib.suppress(AttributeError, OSError):
-        os.sched_setaffinity(0, {cpu})
+        os.sched_setaffinity(0, cpus)
