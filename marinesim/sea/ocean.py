@@ -17,7 +17,8 @@ spectrum ``C[q] = (a[-q] e^{iwt} + conj(a[q]) e^{-iwt}) / 2`` for the height and
 
 the eight real fields packed two per complex FFT (``F + iG`` is the spectrum of ``f + ig``).
 Only the cells of each tile's band are touched per frame, and the tiles are split into lanes
-(:mod:`marinesim.sea.synthesis`) that run side by side on worker threads pinned to CPUs of their own.
+(:mod:`marinesim.sea.synthesis`) that run side by side on worker threads, each pinned to CPUs
+of its own.
 """
 
 from __future__ import annotations
