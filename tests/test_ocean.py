@@ -30,8 +30,9 @@ from marinesim.sea import (
 )
 from marinesim.sea.cascades import TILE_RATIO
 from marinesim.sea.dispersion import omega_from_k
+from marinesim.sea.fft import available_cpus
 from marinesim.sea.summary import surface_summary
-from marinesim.sea.synthesis import Lane, available_cpus
+from marinesim.sea.synthesis import Lane
 from tests.conftest import close_angle_deg
 
 FIELD_NAMES = ("height", "displacement_x", "displacement_y", "slope_x", "slope_y")

@@ -60,6 +60,13 @@ def _save_wisdom() -> None:
             temp.write_text(json.dumps(wisdom))
 
 
+def available_cpus() -> list[int]:
+    """The CPUs this process may run on (all of them where the OS cannot say)."""
+    if hasattr(os, "sched_getaffinity"):
+        return sorted(os.sched_getaffinity(0))
+    return list(range(os.cpu_count() or 1))
+
+
 class InverseFFT2:
     """Inverse 2-D FFT over the last two axes of a fixed-shape complex64 batch.
 
@@ -79,7 +86,7 @@ class InverseFFT2:
             _read_wisdom()
             self._plan = pyfftw.FFTW(
                 self.input, self.output, axes=axes, direction="FFTW_BACKWARD",
-                flags=("FFTW_MEASURE",), threads=threads or os.cpu_count() or 1,
+                flags=("FFTW_MEASURE",), threads=threads or len(available_cpus()),
             )
             _save_wisdom()
         else:

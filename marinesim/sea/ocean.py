@@ -33,8 +33,9 @@ from marinesim.errors import ParameterError, require_at_least, require_finite, r
 from marinesim.recent import Recent
 from marinesim.sea.cascades import Tile, cell_variances, choose_tiles, regular_tile
 from marinesim.sea.dispersion import omega_from_k
+from marinesim.sea.fft import available_cpus
 from marinesim.sea.seastate import SeaState
-from marinesim.sea.synthesis import Lane, available_cpus, lane_workers
+from marinesim.sea.synthesis import Lane, lane_workers
 
 FIELD_PAIRS = (("height", "displacement_xy"), ("displacement_x", "displacement_y"),
                ("slope_x", "slope_y"), ("1 + displacement_xx", "1 + displacement_yy"))

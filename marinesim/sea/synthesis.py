@@ -20,7 +20,7 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
-from marinesim.sea.fft import InverseFFT2
+from marinesim.sea.fft import InverseFFT2, available_cpus
 
 
 class Lane:
@@ -79,13 +79,6 @@ class Lane:
         np.multiply(out[:, 0].imag, out[:, 0].imag, out=scratch)
         jacobian -= scratch
         return out, jacobian
-
-
-def available_cpus() -> list[int]:
-    """The CPUs this process may run on (all of them where the OS cannot say)."""
-    if hasattr(os, "sched_getaffinity"):
-        return sorted(os.sched_getaffinity(0))
-    return list(range(os.cpu_count() or 1))
 
 
 def lane_workers(count: int) -> list[ThreadPoolExecutor]:
