@@ -1,14 +1,20 @@
 """One lane of the ocean's per-frame synthesis: a run of tiles, their spectra, FFTs and Jacobians.
 
 The ocean splits its tiles into lanes, one per worker thread (:func:`lane_workers`), so that the
-lanes run at the same time on different CPUs (numpy and FFTW release the GIL). A lane owns its
-FFT buffers: the lanes never write the same memory, so the fields do not depend on the threads'
-timing.
+lanes run at the same time on different CPUs. A lane owns its FFT buffers: the lanes never write
+the same memory, so the fields do not depend on the threads' timing.
 
 Packing per tile (see :data:`~marinesim.sea.ocean.FIELD_PAIRS`): transform 0 holds the height
 and ``dDx/dy``, transform 3 holds ``1 + dDx/dx`` and ``1 + dDy/dy``; the ones come from the
-constant ``1 + i`` in its DC cell, which no wave uses, so the Jacobian
-``J = (1 + dDx/dx)(1 + dDy/dy) - (dDx/dy)^2`` takes three passes over the outputs.
+constant ``1 + i`` in its DC cell, which no wave uses, so the Jacobian is
+``J = (1 + dDx/dx)(1 + dDy/dy) - (dDx/dy)^2`` of two transforms' outputs.
+
+The work around the FFT is two compiled loops (numba, GIL released): :func:`_pack_cells` turns
+the cosine and sine of every cell's phase into its four packed spectra, written straight into
+the FFT's input, and :func:`_jacobian` reads the Jacobian off the outputs in one pass. Done as
+numpy passes (temporaries, a fancy-indexed scatter, three passes for ``J``) the same work took
+twice as long (benchmarks/RESULTS.md, session 9). The cosines and sines stay numpy's, which are
+vectorised.
 """
 
 from __future__ import annotations
@@ -18,9 +24,37 @@ import math
 import os
 from concurrent.futures import ThreadPoolExecutor
 
+import numba
 import numpy as np
 
 from marinesim.sea.fft import InverseFFT2, available_cpus
+
+
+@numba.njit(nogil=True, cache=True)
+def _pack_cells(even: np.ndarray, odd: np.ndarray, cos: np.ndarray, sin: np.ndarray, multipliers: np.ndarray,
+                index: np.ndarray, plane: int, flat_input: np.ndarray) -> None:
+    """``C[q] = even cos(wt) + odd sin(wt)`` for the ``h`` representatives, ``C[-q] = conj(C[q])``
+    for their mirrors, each times its four ``multipliers`` (4, 2h) and written at ``index``
+    (2h, the cell in transform 0) ``+ j plane`` of ``flat_input``."""
+    h = even.size
+    for c in range(h):
+        spectrum = even[c] * cos[c] + odd[c] * sin[c]
+        mirrored = np.conj(spectrum)
+        here, there = index[c], index[h + c]
+        for j in range(4):
+            flat_input[here + j * plane] = multipliers[j, c] * spectrum
+            flat_input[there + j * plane] = multipliers[j, h + c] * mirrored
+
+
+@numba.njit(nogil=True, cache=True)
+def _jacobian(out: np.ndarray, jacobian: np.ndarray) -> None:
+    """``J = Re(out3) Im(out3) - Im(out0)^2`` per tile of the FFT outputs ``(tiles, 4, N, N)``."""
+    for t in range(out.shape[0]):
+        for iy in range(out.shape[2]):
+            for ix in range(out.shape[3]):
+                stretch = out[t, 3, iy, ix]
+                shear = out[t, 0, iy, ix].imag
+                jacobian[t, iy, ix] = stretch.real * stretch.imag - shear * shear
 
 
 class Lane:
@@ -34,8 +68,8 @@ class Lane:
         n = resolution
         self.first, self.count, self._n = first, count, n
         self._fft = InverseFFT2((count, 4, n, n), fft_backend, threads)
+        self._flat_input = self._fft.input.reshape(-1)  # a view: the FFT reads what is written here
         self._jacobian = np.empty((count, n, n), dtype=np.float32)
-        self._scratch = np.empty_like(self._jacobian)
 
     def set_cells(self, omega: np.ndarray, multipliers: np.ndarray, tile: np.ndarray, offsets: np.ndarray) -> None:
         """The lane's cells: representatives ``q`` (their ``omega``, rad/s), then their mirrors
@@ -44,16 +78,12 @@ class Lane:
         n = self._n
         self._omega = omega
         self._multipliers = multipliers
-        self._scatter = ((tile * 4 * n * n + offsets)[None, :] + (np.arange(4) * n * n)[:, None]).ravel()
+        self._index = tile * 4 * n * n + offsets
         self._fft.input[...] = 0.0
         self._fft.input[:, 3, 0, 0] = 1.0 + 1.0j  # the ones of (1 + dDx/dx) + i (1 + dDy/dy)
-        half = omega.size
-        self._phase = np.empty(half)
-        self._cos = np.empty(half, dtype=np.float32)
-        self._sin = np.empty(half, dtype=np.float32)
-        self._term = np.empty(half, dtype=np.complex64)
-        self._spectrum = np.empty(2 * half, dtype=np.complex64)
-        self._packed = np.empty((4, 2 * half), dtype=np.complex64)
+        self._phase = np.empty(omega.size)
+        self._cos = np.empty(omega.size, dtype=np.float32)
+        self._sin = np.empty(omega.size, dtype=np.float32)
 
     def set_multipliers(self, multipliers: np.ndarray) -> None:
         self._multipliers = multipliers
@@ -67,18 +97,11 @@ class Lane:
         phase = np.multiply(self._omega, t, out=self._phase)
         phase -= np.floor(phase * (0.5 / math.pi)) * (2.0 * math.pi)  # keeps float32 trig exact
         phase32 = phase.astype(np.float32)
-        spectrum, h = self._spectrum, self._omega.size
-        np.multiply(even, np.cos(phase32, out=self._cos), out=spectrum[:h])
-        spectrum[:h] += np.multiply(odd, np.sin(phase32, out=self._sin), out=self._term)
-        np.conjugate(spectrum[:h], out=spectrum[h:])  # C[-q] = conj(C[q])
-        np.multiply(self._multipliers, spectrum, out=self._packed)
-        self._fft.input.reshape(-1)[self._scatter] = self._packed.reshape(-1)
+        _pack_cells(even, odd, np.cos(phase32, out=self._cos), np.sin(phase32, out=self._sin), self._multipliers,
+                    self._index, self._n**2, self._flat_input)
         out = self._fft()
-        jacobian, scratch = self._jacobian, self._scratch
-        np.multiply(out[:, 3].real, out[:, 3].imag, out=jacobian)
-        np.multiply(out[:, 0].imag, out[:, 0].imag, out=scratch)
-        jacobian -= scratch
-        return out, jacobian
+        _jacobian(out, self._jacobian)
+        return out, self._jacobian
 
 
 def lane_workers(count: int) -> list[ThreadPoolExecutor]:
