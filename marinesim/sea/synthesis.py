@@ -30,7 +30,16 @@ import numpy as np
 from marinesim.sea.fft import InverseFFT2, available_cpus
 
 
-@numba.njit(nogil=True, cache=True)
+def _compiled(function):
+    """``function`` compiled by numba with the GIL released, its machine code cached on disk
+    (numba raises where it finds no writable place: then compiled afresh in every process)."""
+    try:
+        return numba.njit(nogil=True, cache=True)(function)
+    except RuntimeError:
+        return numba.njit(nogil=True)(function)
+
+
+@_compiled
 def _pack_cells(even: np.ndarray, odd: np.ndarray, cos: np.ndarray, sin: np.ndarray, multipliers: np.ndarray,
                 index: np.ndarray, plane: int, flat_input: np.ndarray) -> None:
     """``C[q] = even cos(wt) + odd sin(wt)`` for the ``h`` representatives, ``C[-q] = conj(C[q])``
@@ -46,7 +55,7 @@ def _pack_cells(even: np.ndarray, odd: np.ndarray, cos: np.ndarray, sin: np.ndar
             flat_input[there + j * plane] = multipliers[j, h + c] * mirrored
 
 
-@numba.njit(nogil=True, cache=True)
+@_compiled
 def _jacobian(out: np.ndarray, jacobian: np.ndarray) -> None:
     """``J = Re(out3) Im(out3) - Im(out0)^2`` per tile of the FFT outputs ``(tiles, 4, N, N)``."""
     for t in range(out.shape[0]):
@@ -76,8 +85,11 @@ class Lane:
         ``-q`` in the same order; for all of them the packing ``multipliers`` (4, cells), the tile
         relative to ``first`` and the flat index into the tile's ``N x N`` field."""
         n = self._n
+        outside = (tile < 0) | (tile >= self.count) | (offsets < 0) | (offsets >= n * n)
+        if tile.size != 2 * omega.size or outside.any():
+            raise ValueError("lane cells outside the lane's tiles")  # _pack_cells does not check its writes
         self._omega = omega
-        self._multipliers = multipliers
+        self.set_multipliers(multipliers)
         self._index = tile * 4 * n * n + offsets
         self._fft.input[...] = 0.0
         self._fft.input[:, 3, 0, 0] = 1.0 + 1.0j  # the ones of (1 + dDx/dx) + i (1 + dDy/dy)
@@ -86,7 +98,11 @@ class Lane:
         self._sin = np.empty(omega.size, dtype=np.float32)
 
     def set_multipliers(self, multipliers: np.ndarray) -> None:
-        self._multipliers = multipliers
+        """New packing multipliers (4, cells), as in :meth:`set_cells` (a new choppiness)."""
+        cells = 2 * self._omega.size
+        if multipliers.shape != (4, cells):
+            raise ValueError(f"expected packing multipliers of shape (4, {cells}), got {multipliers.shape}")
+        self._multipliers = np.ascontiguousarray(multipliers, dtype=np.complex64)  # one compiled layout
 
     def run(self, t: float, even: np.ndarray, odd: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """The FFT outputs ``(count, 4, N, N)`` and Jacobians ``(count, N, N)`` at ``t`` (s).
