@@ -22,6 +22,7 @@ from __future__ import annotations
 import contextlib
 import math
 import os
+from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
 
 import numba
@@ -30,7 +31,7 @@ import numpy as np
 from marinesim.sea.fft import InverseFFT2, available_cpus
 
 
-def _compiled(function):
+def _compiled(function: Callable) -> Callable:
     """``function`` compiled by numba with the GIL released, its machine code cached on disk
     (numba raises where it finds no writable place: then compiled afresh in every process)."""
     try:
