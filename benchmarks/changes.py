@@ -18,7 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
-from marinesim.render.simulation import Simulation
+from marinesim.session.timeline import Simulation
 from marinesim.scenario import load_scenario
 
 DEFAULT = Path(__file__).resolve().parents[1] / "configs" / "default.toml"

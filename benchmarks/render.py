@@ -50,21 +50,21 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as folder:
         scenario = load_scenario(underway(Path(folder)))
     view = Offscreen(scenario, size, solver="on" if args.solver else "off", options=RenderOptions())
-    session, ctx = view.session, view.ctx
+    scene, ctx = view.scene, view.ctx
     view.go_to(1.0)
     view.frame()
     stages = {"simulation": [], "upload": [], "draw": []}
     for _ in range(args.frames):
-        session.sim.advance(1.0 / 60.0)
-        times = session.renderer.update(sync=True)
+        scene.sim.advance(1.0 / 60.0)
+        times = scene.renderer.update(sync=True)
         view.bind()
         start = time.perf_counter()
-        session.draw(size)
+        scene.draw(size)
         ctx.finish()
         stages["simulation"].append(times.simulation)
         stages["upload"].append(times.upload)
         stages["draw"].append(time.perf_counter() - start)
-    renderer = session.renderer
+    renderer = scene.renderer
     sky = []
     for _ in range(args.frames):
         start = time.perf_counter()
@@ -72,7 +72,7 @@ def main() -> None:
         renderer._sky_vao.render(moderngl.TRIANGLES, vertices=3)
         ctx.finish()
         sky.append(time.perf_counter() - start)
-    ocean = session.sim.ocean
+    ocean = scene.sim.ocean
     fft = InverseFFT2((len(ocean.tiles), 4, ocean.resolution, ocean.resolution))  # the cascades' transforms
     raw = []
     for _ in range(args.frames):
@@ -82,9 +82,9 @@ def main() -> None:
     median = {name: float(np.median(v)) for name, v in stages.items()}
     frame = sum(median.values())
     print(f"machine: {platform.processor() or platform.machine()}, {ctx.info['GL_RENDERER']}")
-    print(f"frame {size[0]}x{size[1]}, {len(session.sim.ocean.tiles)} x {session.sim.ocean.resolution}^2 cascades, "
-          f"wake {'on' if session.sim.wakes() else 'off'}, solver "
-          f"{renderer.solver.config.size if renderer.solver else 'off'}; median of {args.frames} frames")
+    print(f"frame {size[0]}x{size[1]}, {len(scene.sim.ocean.tiles)} x {scene.sim.ocean.resolution}^2 cascades, "
+          f"wake {'on' if scene.sim.wakes() else 'off'}, solver "
+          f"{scene.sim.solver.config.size if scene.sim.solver else 'off'}; median of {args.frames} frames")
     for name, value in median.items():
         print(f"  {name:10s} {1000 * value:8.2f} ms")
     print(f"  frame      {1000 * frame:8.2f} ms  ({1 / frame:.1f} frames/s)")

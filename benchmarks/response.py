@@ -28,15 +28,16 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from marinesim.scenario import load_scenario  # noqa: E402
-from marinesim.scenario.export import build_response  # noqa: E402
+from marinesim.session.assembly import Assembly  # noqa: E402
 
 EXPORT = """
 import resource, sys, time
 from marinesim.scenario import load_scenario
-from marinesim.scenario.export import export_motions, with_run
+from marinesim.session.assembly import Assembly
+from marinesim.session.export import export_motions, with_run
 scenario = with_run(load_scenario(sys.argv[1]), duration=float(sys.argv[2]), dt=0.1)
 start = time.perf_counter()
-export_motions(scenario, sys.argv[3], progress=False)
+export_motions(Assembly(scenario), sys.argv[3])
 print(time.perf_counter() - start, resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024)
 """
 
@@ -56,7 +57,7 @@ def main() -> None:
     args = parser.parse_args()
     exports = [export_memory(hours) for hours in args.export_hours]  # before this process grows
     scenario = load_scenario(ROOT / "configs" / "default.toml")
-    response = build_response(scenario)
+    response = Assembly(scenario).response
     steps, dt = 72_000, 0.05
     n, columns = len(response.components), response.linear([0.0]).shape[1]
 

@@ -24,12 +24,13 @@ sys.path.insert(0, str(ROOT))
 
 from marinesim.gl import standalone_context  # noqa: E402
 from marinesim.hull.shapes import wigley_hull  # noqa: E402
-from marinesim.solver import HullPose, ReferenceSolver, SolverConfig  # noqa: E402
+from marinesim.pose import Pose  # noqa: E402
+from marinesim.solver import ReferenceSolver, SolverConfig  # noqa: E402
 from marinesim.solver.gpu import GpuSolver  # noqa: E402
 
 
-def pose(t: float) -> HullPose:
-    return HullPose(10.0 * t, 0.0, 0.0, (0.0, 0.0, 0.2 * math.sin(1.5 * t), 0.05 * math.sin(t), 0.0, 0.0))
+def pose(t: float) -> Pose:
+    return Pose(10.0 * t, 0.0, 0.0, (0.0, 0.0, 0.2 * math.sin(1.5 * t), 0.05 * math.sin(t), 0.0, 0.0))
 
 
 FRAME = 1.0 / 60.0

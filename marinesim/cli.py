@@ -13,6 +13,7 @@ import numpy as np
 from marinesim import __version__
 from marinesim.atomic import atomic_path
 from marinesim.errors import MarinesimError, ParameterError, require_finite
+from marinesim.progress import reporting
 from marinesim.sea import Ocean, SeaState
 from marinesim.sea.build import SPECTRUM_TYPES, SPREADING_TYPES, wave_system
 from marinesim.sea.summary import summary
@@ -54,6 +55,17 @@ def _parser() -> argparse.ArgumentParser:
     _add_wake(commands)
     _add_sea(commands)
     return parser
+
+
+def _bars(quiet: bool):
+    """A progress reporter drawing tqdm bars on stderr (None when ``quiet``)."""
+    if quiet:
+        return None
+    from tqdm import tqdm
+
+    def bar(name: str, total: int, unit: str):
+        return tqdm(total=total, desc=name, unit=unit, file=sys.stderr, mininterval=0.5)
+    return bar
 
 
 def _number_list(option: str, text: str, unit: str) -> list[float]:
@@ -150,10 +162,11 @@ def _run_wake(args: argparse.Namespace) -> int:
     reports = []
     for speed_kn in speeds:
         started = time.perf_counter()
-        if args.no_cache:
-            wake, cached = compute_wake(hull, speed_kn * KNOT, grid, progress=not args.quiet), False
-        else:
-            wake, cached = cached_wake(hull, speed_kn * KNOT, grid, progress=not args.quiet)
+        with reporting(_bars(args.quiet)):
+            if args.no_cache:
+                wake, cached = compute_wake(hull, speed_kn * KNOT, grid), False
+            else:
+                wake, cached = cached_wake(hull, speed_kn * KNOT, grid)
         report = {key: wake.info[key] for key in ("speed_m_s", "speed_kn", "froude", "wave_resistance_N",
                                                   "wave_resistance_coefficient", "kelvin_half_angle_deg",
                                                   "transverse_wavelength_m", "measured_transverse_wavelength_m")}
@@ -192,7 +205,7 @@ def _format_wake(r: dict, notes: tuple[str, ...]) -> str:
 
 
 def _add_view_options(p: argparse.ArgumentParser) -> None:
-    from marinesim.render.session import CAMERAS
+    from marinesim.render.scene import CAMERAS
 
     g = p.add_argument_group("view")
     g.add_argument("--camera", choices=CAMERAS, default="orbit", help="orbit (default), bridge or free")
@@ -229,7 +242,8 @@ HEADLESS_VIDEO = {"seconds": 10.0, "size": (640, 360), "fps": 25.0}
 
 def _run_scenario(args: argparse.Namespace) -> int:
     from marinesim.scenario import load_scenario
-    from marinesim.scenario.headless import run_headless
+    from marinesim.session.assembly import Assembly
+    from marinesim.session.headless import run_headless
 
     scenario = load_scenario(args.scenario)
     print(f"scenario {scenario.path}: {len(scenario.sea.systems)} wave system(s), Hs {scenario.sea.hs:.2f} m, "
@@ -243,7 +257,8 @@ def _run_scenario(args: argparse.Namespace) -> int:
         from marinesim.render.viewer import NoDisplay, Viewer
 
         try:
-            viewer = Viewer(scenario, args.camera, args.solver, options=_render_options(args))
+            with reporting(_bars(False)):
+                viewer = Viewer(scenario, args.camera, args.solver, options=_render_options(args))
         except NoDisplay as reason:
             print(f"{reason}: running headless instead")
         else:
@@ -251,8 +266,11 @@ def _run_scenario(args: argparse.Namespace) -> int:
             viewer.run()
             return 0
     out_dir = args.out or Path("out") / scenario.name
-    files = run_headless(scenario, out_dir, progress=not args.quiet)
-    files |= _headless_video(scenario, out_dir, args)
+    with reporting(_bars(args.quiet)):
+        headless = run_headless(Assembly(scenario), out_dir)
+        for note in headless.notes:
+            print(note)
+        files = headless.files | _headless_video(scenario, out_dir, args)
     described = {"sea_plot": "the sea state picture", "motions": "the vessel's 6-DOF motions",
                  "sidecar": "their metadata", "motions_plot": "a plot of the motions", "rao_plot": "the RAOs",
                  "elevation": "the wave elevation at (0, 0)", "elevation_plot": "a plot of it",
@@ -272,7 +290,7 @@ def _headless_video(scenario, out_dir: Path, args: argparse.Namespace) -> dict[s
     print(f"rendering {seconds:g} s of video at {size[0]}x{size[1]}, {video['fps']:g} frames/s through EGL "
           f"(camera {args.camera})")
     result = render_video(scenario, out_dir / "video.mp4", seconds, size, video["fps"], args.camera, args.solver,
-                          _render_options(args), progress=not args.quiet, motions=False)
+                          _render_options(args), motions=False)
     print(f"the local wave solver was {'on' if result.solver else 'off (software renderer; --solver on forces it)'}")
     return {"video": result.video}
 
@@ -309,8 +327,9 @@ def _run_render(args: argparse.Namespace) -> int:
         return 0
     if args.out.suffix.lower() != ".mp4":
         raise ParameterError(f"--out must be an .mp4 file, got {args.out}")
-    result = render_video(scenario, args.out, args.seconds, size, args.fps, args.camera, args.solver,
-                          _render_options(args), progress=not args.quiet)
+    with reporting(_bars(args.quiet)):
+        result = render_video(scenario, args.out, args.seconds, size, args.fps, args.camera, args.solver,
+                              _render_options(args))
     print(f"wrote {result.frames} frames ({args.seconds:g} s at {result.fps:g} frames/s, {size[0]}x{size[1]}, "
           f"solver {'on' if result.solver else 'off'}): {result.video}")
     if result.motions is not None:
@@ -372,10 +391,12 @@ def _add_export(commands: argparse._SubParsersAction) -> None:
 
 def _run_export(args: argparse.Namespace) -> int:
     from marinesim.scenario import load_scenario
-    from marinesim.scenario.export import export_motions, with_run
+    from marinesim.session.assembly import Assembly
+    from marinesim.session.export import export_motions, with_run
 
     scenario = with_run(load_scenario(args.scenario), args.duration, args.dt, args.seed)
-    result = export_motions(scenario, args.out, args.format, progress=not args.quiet)
+    with reporting(_bars(args.quiet)):
+        result = export_motions(Assembly(scenario), args.out, args.format)
     print(f"wrote {result.rows} rows x {len(result.columns)} columns to {result.table} "
           f"(metadata: {result.sidecar})")
     return 0

@@ -26,11 +26,12 @@ from marinesim.gl import GraphicsError
 from marinesim.render.camera import BridgeCamera
 from marinesim.render.offscreen import Offscreen, render_video
 from marinesim.render.renderer import RenderOptions
-from marinesim.render.simulation import PREPARE_S, Simulation, scaled_sea
 from marinesim.scenario import load_scenario
-from marinesim.scenario.export import build_ocean
 from marinesim.sea.cascades import cell_variances
-from marinesim.solver.footprint import HullPose
+from marinesim.sea.seastate import scaled_sea
+from marinesim.session.assembly import Assembly
+from marinesim.session.timeline import PREPARE_S, Simulation
+from marinesim.pose import Pose
 
 ROOT = Path(__file__).resolve().parents[1]
 DEFAULT = ROOT / "configs" / "default.toml"
@@ -61,7 +62,7 @@ def offscreen(scenario, size=SIZE, **options) -> Offscreen:
 
 def horizon_row(view: Offscreen) -> float:
     """Pixel row of the horizon in the middle column: a point 15 km out along the view, at z = 0."""
-    eye = view.session.camera.eye(view.session.sim.pose())
+    eye = view.scene.camera.eye(view.scene.sim.pose())
     ahead = np.array([eye.forward[0], eye.forward[1], 0.0])
     far = eye.position * [1, 1, 0] + 15_000.0 * ahead / np.linalg.norm(ahead)
     return float(eye.project(far[None, :], view.size)[0, 1])
@@ -69,9 +70,9 @@ def horizon_row(view: Offscreen) -> float:
 
 def projected_box(view: Offscreen, mesh) -> tuple[float, float, float, float]:
     """Pixel columns and rows (x0, y0, x1, y1) spanned by ``mesh``'s body-frame bounding box in the current pose."""
-    session = view.session
-    pose = session.sim.pose()
-    projected = session.camera.eye(pose).project(pose.world(mesh.bounds()), view.size)[:, :2]
+    scene = view.scene
+    pose = scene.sim.pose()
+    projected = scene.camera.eye(pose).project(pose.world(mesh.bounds()), view.size)[:, :2]
     return (*projected.min(axis=0), *projected.max(axis=0))
 
 
@@ -109,7 +110,7 @@ def test_sky_above_the_horizon_water_below_and_the_vessel_where_its_pose_puts_it
         assert water[..., 2].mean() > water[..., 0].mean() + 20.0, "water should be bluer than it is red"
         assert sky[..., 2].mean() > sky[..., 0].mean(), "the sky should be bluer than it is red"
 
-        x0, y0, x1, y1 = projected_box(view, view.session.renderer.mesh)
+        x0, y0, x1, y1 = projected_box(view, view.scene.renderer.mesh)
         changed = np.abs(image.astype(int) - without.astype(int)).max(axis=-1) > 25
         rows, cols = np.nonzero(changed)
         inside = (cols >= x0 - 1) & (cols <= x1 + 1) & (rows >= y0 - 1) & (rows <= y1 + 1)
@@ -162,16 +163,16 @@ def test_the_wake_shows_behind_the_moving_vessel_and_not_ahead_of_it(underway):
         for v in (view, plain):
             v.go_to(10.0)
         changed = np.abs(view.frame(hud=False).astype(int) - plain.frame(hud=False).astype(int)).max(axis=-1) > 12
-        session = view.session
-        wake = session.sim.wakes()[0][0]
-        pose = session.sim.pose()
-        eye = session.camera.eye(pose)
+        scene = view.scene
+        wake = scene.sim.wakes()[0][0]
+        pose = scene.sim.pose()
+        eye = scene.camera.eye(pose)
     assert changed.mean() > 0.02, "the wake changed almost nothing in the picture"
     rows, cols = np.nonzero(changed)
     on_sea = sea_plane_points(eye, SIZE, rows, cols)
     ahead = np.array([math.cos(pose.heading), math.sin(pose.heading)])
     along = (on_sea[:, :2] - [pose.x, pose.y]) @ ahead
-    hull = session.renderer.mesh
+    hull = scene.renderer.mesh
     bow = hull.positions[:, 0].max()
     assert np.mean(along < bow + 30.0) > 0.98, "wake drawn ahead of the bow: the vessel-frame mapping is wrong"
     assert np.mean(along > wake.x[0] - 30.0) > 0.98, "wake drawn beyond the end of its grid"
@@ -180,10 +181,10 @@ def test_the_wake_shows_behind_the_moving_vessel_and_not_ahead_of_it(underway):
 def test_the_bridge_camera_rolls_and_pitches_with_the_ship():
     """The eye is the bridge point carried by the pose; its up vector tilts by exactly the roll and pitch."""
     camera = BridgeCamera((-105.0, 0.0, 32.0), look_pitch_deg=0.0)
-    level = camera.eye(HullPose(10.0, 20.0, 0.3))
+    level = camera.eye(Pose(10.0, 20.0, 0.3))
     roll, pitch = math.radians(5.0), math.radians(2.0)
-    rolled = camera.eye(HullPose(10.0, 20.0, 0.3, (0, 0, 0, roll, 0, 0)))
-    pitched = camera.eye(HullPose(10.0, 20.0, 0.3, (0, 0, 0, 0, pitch, 0)))
+    rolled = camera.eye(Pose(10.0, 20.0, 0.3, (0, 0, 0, roll, 0, 0)))
+    pitched = camera.eye(Pose(10.0, 20.0, 0.3, (0, 0, 0, 0, pitch, 0)))
     assert math.degrees(math.acos(rolled.up @ level.up)) == pytest.approx(5.0, abs=1e-9)
     starboard = np.cross(level.forward, level.up)
     assert rolled.up @ starboard > 0, "positive roll (starboard down, CONVENTIONS) tilts the mast to starboard"
@@ -197,7 +198,7 @@ def test_a_ten_second_video_has_its_frames_and_its_csv_equals_marinesim_export(d
     import imageio_ffmpeg
 
     out = tmp_path / "run.mp4"
-    result = render_video(default, out, seconds=10.0, size=(160, 90), fps=10.0, solver="off", progress=False)
+    result = render_video(default, out, seconds=10.0, size=(160, 90), fps=10.0, solver="off")
     frames, seconds = imageio_ffmpeg.count_frames_and_secs(str(out))
     assert (result.frames, frames) == (100, 100)
     assert seconds == pytest.approx(10.0)
@@ -265,7 +266,7 @@ def test_a_sea_change_is_prepared_off_the_frame_thread_and_starts_at_a_fixed_tim
     assert sim.legs[-1].start == pytest.approx(1.0 + PREPARE_S, abs=1e-12)
     assert threads and all(name.startswith("sea-change") for name in threads), threads
     sim.advance(10.0)
-    assert sim.ocean.components(sim.time).variance == pytest.approx(1.3**2 * build_ocean(default).components().variance,
+    assert sim.ocean.components(sim.time).variance == pytest.approx(1.3**2 * Assembly(default).ocean.components().variance,
                                                                     rel=1e-9)
     sim.close()
 
@@ -373,7 +374,7 @@ def test_the_visual_mesh_is_drawn_in_its_pose_instead_of_the_hull(barge):
         for v in (hull_view, view, bare):
             v.go_to(30.0)
         image, hull_image, without = (v.frame(hud=False).astype(int) for v in (view, hull_view, bare))
-        renderer = view.session.renderer
+        renderer = view.scene.renderer
         assert renderer.mesh.positions[:, 2].max() == pytest.approx(25.0, abs=1e-4), "not the visual mesh drawn"
         assert renderer._mask is not None, "the hull mask (no water inside the waterplane) comes from the hull"
         x0, y0, x1, y1 = projected_box(view, renderer.mesh)
@@ -394,8 +395,8 @@ def test_a_visual_mesh_without_a_hull_is_drawn_and_the_sea_runs_under_it(barge):
         for v in (view, bare):
             v.go_to(30.0)
         changed = np.abs(view.frame(hud=False).astype(int) - bare.frame(hud=False).astype(int)).max(axis=-1) > 25
-        renderer = view.session.renderer
-        assert renderer._mask is None and renderer.solver is None and not view.session.sim.wakes()
+        renderer = view.scene.renderer
+        assert renderer._mask is None and view.scene.sim.solver is None and not view.scene.sim.wakes()
         x0, y0, x1, y1 = projected_box(view, renderer.mesh)
     rows, cols = np.nonzero(changed)
     assert changed.sum() > 100, "the visual mesh covers almost no pixels"

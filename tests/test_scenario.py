@@ -14,7 +14,7 @@ import pytest
 from marinesim.errors import MarinesimError, ScenarioError
 from marinesim.hull import load_hull
 from marinesim.scenario import load_scenario
-from marinesim.scenario.export import VARIANCE_FRACTION, build_ocean
+from marinesim.session.assembly import VARIANCE_FRACTION, Assembly
 
 ROOT = Path(__file__).resolve().parent.parent
 DEFAULT = ROOT / "configs" / "default.toml"
@@ -105,7 +105,7 @@ def test_run_writes_reproducible_files_that_match_the_surface(tmp_path):
     assert sidecar["seed"] == 3 and len(sidecar["scenario_sha256"]) == 64
     # what the CSV holds is the drawn surface: at t = 0 the summed FFT tiles at the origin
     scenario = load_scenario(scenario_path)
-    ocean = build_ocean(scenario)
+    ocean = Assembly(scenario).ocean
     drawn = sum(float(f.height[0, 0]) for f in ocean.fields(0.0))
     sigma = scenario.sea.hs / 4
     assert frame["wave_elevation_m"].iloc[0] == pytest.approx(drawn, abs=0.1 * sigma)
@@ -116,7 +116,7 @@ def test_run_time_series_has_the_sea_states_variance(tmp_path):
     # a long record at one point: time-averaged eta^2 = sum |a|^2 / 2 of the kept components
     text = GOOD.replace("duration_s = 60.0", "duration_s = 3600.0")
     scenario = load_scenario(write(tmp_path, text))
-    ocean = build_ocean(scenario)
+    ocean = Assembly(scenario).ocean
     components = ocean.components(variance_fraction=VARIANCE_FRACTION)
     times = np.arange(0.0, 3600.0, 0.5)
     series = components.elevation(0.0, 0.0, times)

@@ -16,7 +16,8 @@ from marinesim.errors import ParameterError
 from marinesim.hull.hydrostatics import hydrostatics
 from marinesim.hull.mesh import load_hull, make_hull
 from marinesim.hull.shapes import box_hull, wigley_hull
-from marinesim.solver import HullPose, ReferenceSolver, SolverConfig
+from marinesim.pose import Pose
+from marinesim.solver import ReferenceSolver, SolverConfig
 from marinesim.solver.footprint import displaced_depth, hull_triangles
 from marinesim.solver.gpu import GpuSolver
 from marinesim.wake.measure import KELVIN_HALF_ANGLE_DEG, kelvin_half_angle_deg
@@ -68,9 +69,9 @@ def travelling_energy(h: np.ndarray, phi: np.ndarray, cell: float, direction: np
     return float(forward), float(backward)
 
 
-def moving_wigley_pose(t: float) -> HullPose:
+def moving_wigley_pose(t: float) -> Pose:
     """4 m/s on a heading of 0.3 rad, heaving, rolling and pitching."""
-    return HullPose(4.0 * math.cos(0.3) * t, 4.0 * math.sin(0.3) * t, 0.3,
+    return Pose(4.0 * math.cos(0.3) * t, 4.0 * math.sin(0.3) * t, 0.3,
                     (0.0, 0.0, 0.15 * math.sin(2.0 * t), 0.08 * math.sin(1.3 * t), 0.04 * math.cos(1.7 * t), 0.0))
 
 
@@ -154,7 +155,7 @@ def test_a_moving_pressure_point_leaves_a_kelvin_wake_at_any_speed(speed):
     t = 0.0
     while speed * t < 0.9 * solver.extent_m:
         t += frame
-        solver.step(frame, HullPose(x=speed * t))
+        solver.step(frame, Pose(x=speed * t))
     x, y = solver.cell_centres()
     inner = slice(config.sponge_width, -config.sponge_width)        # the sponge is not open water
     wavelength = 2.0 * math.pi * speed ** 2 / G
@@ -201,8 +202,8 @@ def test_a_heaving_hull_radiates_rings_of_the_deep_water_wavelength():
     frame = period / 16.0
     t = 0.0
 
-    def heave(t: float) -> HullPose:
-        return HullPose(motion=(0.0, 0.0, 0.1 * math.sin(omega * t), 0.0, 0.0, 0.0))
+    def heave(t: float) -> Pose:
+        return Pose(motion=(0.0, 0.0, 0.1 * math.sin(omega * t), 0.0, 0.0, 0.0))
 
     while t < 30.0:                                   # the rings reach the sponge and settle
         t += frame
@@ -284,7 +285,7 @@ def test_a_vessel_on_a_steady_course_drives_the_solver_only_in_full_forcing(ctx,
         t, frame = 0.0, 1.0 / 60.0
         while t < 6.0:
             t += frame
-            solver.step(frame, HullPose(20.0 * t, 0.5 * t * t, 0.2 * t))
+            solver.step(frame, Pose(20.0 * t, 0.5 * t * t, 0.2 * t))
         assert solver.origin[0] > 100.0
         h = solver.height() + solver.depth           # the surface minus the hull's static hollow
         peaks[forcing] = np.abs(h[config.sponge_width:-config.sponge_width, config.sponge_width:-config.sponge_width]).max()
@@ -298,9 +299,9 @@ def test_a_vessel_that_jumps_finds_the_water_at_rest_where_it_lands(caplog):
     config = SolverConfig(size=64, cell_m=0.5, forcing="full")
     solver = ReferenceSolver(config, wigley_hull(10.0, 1.5, 0.8, nx=20, nz=5))
     for n in range(1, 31):
-        solver.step(1.0 / 30.0, HullPose(x=8.0 * n / 30.0, motion=(0.0, 0.0, 0.1, 0.0, 0.0, 0.0)))
+        solver.step(1.0 / 30.0, Pose(x=8.0 * n / 30.0, motion=(0.0, 0.0, 0.1, 0.0, 0.0, 0.0)))
     with caplog.at_level(logging.INFO, logger="marinesim.solver"):
-        solver.step(1.0 / 30.0, HullPose(x=2000.0, y=5.0))
+        solver.step(1.0 / 30.0, Pose(x=2000.0, y=5.0))
     assert "jumped" in caplog.text
     assert abs(solver.origin[0] + 0.5 * solver.extent_m - 2000.0) <= 0.5 * config.cell_m
     assert np.array_equal(solver.height(), -solver.depth * solver.sponge)
@@ -336,7 +337,7 @@ def test_scrolling_moves_the_field_without_changing_it(ctx, backend, tolerance):
         solver.set_fields(h, phi)
     for frame in range(1, 11):
         still.step(0.2)
-        moving.step(0.2, HullPose(y=1.0 * frame))
+        moving.step(0.2, Pose(y=1.0 * frame))
     shift = round((moving.origin[1] - still.origin[1]) / config.cell_m)
     assert shift >= 15
     a, b = still.height()[shift:], moving.height()[:-shift]
@@ -375,7 +376,7 @@ def test_stepping_is_independent_of_the_frame_rate_and_reproducible():
         t = 0.0
         while t < 3.0 - 1e-9:
             t += frame
-            solver.step(frame, HullPose(x=12.3 * t, y=-3.1 * t))   # never exactly on a cell boundary, where rounding picks the grid
+            solver.step(frame, Pose(x=12.3 * t, y=-3.1 * t))   # never exactly on a cell boundary, where rounding picks the grid
         fields.append((solver.time, solver.height()))
     times = [time for time, _ in fields]
     assert max(times) - min(times) < 1e-9
@@ -413,7 +414,7 @@ def test_bad_steps_poses_fields_and_obstacles_are_refused():
         with pytest.raises(ParameterError, match="time step"):
             solver.step(dt)
     with pytest.raises(ParameterError, match="pose"):
-        solver.step(0.1, HullPose(x=float("nan")))
+        solver.step(0.1, Pose(x=float("nan")))
     with pytest.raises(ParameterError, match="fields"):
         solver.set_fields(np.zeros((16, 16)), np.zeros((16, 16)))
     with pytest.raises(ParameterError, match="obstacle"):
@@ -429,12 +430,12 @@ def test_the_displaced_depth_holds_the_hulls_volume_in_any_pose(ctx):
     statics = hydrostatics(hull)
     config = SolverConfig(size=128, cell_m=0.25, forcing="full")
     for heading in (0.0, 0.5, 2.0):
-        pose = HullPose(0.3, -0.2, heading)
+        pose = Pose(0.3, -0.2, heading)
         gpu = GpuSolver(config, hull, pose, ctx=ctx)
         reference = displaced_depth(hull_triangles(hull, [(pose, 1.0)], gpu.origin, config.cell_m), config.size)
         assert np.abs(gpu.depth - reference).max() <= 1e-4 * reference.max()
         assert reference.sum() * config.cell_m ** 2 == pytest.approx(statics.volume_m3, rel=0.005)
-        sunk = HullPose(0.3, -0.2, heading, (0.0, 0.0, -0.1, 0.0, 0.0, 0.0))
+        sunk = Pose(0.3, -0.2, heading, (0.0, 0.0, -0.1, 0.0, 0.0, 0.0))
         deeper = displaced_depth(hull_triangles(hull, [(sunk, 1.0)], gpu.origin, config.cell_m), config.size)
         added = (deeper.sum() - reference.sum()) * config.cell_m ** 2
         assert added == pytest.approx(0.1 * statics.waterplane_area_m2, rel=0.03)
@@ -448,7 +449,7 @@ def test_a_wetted_surface_mesh_open_at_the_waterline_gives_its_volume(ctx):
     tanker = load_hull(Path(__file__).resolve().parents[1] / "hulls" / "tanker.gdf")
     statics = hydrostatics(tanker)
     config = SolverConfig.for_hull(tanker, size=256, forcing="full")
-    solver = GpuSolver(config, tanker, HullPose(heading=0.7), ctx=ctx)
+    solver = GpuSolver(config, tanker, Pose(heading=0.7), ctx=ctx)
     assert solver.depth.sum() * config.cell_m ** 2 == pytest.approx(statics.volume_m3, rel=0.01)
     assert np.all(solver.height() <= 0.0)              # started at rest: the surface held down under the hull
     solver.release()

@@ -54,11 +54,11 @@ def repeating_share(scenario_path: Path) -> dict[float, float]:
     Shorter shifts measure the picture's smoothness, not a repeat."""
     scenario = load_scenario(scenario_path)
     with offscreen(scenario, SIZE) as view:
-        view.session.cameras["free"] = FreeCamera(position=(0.0, 0.0, 700.0), yaw_deg=90.0, pitch_deg=-89.9)
-        view.session.camera_name = "free"
+        view.scene.cameras["free"] = FreeCamera(position=(0.0, 0.0, 700.0), yaw_deg=90.0, pitch_deg=-89.9)
+        view.scene.camera_name = "free"
         view.go_to(10.0)
         picture = luminance(view.frame(hud=False))
-        eye = view.session.camera.eye(view.session.sim.pose())
+        eye = view.scene.camera.eye(view.scene.sim.pose())
         x, y = (a.ravel() for a in np.meshgrid(np.arange(-700.0, 700.0, 2.0), np.arange(-400.0, 400.0, 2.0)))
 
         def seen(dx: float, dy: float) -> np.ndarray:
@@ -73,7 +73,7 @@ def repeating_share(scenario_path: Path) -> dict[float, float]:
         share = {}
         ends = eye.project(np.array([[-50.0, 0.0, 0.0], [50.0, 0.0, 0.0]]), SIZE)
         metres_per_pixel = 100.0 / abs(ends[1, 0] - ends[0, 0])
-        for tile in view.session.sim.ocean.tiles:
+        for tile in view.scene.sim.ocean.tiles:
             if tile.size < 10.0 * metres_per_pixel:
                 continue
             shares = []

@@ -42,7 +42,7 @@ def walkthrough(tmp_path: Path) -> None:
     except (NoDisplay, GraphicsError) as error:  # no EGL here: nothing to test
         print(error)
         sys.exit(NO_WINDOW)
-    controls, sim = viewer.controls, viewer.session.sim
+    controls, sim = viewer.controls, viewer.scene.sim
     controls.recordings = tmp_path
     try:
         controls.press("R")                               # record from t = 0
@@ -80,7 +80,7 @@ def walkthrough(tmp_path: Path) -> None:
             viewer.tick(0.05)
             viewer.draw()
             assert viewer.ctx.error == "GL_NO_ERROR"
-        assert viewer.session.camera_name == "orbit" and controls.show_help
+        assert viewer.scene.camera_name == "orbit" and controls.show_help
     finally:
         viewer.close()
 

@@ -16,11 +16,12 @@ Works for closed meshes and for wetted-surface-only meshes (WAMIT ``.gdf``) alik
 
 from __future__ import annotations
 
+import math
 from dataclasses import asdict, dataclass
 
 import numpy as np
 
-from marinesim.constants import RHO_SEAWATER
+from marinesim.constants import RHO_SEAWATER, G
 from marinesim.hull.mesh import Hull
 
 
@@ -45,8 +46,17 @@ class Hydrostatics:
         """The length for Froude numbers: at the waterline, else (submerged body) overall."""
         return self.waterline_length_m or self.length_overall_m
 
+    def froude(self, speed_m_s: float, g: float = G) -> float:
+        """The Froude number at ``speed_m_s`` (m/s) on :attr:`froude_length_m`."""
+        return froude_number(speed_m_s, self.froude_length_m, g)
+
     def as_dict(self) -> dict:
         return asdict(self)
+
+
+def froude_number(speed_m_s: float, length_m: float, g: float = G) -> float:
+    """Fn = U / sqrt(g L) (U in m/s, L in m: the waterline length, :attr:`Hydrostatics.froude_length_m`)."""
+    return speed_m_s / math.sqrt(g * length_m)
 
 
 def hydrostatics(hull: Hull, rho: float = RHO_SEAWATER) -> Hydrostatics:

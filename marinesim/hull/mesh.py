@@ -23,6 +23,7 @@ import trimesh
 from marinesim.errors import FileFormatError, ParameterError, require_finite, require_positive
 from marinesim.hull.gdf import read_gdf
 from marinesim.hull.wetted import Surface, wetted_surface
+from marinesim.pose import rotation_y
 
 UNITS = {"m": 1.0, "cm": 0.01, "mm": 0.001, "ft": 0.3048, "in": 0.0254}
 MESH_EXTENSIONS = (".stl", ".obj", ".ply", ".glb", ".gltf", ".off")
@@ -80,8 +81,7 @@ def load_hull(path: str | Path, *, units: str = "m", scale: float = 1.0, axes: s
     if abs(trim) >= math.radians(30.0):
         raise ParameterError(f"trim must be within +-30 deg, got {trim_deg!r}")
     if trim:
-        c, s = math.cos(trim), math.sin(trim)
-        vertices = vertices @ np.array([[c, 0.0, -s], [0.0, 1.0, 0.0], [s, 0.0, c]])  # Ry(trim) p
+        vertices = vertices @ rotation_y(trim).T
     return make_hull(vertices, faces, str(path))
 
 

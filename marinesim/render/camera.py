@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from marinesim.solver.footprint import HullPose
+from marinesim.pose import Pose
 
 NEAR_M = 0.5
 FAR_M = 40_000.0
@@ -73,7 +73,7 @@ class OrbitCamera:
     elevation_deg: float = 18.0
     distance_m: float = 400.0
 
-    def eye(self, pose: HullPose) -> Eye:
+    def eye(self, pose: Pose) -> Eye:
         bearing = pose.heading + math.pi + math.radians(self.azimuth_deg)  # from the target to the eye
         elevation = math.radians(self.elevation_deg)
         offset = self.distance_m * np.array([math.cos(elevation) * math.cos(bearing),
@@ -98,7 +98,7 @@ class BridgeCamera:
     look_yaw_deg: float = 0.0
     look_pitch_deg: float = -5.0
 
-    def eye(self, pose: HullPose) -> Eye:
+    def eye(self, pose: Pose) -> Eye:
         to_world = pose.matrix()
         yaw, pitch = math.radians(self.look_yaw_deg), math.radians(self.look_pitch_deg)
         look = np.array([math.cos(pitch) * math.cos(yaw), math.cos(pitch) * math.sin(yaw), math.sin(pitch)])
@@ -126,7 +126,7 @@ class FreeCamera:
         yaw, pitch = math.radians(self.yaw_deg), math.radians(self.pitch_deg)
         return np.array([math.cos(pitch) * math.cos(yaw), math.cos(pitch) * math.sin(yaw), math.sin(pitch)])
 
-    def eye(self, pose: HullPose) -> Eye:
+    def eye(self, pose: Pose) -> Eye:
         return Eye(np.asarray(self.position, float), self._forward(), np.array([0.0, 0.0, 1.0]))
 
     def drag(self, dx: float, dy: float) -> None:

@@ -1,4 +1,4 @@
-"""The viewer's live controls: keys and mouse to actions on a session, and the motion recorder.
+"""The viewer's live controls: keys and mouse to actions on a scene, and the motion recorder.
 
 Kept apart from the window so that they act the same in a test as at the keyboard: a key is
 named as pyglet names it (``pyglet.window.key.symbol_string``), e.g. ``"BRACKETRIGHT"``.
@@ -7,8 +7,6 @@ named as pyglet names it (``pyglet.window.key.symbol_string``), e.g. ``"BRACKETR
 from __future__ import annotations
 
 import math
-import os
-import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable
@@ -17,8 +15,9 @@ import numpy as np
 
 from marinesim.constants import KNOT
 from marinesim.errors import MarinesimError
-from marinesim.render.session import Session
-from marinesim.scenario.export import write_csv_block
+from marinesim.atomic import AtomicFile
+from marinesim.render.scene import Scene
+from marinesim.session.export import write_csv_block
 
 HS_STEP = 1.1       # each press: heights x 1.1 (or / 1.1)
 TP_STEP = 1.05      # periods x 1.05
@@ -37,43 +36,41 @@ class Recorder:
     """Motion rows at the scenario's dt, from start to stop, written as ``marinesim export`` writes
     them. Rows go to a temporary file beside ``path``, renamed to ``path`` on :meth:`stop`."""
 
-    def __init__(self, session: Session, path: Path) -> None:
-        self.session, self.path = session, Path(path)
+    def __init__(self, scene: Scene, path: Path) -> None:
+        self.scene, self.path = scene, Path(path)
         self.path.parent.mkdir(parents=True, exist_ok=True)
-        fd, temp = tempfile.mkstemp(prefix=f".{self.path.stem}.", suffix=".part.csv", dir=self.path.parent)
-        self._temp = Path(temp)
-        self._handle = os.fdopen(fd, "w", encoding="utf-8", newline="")
-        self._dt = session.sim.scenario.run.dt_s
-        self._next = math.ceil(session.sim.time / self._dt - 1e-9)  # index of the next row's time
+        self._file = AtomicFile(self.path)
+        self._handle = self._file.temp.open("w", encoding="utf-8", newline="")
+        self._dt = scene.sim.scenario.run.dt_s
+        self._next = math.ceil(scene.sim.time / self._dt - 1e-9)  # index of the next row's time
         self.rows = 0
 
     def catch_up(self) -> None:
         """Write the rows up to the simulation's time."""
-        last = math.floor(self.session.sim.time / self._dt + 1e-9)
+        last = math.floor(self.scene.sim.time / self._dt + 1e-9)
         if last < self._next:
             return
         times = np.arange(self._next, last + 1) * self._dt
-        write_csv_block(self._handle, self.session.sim.frame(times), header=self.rows == 0)
+        write_csv_block(self._handle, self.scene.sim.frame(times), header=self.rows == 0)
         self.rows += len(times)
         self._next = last + 1
 
     def stop(self) -> Path:
         self.catch_up()
         self._handle.close()
-        os.replace(self._temp, self.path)
-        return self.path
+        return self._file.commit()
 
     def abandon(self) -> None:
         """Close and delete the temporary file, keeping nothing (writing it failed)."""
         self._handle.close()
-        self._temp.unlink(missing_ok=True)
+        self._file.discard()
 
 
 @dataclass
 class Controls:
-    """What the keys do to ``session``; ``recordings`` is where recordings go."""
+    """What the keys do to ``scene``; ``recordings`` is where recordings go."""
 
-    session: Session
+    scene: Scene
     recordings: Path = Path("recordings")
     paused: bool = False
     time_scale_index: int = TIME_SCALES.index(1.0)
@@ -88,17 +85,17 @@ class Controls:
     def frame(self, wall_dt: float, held: set[str] = frozenset()) -> None:
         """One frame of ``wall_dt`` seconds: move the free camera for held keys, advance the run."""
         wall_dt = min(max(wall_dt, 0.0), MAX_FRAME_S)
-        if self.session.camera_name == "free":
+        if self.scene.camera_name == "free":
             step = FREE_SPEED_M_S * wall_dt
             moves = {"W": (step, 0, 0), "S": (-step, 0, 0), "D": (0, step, 0), "A": (0, -step, 0),
                      "E": (0, 0, step), "C": (0, 0, -step)}
             for key in held & moves.keys():
-                self.session.cameras["free"].move(*moves[key])
+                self.scene.cameras["free"].move(*moves[key])
         if not self.paused and wall_dt > 0:
-            self.session.step(wall_dt * self.time_scale)
+            self.scene.step(wall_dt * self.time_scale)
         if self.recorder is not None:
             self.recorder.catch_up()
-        self.session.status = self.status()
+        self.scene.status = self.status()
 
     def press(self, key: str) -> None:
         """React to the key named ``key``; unknown keys do nothing."""
@@ -110,13 +107,13 @@ class Controls:
                 self.message = str(error)
 
     def actions(self) -> dict[str, Callable[[], None]]:
-        sim = self.session.sim
+        sim = self.scene.sim
 
         def change(**kwargs) -> Callable[[], None]:
             return lambda: sim.change(ramp_s=CHANGE_RAMP_S, **kwargs)
 
         def camera(name: str) -> Callable[[], None]:
-            return lambda: setattr(self.session, "camera_name", name)
+            return lambda: setattr(self.scene, "camera_name", name)
 
         actions = {
             "H": self.toggle_help, "SPACE": self.toggle_pause, "R": self.toggle_recording,
@@ -149,11 +146,11 @@ class Controls:
 
     def toggle_recording(self) -> None:
         if self.recorder is None:
-            if self.session.sim.vessel is None:
+            if self.scene.sim.vessel is None:
                 self.message = "nothing to record: the scenario has no vessel"
                 return
-            name = f"{self.session.sim.scenario.name}_{self.session.sim.time:08.1f}s.csv"
-            self.recorder = Recorder(self.session, self.recordings / name)
+            name = f"{self.scene.sim.scenario.name}_{self.scene.sim.time:08.1f}s.csv"
+            self.recorder = Recorder(self.scene, self.recordings / name)
             self.message = f"recording to {self.recorder.path}"
         else:
             recorder, self.recorder = self.recorder, None

@@ -1,6 +1,6 @@
 """Headless renders through EGL: a video of a scenario (with its motion CSV beside it) or a screenshot.
 
-Frames are drawn by the same :class:`~marinesim.render.session.Session` the window uses, into an
+Frames are drawn by the same :class:`~marinesim.render.scene.Scene` the window uses, into an
 offscreen framebuffer, at fixed simulated times ``k / fps``: the same scenario and seed give the
 same frames. Videos are H.264 MP4 through the ffmpeg that ``imageio-ffmpeg`` ships, written to a
 temporary file and renamed when complete. The CSV beside a video is ``marinesim export`` of the
@@ -9,7 +9,6 @@ scenario over the video's length (same columns, same rows, same numbers).
 
 from __future__ import annotations
 
-import sys
 from dataclasses import dataclass, replace
 from pathlib import Path
 
@@ -19,9 +18,10 @@ from marinesim.atomic import atomic_path
 from marinesim.errors import ParameterError
 from marinesim.gl import standalone_context
 from marinesim.render.renderer import FOAM_TAU_S, RenderOptions
-from marinesim.render.session import Session, solver_wanted
-from marinesim.scenario.export import export_motions, with_run
-from marinesim.scenario.schema import Scenario
+from marinesim.progress import task
+from marinesim.render.scene import Scene, solver_wanted
+from marinesim.scenario import Scenario
+from marinesim.session.export import export_motions
 
 MAX_PIXELS = 7680 * 4320
 WARMUP_STEP_S = 0.25
@@ -49,14 +49,13 @@ def parse_size(text: str) -> tuple[int, int]:
 
 
 class Offscreen:
-    """An EGL context with a session and a framebuffer of ``size`` to draw it into."""
+    """An EGL context with a scene and a framebuffer of ``size`` to draw it into."""
 
     def __init__(self, scenario: Scenario, size: tuple[int, int], camera: str = "orbit", solver: str = "auto",
-                 options: RenderOptions = RenderOptions(), progress: bool = False) -> None:
+                 options: RenderOptions = RenderOptions()) -> None:
         self.ctx = standalone_context()
         self.size = size
-        self.session = Session(self.ctx, scenario, camera, replace(options, solver=solver_wanted(self.ctx, solver)),
-                               progress)
+        self.scene = Scene(self.ctx, scenario, camera, replace(options, solver=solver_wanted(self.ctx, solver)))
         self._fbo = self._framebuffer(size)
 
     def _framebuffer(self, size: tuple[int, int]):
@@ -75,29 +74,29 @@ class Offscreen:
 
     @property
     def solver_on(self) -> bool:
-        return self.session.renderer.solver is not None
+        return self.scene.sim.solver is not None
 
     def frame(self, hud: bool = True) -> np.ndarray:
         """The current frame as (h, w, 3) uint8 RGB, top row first."""
         self.bind()
-        self.session.draw(self.size, hud)
+        self.scene.draw(self.size, hud)
         data = self._fbo.read(components=3, alignment=1)
         return np.frombuffer(data, np.uint8).reshape(self.size[1], self.size[0], 3)[::-1].copy()
 
     def go_to(self, t: float) -> None:
         """Advance to ``t`` (s) stepping the last three foam lifetimes, so foam and charts are as in a live run."""
-        sim = self.session.sim
+        sim = self.scene.sim
         warm_from = max(t - 3.0 * FOAM_TAU_S, sim.time)
         if warm_from > sim.time:
-            sim.advance(warm_from - sim.time)
-        self.session.prefill_history()
-        self.session.renderer.update()
+            sim.seek(warm_from)
+        self.scene.prefill_history()
+        self.scene.renderer.update()
         while sim.time < t - 1e-9:
-            self.session.step(min(WARMUP_STEP_S, t - sim.time))
+            self.scene.step(min(WARMUP_STEP_S, t - sim.time))
 
     def release(self) -> None:
         self._fbo.release()
-        self.session.release()
+        self.scene.release()
         self.ctx.release()
 
     def __enter__(self) -> Offscreen:
@@ -124,11 +123,10 @@ def screenshot(scenario: Scenario, out: Path, at_s: float = 0.0, size: tuple[int
 
 def render_video(scenario: Scenario, out: Path, seconds: float = 20.0, size: tuple[int, int] = (1280, 720),
                  fps: float = 30.0, camera: str = "orbit", solver: str = "auto",
-                 options: RenderOptions = RenderOptions(), progress: bool = True, motions: bool = True) -> VideoResult:
+                 options: RenderOptions = RenderOptions(), motions: bool = True) -> VideoResult:
     """Write ``out`` (MP4, ``round(seconds * fps)`` frames at t = k / fps) and, with a vessel and
     ``motions``, the motions over ``[0, seconds]`` at the scenario's dt to ``out`` with the suffix ``.csv``."""
     import imageio_ffmpeg
-    from tqdm import tqdm
 
     if not (0.0 < seconds <= scenario.run.duration_s):
         raise ParameterError(f"--seconds must be within the run, (0, {scenario.run.duration_s:g}] s, got {seconds!r}")
@@ -136,20 +134,21 @@ def render_video(scenario: Scenario, out: Path, seconds: float = 20.0, size: tup
         raise ParameterError(f"--fps must be within 1..240, got {fps!r}")
     frames = int(round(seconds * fps))
     table = None
-    with Offscreen(scenario, size, camera, solver, options, progress) as view, atomic_path(out) as temp:
+    with Offscreen(scenario, size, camera, solver, options) as view, atomic_path(out) as temp:
         writer = imageio_ffmpeg.write_frames(str(temp), size, fps=fps, codec="libx264", quality=7,
                                              macro_block_size=2, ffmpeg_log_level="error")
         writer.send(None)
         try:
             view.go_to(0.0)
-            for k in tqdm(range(frames), desc=f"render {out.name}", unit="frame", disable=not progress,
-                          file=sys.stderr, mininterval=0.5):
-                if k:
-                    view.session.step(k / fps - view.session.sim.time)
-                writer.send(view.frame())
+            with task(f"render {out.name}", frames, "frame") as bar:
+                for k in range(frames):
+                    if k:
+                        view.scene.step(k / fps - view.scene.sim.time)
+                    writer.send(view.frame())
+                    bar.update(1)
         finally:
             writer.close()
         solver_on = view.solver_on
-    if motions and scenario.vessel is not None:
-        table = export_motions(with_run(scenario, duration=seconds), out.with_suffix(".csv"), progress=False).table
+        if motions and scenario.vessel is not None:
+            table = export_motions(view.scene.sim.assembly, out.with_suffix(".csv"), duration_s=seconds).table
     return VideoResult(out, table, frames, fps, solver_on)

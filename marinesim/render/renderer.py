@@ -1,8 +1,8 @@
-"""Draws a :class:`~marinesim.render.simulation.Simulation` with moderngl: sky, ocean, vessel.
+"""Draws a :class:`~marinesim.session.timeline.Simulation` with moderngl: sky, ocean, vessel.
 
 Per frame, :meth:`Renderer.update` brings the GPU up to the simulation's time (the cascades'
-fields uploaded to texture arrays with mipmaps, foam persistence in a compute pass, the local
-solver stepped) and :meth:`Renderer.draw` draws a camera's view into the bound framebuffer:
+fields uploaded to texture arrays with mipmaps, foam persistence in a compute pass; the local
+solver, which the simulation steps, is read as it is) and :meth:`Renderer.draw` draws a camera's view into the bound framebuffer:
 
 1. the sky (a full-screen pass: analytic sky, sun, haze below the horizon);
 2. the ocean: rings of vertices around the camera out to ``OCEAN_RADIUS_M``, each displaced by
@@ -22,15 +22,13 @@ from dataclasses import dataclass
 
 import moderngl
 import numpy as np
-from matplotlib.path import Path as PolygonPath
 
 from marinesim.angles import compass_to_math
 from marinesim.gl import GraphicsError, is_software, shader_source
 from marinesim.render.camera import Eye
-from marinesim.render.simulation import Simulation
-from marinesim.render.vessel_mesh import VesselMesh, vessel_mesh, visual_mesh, waterline
-from marinesim.solver.gpu import GpuSolver
-from marinesim.solver.local import SolverConfig
+from marinesim.hull.waterplane import inside, waterline_loops
+from marinesim.render.vessel_mesh import VesselMesh, vessel_mesh, visual_mesh
+from marinesim.session.timeline import Simulation
 from marinesim.wake.compute import Wake
 
 OCEAN_RADIUS_M = 20_000.0
@@ -68,7 +66,7 @@ class RenderOptions:
 
 @dataclass(frozen=True)
 class FrameTimes:
-    """Seconds spent in the last update and draw: simulation (ocean FFTs, pose, solver dispatch),
+    """Seconds spent in the last update and draw: simulation (the ocean's FFTs),
     upload (textures, mipmaps, foam pass) and draw. GPU work is asynchronous unless ``sync`` was asked."""
 
     simulation: float
@@ -123,10 +121,6 @@ class Renderer:
                 (self._vessel_vbo, "3f 3f 3f", "in_position", "in_normal", "in_colour")])
         if hull is not None:
             self._mask, self._mask_rect = self._hull_mask(hull)
-        self.solver: GpuSolver | None = None
-        if options.solver and hull is not None:
-            config = SolverConfig.for_hull(hull, size=options.solver_size)
-            self.solver = GpuSolver(config, hull, sim.pose(), ctx=ctx)
 
     # -- resources ------------------------------------------------------------------------------
 
@@ -138,19 +132,20 @@ class Renderer:
         return texture
 
     def _hull_mask(self, hull) -> tuple[moderngl.Texture, tuple[float, float, float, float]]:
-        """The waterplane (inside the waterline loop) rasterised in the vessel frame."""
-        outline = waterline(hull)[:, :2]
-        lo, hi = outline.min(axis=0), outline.max(axis=0)
+        """The waterplane (inside the waterline loops) rasterised in the vessel frame."""
+        loops = waterline_loops(hull)
+        corners = np.concatenate(loops)
+        lo, hi = corners.min(axis=0), corners.max(axis=0)
         pad = 0.02 * (hi - lo)
         lo, hi = lo - pad, hi + pad
         nx, ny = HULL_MASK_CELLS
         x = lo[0] + (np.arange(nx) + 0.5) * (hi[0] - lo[0]) / nx
         y = lo[1] + (np.arange(ny) + 0.5) * (hi[1] - lo[1]) / ny
-        xx, yy = np.meshgrid(x, y)
-        inside = PolygonPath(outline).contains_points(np.c_[xx.ravel(), yy.ravel()]).reshape(ny, nx)
+        hull_cells = inside(loops, x, y)
         # shrink by one cell so the water meets the hull instead of leaving a gap beside it
-        inside[1:-1, 1:-1] &= inside[:-2, 1:-1] & inside[2:, 1:-1] & inside[1:-1, :-2] & inside[1:-1, 2:]
-        texture = self.ctx.texture((nx, ny), 1, (inside * 255).astype(np.uint8).tobytes())
+        hull_cells[1:-1, 1:-1] &= (hull_cells[:-2, 1:-1] & hull_cells[2:, 1:-1] & hull_cells[1:-1, :-2]
+                                   & hull_cells[1:-1, 2:])
+        texture = self.ctx.texture((nx, ny), 1, (hull_cells * 255).astype(np.uint8).tobytes())
         texture.repeat_x = texture.repeat_y = False
         return texture, (lo[0], lo[1], 1.0 / (hi[0] - lo[0]), 1.0 / (hi[1] - lo[1]))
 
@@ -163,16 +158,13 @@ class Renderer:
     # -- per frame --------------------------------------------------------------------------------
 
     def update(self, sync: bool = False) -> FrameTimes:
-        """Bring the GPU to the simulation's time: fields, foam, solver. ``sync`` waits for the GPU
+        """Bring the GPU to the simulation's time: fields and foam. ``sync`` waits for the GPU
         after each stage so that the times split truly (for benchmarks)."""
         t = self.sim.time
         dt = 0.0 if self._last_time is None else max(t - self._last_time, 0.0)
         self._last_time = t
         start = time.perf_counter()
         fields = self.sim.ocean.fields(t)
-        pose = self.sim.pose()
-        if self.solver is not None and dt > 0:
-            self.solver.step(dt, pose)
         if sync:
             self.ctx.finish()
         simulated = time.perf_counter()
@@ -252,11 +244,12 @@ class Renderer:
             texture.use(3 + slot)
             values[f"u_wake_rect{slot}"] = rect
         values["u_wake_weight"] = tuple(weights)
-        if self.solver is not None:
-            self.solver.height_texture.use(5)
-            origin = self.solver.origin
-            values["u_solver_rect"] = (origin[0], origin[1], 1.0 / self.solver.extent_m, 1.0)
-            values["u_solver_cell"] = self.solver.config.cell_m
+        solver = self.sim.solver
+        if solver is not None:
+            solver.height_texture.use(5)
+            origin = solver.origin
+            values["u_solver_rect"] = (origin[0], origin[1], 1.0 / solver.extent_m, 1.0)
+            values["u_solver_cell"] = solver.config.cell_m
         else:
             self._blank.use(5)
             values["u_solver_rect"] = (0.0, 0.0, 1.0, 0.0)
@@ -287,8 +280,6 @@ class Renderer:
             member.value = value
 
     def release(self) -> None:
-        if self.solver is not None:
-            self.solver.release()
         for texture, _ in self._wake_textures.values():
             texture.release()
         for resource in (self._cascades, self._slopes, self._foam, self._blank, self._grid_vbo, self._grid_ibo,

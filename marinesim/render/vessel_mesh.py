@@ -1,7 +1,8 @@
 """The vessel as drawn: flat-shaded triangles with colours, in the body frame (m).
 
 A hull file that stops at the waterline (a WAMIT ``.gdf`` holds only the wetted surface) gets
-topsides: its waterline outline extruded up by the freeboard and closed with a deck. A point on
+topsides: each of its waterline loops (:func:`~marinesim.hull.waterplane.waterline_loops`; two for
+a catamaran) extruded up by the freeboard and closed with a deck. A point on
 board above the deck (the bridge) gets a deckhouse around it. Colours: anti-fouling red below the
 waterline, dark topsides, a deck, a white deckhouse. Faces are wound counter-clockwise seen from
 outside, so back-face culling hides the deckhouse from an eye inside it (the bridge camera).
@@ -15,6 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from marinesim.hull import Hull, VisualMesh
+from marinesim.hull.waterplane import waterline_loops
 
 BOTTOM = (0.45, 0.09, 0.07)
 TOPSIDES = (0.10, 0.12, 0.16)
@@ -51,8 +53,9 @@ def vessel_mesh(hull: Hull, freeboard_m: float | None = None, house_at: tuple[fl
     deck_z = float(v[:, 2].max())
     if deck_z < OPEN_TOP_BELOW_M:
         deck_z = freeboard_m if freeboard_m is not None else max(0.6 * draft, 1.0)
-        outline = waterline(hull)
-        triangles += [_walls(outline, deck_z), _fan(outline, deck_z)]
+        for loop in waterline_loops(hull):
+            outline = np.c_[loop, np.zeros(len(loop))]
+            triangles += [_walls(outline, deck_z), _fan(outline, deck_z)]
     house = house_at is not None and house_at[2] > deck_z + 1.0
     if house:
         triangles.append(_house(v, house_at, deck_z))
@@ -93,20 +96,6 @@ def _flat(corners: np.ndarray, normals: np.ndarray, colours: np.ndarray) -> Vess
     return VesselMesh(corners.reshape(-1, 3), np.repeat(normals, 3, axis=0), colours.reshape(-1, 3))
 
 
-def waterline(hull: Hull) -> np.ndarray:
-    """The waterline (n, 3) at z = 0, body frame: the wetted surface's corners on the waterline,
-    ordered counter-clockwise by angle about their centroid (a waterplane is star-shaped about it)."""
-    wet = hull.wetted()
-    corners = np.concatenate([wet.a, wet.b, wet.c])
-    on_line = corners[np.abs(corners[:, 2]) < 1e-6 * max(np.ptp(corners[:, 0]), 1.0)]
-    points = np.unique(on_line.round(6), axis=0)
-    centre = points[:, :2].mean(axis=0)
-    angle = np.arctan2(points[:, 1] - centre[1], points[:, 0] - centre[0])
-    ordered = points[np.argsort(angle)]
-    ordered[:, 2] = 0.0
-    return ordered
-
-
 def _walls(outline: np.ndarray, top: float) -> np.ndarray:
     """Quads from each waterline edge (counter-clockwise seen from above) up to ``top``, facing out."""
     a, b = outline, np.roll(outline, -1, axis=0)
@@ -117,7 +106,7 @@ def _walls(outline: np.ndarray, top: float) -> np.ndarray:
 
 
 def _fan(outline: np.ndarray, top: float) -> np.ndarray:
-    """The deck: a fan from the outline's centroid (a waterplane is star-shaped about it), facing up."""
+    """The deck: a fan from the outline's centroid (each hull's waterplane is star-shaped about it), facing up."""
     ring = outline.copy()
     ring[:, 2] = top
     centre = np.r_[ring[:, :2].mean(axis=0), top]

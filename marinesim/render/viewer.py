@@ -1,4 +1,4 @@
-"""The interactive viewer: a pyglet window with a moderngl context drawing a :class:`Session`.
+"""The interactive viewer: a pyglet window with a moderngl context drawing a :class:`~marinesim.render.scene.Scene`.
 
 :func:`open_viewer` raises :class:`NoDisplay` when there is no display to open a window on; the
 ``run`` command then renders headless instead (:mod:`marinesim.render.offscreen`).
@@ -14,8 +14,8 @@ from marinesim.errors import MarinesimError
 from marinesim.gl import GL_VERSION, GraphicsError
 from marinesim.render.controls import HELP, Controls
 from marinesim.render.renderer import RenderOptions
-from marinesim.render.session import Session, solver_wanted
-from marinesim.scenario.schema import Scenario
+from marinesim.render.scene import Scene, solver_wanted
+from marinesim.scenario import Scenario
 
 
 class NoDisplay(MarinesimError):
@@ -42,7 +42,7 @@ def open_window(size: tuple[int, int], caption: str, headless: bool = False):
 
 
 class Viewer:
-    """A window, its session and its controls; :meth:`tick` is one frame (pyglet calls it)."""
+    """A window, its scene and its controls; :meth:`tick` is one frame (pyglet calls it)."""
 
     def __init__(self, scenario: Scenario, camera: str = "orbit", solver: str = "auto",
                  size: tuple[int, int] = (1280, 720), headless: bool = False, options: RenderOptions = RenderOptions()):
@@ -59,8 +59,8 @@ class Viewer:
             self.window.close()
             raise GraphicsError(f"the window has no OpenGL {GL_VERSION / 100:.1f} context ({error})") from None
         options = replace(options, solver=solver_wanted(self.ctx, solver))
-        self.session = Session(self.ctx, scenario, camera, options, progress=True)
-        self.controls = Controls(self.session)
+        self.scene = Scene(self.ctx, scenario, camera, options)
+        self.controls = Controls(self.scene)
         self.held: set[str] = set()
         self._last = time.perf_counter()
         key = pyglet.window.key
@@ -85,11 +85,11 @@ class Viewer:
 
         @self.window.event
         def on_mouse_drag(x: int, y: int, dx: int, dy: int, buttons: int, modifiers: int) -> None:
-            self.session.camera.drag(dx, dy)
+            self.scene.camera.drag(dx, dy)
 
         @self.window.event
         def on_mouse_scroll(x: int, y: int, scroll_x: float, scroll_y: float) -> None:
-            self.session.camera.zoom(scroll_y)
+            self.scene.camera.zoom(scroll_y)
 
         @self.window.event
         def on_close() -> None:
@@ -101,13 +101,13 @@ class Viewer:
         wall = now - self._last if dt is None else dt
         self._last = now
         self.controls.frame(wall, self.held)
-        self.session.frame_seconds = wall
+        self.scene.frame_seconds = wall
 
     def draw(self) -> None:
         self.ctx.screen.use()
         size = self.window.get_framebuffer_size()
         self.ctx.screen.viewport = (0, 0, *size)
-        self.session.draw(size, help_lines=HELP if self.controls.show_help else None)
+        self.scene.draw(size, help_lines=HELP if self.controls.show_help else None)
 
     def run(self) -> None:
         import pyglet
@@ -125,7 +125,7 @@ class Viewer:
             self.controls.toggle_recording()
             print(self.controls.message)
         pyglet.clock.unschedule(self._on_clock)
-        self.session.release()
+        self.scene.release()
         _ = self.ctx.error  # reading clears a pending GL error, which pyglet's close would raise
         self.window.close()
         pyglet.app.exit()

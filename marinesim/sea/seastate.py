@@ -7,6 +7,7 @@ east. Use :func:`marinesim.angles.wave_beta_from_compass` at the edges.
 from __future__ import annotations
 
 import math
+import dataclasses
 from dataclasses import dataclass, field
 from functools import cached_property
 
@@ -16,7 +17,7 @@ from scipy import optimize
 from marinesim.constants import G
 from marinesim.errors import ParameterError, require_finite, require_positive
 from marinesim.sea.dispersion import k_from_omega
-from marinesim.sea.spectra import Spectrum, spectral_moment
+from marinesim.sea.spectra import Jonswap, JonswapFetch, Spectrum, spectral_moment
 from marinesim.sea.spreading import LongCrested, Spreading
 
 
@@ -154,3 +155,24 @@ class SeaState:
 
 def _omega_peak(system: WaveSystem) -> float:
     return 2.0 * math.pi / system.spectrum.tp
+
+
+def scaled_sea(sea: SeaState, hs_factor: float, tp_factor: float, turn_deg: float) -> SeaState:
+    """``sea`` with every height times ``hs_factor``, every period times ``tp_factor`` and every
+    direction turned ``turn_deg`` clockwise (compass); spreading unchanged. Hs scales exactly."""
+    for name, value in (("Hs factor", hs_factor), ("Tp factor", tp_factor)):
+        if not (math.isfinite(value) and value > 0):
+            raise ParameterError(f"{name} must be a positive number, got {value!r}")
+    turn = -math.radians(turn_deg)  # compass clockwise = math clockwise
+    systems = []
+    for system in sea.systems:
+        if isinstance(system, RegularWave):
+            systems.append(dataclasses.replace(system, height=system.height * hs_factor,
+                                               period=system.period * tp_factor, beta=system.beta + turn))
+            continue
+        spectrum = system.spectrum
+        if isinstance(spectrum, JonswapFetch):
+            spectrum = Jonswap(spectrum.hs, spectrum.tp, spectrum.gamma, g=spectrum.g)
+        spectrum = dataclasses.replace(spectrum, hs=spectrum.hs * hs_factor, tp=spectrum.tp * tp_factor)
+        systems.append(WaveSystem(spectrum, system.beta + turn, system.spreading))
+    return SeaState(tuple(systems), depth=sea.depth, g=sea.g)

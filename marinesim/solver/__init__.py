@@ -5,8 +5,7 @@ numerics in float64) share :class:`LocalSolver`; see spectral.py for the scheme,
 the hull's displaced depth and local.py for the grid, the forcing modes and the sub-steps.
 """
 
-from marinesim.solver.footprint import HullPose
 from marinesim.solver.local import LocalSolver, SolverConfig
 from marinesim.solver.reference import ReferenceSolver
 
-__all__ = ["HullPose", "LocalSolver", "ReferenceSolver", "SolverConfig"]
+__all__ = ["LocalSolver", "ReferenceSolver", "SolverConfig"]

@@ -19,65 +19,13 @@ GPU's own tie rule may pick the other, which changes nothing because the two fac
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
 
 from marinesim.hull.mesh import Hull
+from marinesim.pose import Pose
 from marinesim.solver.spectral import SUBPIXEL
-
-
-@dataclass(frozen=True)
-class HullPose:
-    """Where the hull is: the track point ``(x, y)`` (m, E frame), the heading (math angle of the
-    bow, rad) and the 6-DOF motion about it in the steady vessel frame (surge, sway, heave in m;
-    roll, pitch, yaw in rad; CONVENTIONS: pitch positive bow down, R = Rz(yaw) Ry(pitch) Rx(roll))."""
-
-    x: float = 0.0
-    y: float = 0.0
-    heading: float = 0.0
-    motion: tuple[float, float, float, float, float, float] = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0)
-
-    def steady(self) -> HullPose:
-        """The same track point and heading without the motion (what the Kelvin wake assumes)."""
-        return HullPose(self.x, self.y, self.heading)
-
-    def toward(self, other: HullPose, fraction: float) -> HullPose:
-        """Linear interpolation to ``other`` (angles too: poses one sub-step apart are close)."""
-        def mix(a: float, b: float) -> float:
-            return a + (b - a) * fraction
-        turn = math.remainder(other.heading - self.heading, 2.0 * math.pi)
-        return HullPose(mix(self.x, other.x), mix(self.y, other.y), self.heading + turn * fraction,
-                        tuple(mix(a, b) for a, b in zip(self.motion, other.motion)))
-
-    def matrix(self) -> np.ndarray:
-        """4 x 4 transform of body-frame points (m) to the E frame: ``[R t; 0 1]``."""
-        roll, pitch, yaw = self.motion[3:]
-        out = np.eye(4)
-        out[:3, :3] = _rz(self.heading) @ _rz(yaw) @ _ry(pitch) @ _rx(roll)
-        out[:3, 3] = _rz(self.heading) @ np.array(self.motion[:3]) + np.array([self.x, self.y, 0.0])
-        return out
-
-    def world(self, body: np.ndarray) -> np.ndarray:
-        """Body-frame points (n, 3) in the E frame (m)."""
-        m = self.matrix()
-        return body @ m[:3, :3].T + m[:3, 3]
-
-
-def _rx(a: float) -> np.ndarray:
-    c, s = math.cos(a), math.sin(a)
-    return np.array([[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])
-
-
-def _ry(a: float) -> np.ndarray:
-    c, s = math.cos(a), math.sin(a)
-    return np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]])
-
-
-def _rz(a: float) -> np.ndarray:
-    c, s = math.cos(a), math.sin(a)
-    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
 
 
 @dataclass(frozen=True)
@@ -99,7 +47,7 @@ class Triangles:
         return rows.reshape(-1, 4)
 
 
-def hull_triangles(hull: Hull, poses: list[tuple[HullPose, float]], origin: tuple[float, float],
+def hull_triangles(hull: Hull, poses: list[tuple[Pose, float]], origin: tuple[float, float],
                    cell: float) -> Triangles:
     """The hull's faces in each ``(pose, weight)`` placed on the grid whose corner (0, 0) is at
     ``origin`` (m, E frame). Faces wholly above z = 0 are dropped (they add nothing)."""

@@ -21,7 +21,8 @@ import numpy as np
 
 from marinesim.gl import shader_source, standalone_context
 from marinesim.hull.mesh import Hull
-from marinesim.solver.footprint import HullPose, Triangles
+from marinesim.pose import Pose
+from marinesim.solver.footprint import Triangles
 from marinesim.solver.local import LocalSolver, SolverConfig
 from marinesim.solver.spectral import SUBPIXEL
 
@@ -34,7 +35,7 @@ GROUP = 16  # work-group side of the cell-wise passes
 class GpuSolver(LocalSolver):
     """The local solver in OpenGL compute shaders, on ``ctx`` (a new headless context if None)."""
 
-    def __init__(self, config: SolverConfig, hull: Hull | None = None, pose: HullPose | None = None,
+    def __init__(self, config: SolverConfig, hull: Hull | None = None, pose: Pose | None = None,
                  obstacles: tuple[np.ndarray, ...] = (), ctx: moderngl.Context | None = None) -> None:
         self.ctx = ctx or standalone_context()
         super().__init__(config, hull, pose, obstacles)

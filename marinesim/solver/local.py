@@ -39,13 +39,14 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from matplotlib.path import Path as PolygonPath
 
 from marinesim.constants import RHO_SEAWATER, G
 from marinesim.errors import ParameterError, require_finite, require_positive
 from marinesim.hull.mesh import Hull
+from marinesim.hull.waterplane import inside
+from marinesim.pose import Pose
 from marinesim.solver import spectral
-from marinesim.solver.footprint import HullPose, Triangles, hull_triangles
+from marinesim.solver.footprint import Triangles, hull_triangles
 
 log = logging.getLogger("marinesim.solver")
 
@@ -106,17 +107,6 @@ class SolverConfig:
         return cls(size=size, cell_m=shortest / CELLS_PER_SHORTEST_WAVE, **options)
 
 
-def obstacle_mask(polygons: tuple[np.ndarray, ...], x: np.ndarray, y: np.ndarray) -> np.ndarray:
-    """1 for water, 0 for cells whose centre (columns at ``x``, rows at ``y``, m, E frame) lies
-    inside any polygon ((n, 2) m, E frame)."""
-    mask = np.ones((len(y), len(x)))
-    xx, yy = np.meshgrid(x, y)
-    points = np.column_stack([xx.ravel(), yy.ravel()])
-    for polygon in polygons:
-        mask[PolygonPath(polygon).contains_points(points).reshape(mask.shape)] = 0.0
-    return mask
-
-
 class LocalSolver:
     """The solver's logic; a backend (NumPy reference or GPU) supplies the field operations.
 
@@ -125,7 +115,7 @@ class LocalSolver:
     Time left over (less than one sub-step) is carried to the next call.
     """
 
-    def __init__(self, config: SolverConfig, hull: Hull | None = None, pose: HullPose | None = None,
+    def __init__(self, config: SolverConfig, hull: Hull | None = None, pose: Pose | None = None,
                  obstacles: tuple[np.ndarray, ...] = ()) -> None:
         self.config, self.hull = config, hull
         self.obstacles = tuple(np.asarray(p, dtype=float) for p in obstacles)
@@ -140,7 +130,7 @@ class LocalSolver:
         self.resets = 0
         self._frame_time = 0.0   # s, time of the last pose given
         self._setup()
-        self._place(_checked(pose or HullPose()))
+        self.place(pose or Pose())
 
     # --- placement -------------------------------------------------------------------------
     @property
@@ -168,12 +158,12 @@ class LocalSolver:
         centres = (np.arange(self.config.size) + 0.5) * self.config.cell_m
         return self.origin[0] + centres, self.origin[1] + centres
 
-    def _corner_for(self, pose: HullPose) -> tuple[int, int]:
+    def _corner_for(self, pose: Pose) -> tuple[int, int]:
         half = self.config.size // 2
         return (round(pose.x / self.config.cell_m) - half, round(pose.y / self.config.cell_m) - half)
 
     # --- stepping ---------------------------------------------------------------------------
-    def step(self, dt: float, pose: HullPose | None = None) -> int:
+    def step(self, dt: float, pose: Pose | None = None) -> int:
         """Advance ``dt`` seconds to ``pose`` (default: where the vessel was). Returns sub-steps taken."""
         dt = require_positive("solver time step (s)", dt)
         target = self._pose if pose is None else _checked(pose)
@@ -183,7 +173,7 @@ class LocalSolver:
             log.info("local wave solver: the vessel jumped to (%.1f, %.1f) m; the water there starts at rest",
                      target.x, target.y)
             self.steps = math.floor(self._frame_time / self.substep + 1e-9)
-            self._place(target)
+            self.place(target)
             return 0
         taken = 0
         while (self.steps + 1) * self.substep <= self._frame_time + 1e-9 * self.substep:
@@ -200,8 +190,9 @@ class LocalSolver:
             log.warning("local wave solver: %d non-finite values at t = %.2f s; the field was reset to rest", bad, self.time)
         return taken
 
-    def _place(self, pose: HullPose) -> None:
-        """Centre the grid on ``pose`` with the water at rest (start, or after a jump)."""
+    def place(self, pose: Pose) -> None:
+        """Centre the grid on ``pose`` with the water at rest (start, after a jump, or when the session seeks)."""
+        pose = _checked(pose)
         self._pose = self._grid_pose = pose   # _grid_pose: what the grid was last placed for (the last sub-step's pose)
         self._corner = self._corner_for(pose)
         self._load_keep()
@@ -213,7 +204,10 @@ class LocalSolver:
         if self.hull is not None and self.config.forcing == "full":
             self._start_at_rest(self._triangles(self._grid_pose))
 
-    def _follow(self, pose: HullPose) -> None:
+    def release(self) -> None:
+        """Free what the backend holds (GPU buffers); nothing for the NumPy reference."""
+
+    def _follow(self, pose: Pose) -> None:
         self._grid_pose = pose
         corner = self._corner_for(pose)
         shift = (corner[0] - self._corner[0], corner[1] - self._corner[1])
@@ -224,14 +218,14 @@ class LocalSolver:
         if self.obstacles:
             self._load_keep()
 
-    def _triangles(self, pose: HullPose) -> Triangles | None:
+    def _triangles(self, pose: Pose) -> Triangles | None:
         if self.hull is None:
             return None
         poses = [(pose, 1.0)] if self.config.forcing == "full" else [(pose, 1.0), (pose.steady(), -1.0)]
         return hull_triangles(self.hull, poses, self.origin, self.config.cell_m)
 
     def _load_keep(self) -> None:
-        keep = self.sponge * obstacle_mask(self.obstacles, *self.cell_centres()) if self.obstacles else self.sponge
+        keep = self.sponge * ~inside(self.obstacles, *self.cell_centres()) if self.obstacles else self.sponge
         self._set_keep(keep)
 
     # --- what the backends provide ------------------------------------------------------------
@@ -281,7 +275,7 @@ class LocalSolver:
         return spectral.energy(h, phi, self.config.cell_m, self.config.g, self.config.rho)
 
 
-def _checked(pose: HullPose) -> HullPose:
+def _checked(pose: Pose) -> Pose:
     values = (pose.x, pose.y, pose.heading, *pose.motion)
     if len(pose.motion) != 6 or not all(math.isfinite(require_finite("hull pose", v)) for v in values):
         raise ParameterError(f"hull pose must be finite numbers with six motions, got {pose!r}")

@@ -25,6 +25,7 @@ from typing import Iterator
 import numpy as np
 
 from marinesim.errors import ParameterError, require_finite, require_positive
+from marinesim.pose import RotationKinematics
 from marinesim.sea.ocean import Components
 from marinesim.vessel.rao import DOFS, RaoTable
 
@@ -153,51 +154,3 @@ class Response:
         """:meth:`frame` for ``start + dt * arange(steps)``, block by block (streams long runs)."""
         for times, linear in self.linear_steps(start, dt, steps):
             yield self.frame(times, linear)
-
-
-class RotationKinematics:
-    """``R = Rz(yaw) Ry(pitch) Rx(roll)`` applied to body vectors, with exact first and second time
-    derivatives, per time step. ``angles``, ``rates``, ``accelerations``: (T, 3) roll, pitch, yaw."""
-
-    AXES = (2, 1, 0)  # factors of R from the left: yaw about z, pitch about y, roll about x
-
-    def __init__(self, angles: np.ndarray, rates: np.ndarray, accelerations: np.ndarray) -> None:
-        self._factors = [(axis, np.cos(angles[:, axis])[:, None], np.sin(angles[:, axis])[:, None],
-                          rates[:, axis, None], accelerations[:, axis, None]) for axis in self.AXES]
-
-    def points(self, p: np.ndarray, xi: np.ndarray, xi_dot: np.ndarray, xi_ddot: np.ndarray):
-        """Positions, velocities and accelerations (T, P, 3) of body points ``p`` (P, 3), given the
-        translations (T, 3)."""
-        v = np.broadcast_to(np.asarray(p, dtype=float), (xi.shape[0],) + np.shape(p))
-        # d^n/dt^n (A B C) p: the orders of the three factors' time derivatives and their weights
-        first = ((1, 0, 0), (0, 1, 0), (0, 0, 1))
-        second = ((2, 0, 0), (0, 2, 0), (0, 0, 2), (1, 1, 0), (1, 0, 1), (0, 1, 1))
-        position = self._apply((0, 0, 0), v)
-        velocity = sum(self._apply(orders, v) for orders in first)
-        acceleration = sum(self._apply(orders, v) * (1.0 if 2 in orders else 2.0) for orders in second)
-        return xi[:, None] + position, xi_dot[:, None] + velocity, xi_ddot[:, None] + acceleration
-
-    def _apply(self, orders: tuple[int, int, int], v: np.ndarray) -> np.ndarray:
-        """``F1 F2 F3 v`` where each factor is R, dR/dt or d2R/dt2 as ``orders`` says."""
-        for (axis, c, s, rate, acceleration), order in zip(reversed(self._factors), reversed(orders)):
-            if order == 0:
-                v = _turn(axis, 0, c, s, v)
-            elif order == 1:
-                v = _turn(axis, 1, c, s, v) * rate[..., None]
-            else:
-                v = (_turn(axis, 2, c, s, v) * (rate ** 2)[..., None]
-                     + _turn(axis, 1, c, s, v) * acceleration[..., None])
-        return v
-
-
-def _turn(axis: int, order: int, c: np.ndarray, s: np.ndarray, v: np.ndarray) -> np.ndarray:
-    """The ``order``-th derivative with respect to the angle of the rotation about ``axis``
-    (0 x, 1 y, 2 z) with cosine ``c`` and sine ``s``, applied to vectors ``v`` (T, P, 3). The
-    n-th derivative turns the plane by ``angle + n pi/2`` and drops the axis component (n >= 1)."""
-    i, j = ((1, 2), (2, 0), (0, 1))[axis]          # the plane rotated: y-z, z-x, x-y
-    c, s = ((c, s), (-s, c), (-c, -s))[order]      # cos and sin of angle + order pi/2
-    out = np.empty(v.shape)
-    out[..., i] = c * v[..., i] - s * v[..., j]
-    out[..., j] = s * v[..., i] + c * v[..., j]
-    out[..., axis] = v[..., axis] if order == 0 else 0.0
-    return out

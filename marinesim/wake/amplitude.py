@@ -28,11 +28,11 @@ import math
 from typing import Callable
 
 import numpy as np
-from tqdm import tqdm
 
 from marinesim.constants import G, RHO_SEAWATER
 from marinesim.errors import ParameterError, require_positive
 from marinesim.hull import Hull, Surface
+from marinesim.progress import task
 from marinesim.wake.triangle import exp_divided_difference
 
 WORK_PER_CHUNK = 500_000  # (angle, triangle) pairs per chunk: about 100 MB of temporaries
@@ -42,7 +42,7 @@ PANEL_RADIANS = 6.0  # phase change per Gauss-Legendre panel ...
 PANEL_ORDER = 8  # ... of this many nodes: 1.3 nodes per radian, error ~ 2e-6 per panel
 
 
-def tuck_amplitude(surface: Surface, k0: float, sec: np.ndarray, progress: bool = False) -> np.ndarray:
+def tuck_amplitude(surface: Surface, k0: float, sec: np.ndarray) -> np.ndarray:
     """A(theta) at ``sec = sec(theta)`` (array, >= 1), m; ``k0 = g / U^2`` in 1/m.
 
     Triangles deeper than the decay ``exp(k0 sec^2 z)`` lets matter (their shallowest corner
@@ -58,17 +58,16 @@ def tuck_amplitude(surface: Surface, k0: float, sec: np.ndarray, progress: bool 
     weight = 2.0 * surface.vector_areas[by_depth, 0]  # 2 n_x |T|: int_T exp(s) n_x dS = weight e[s0, s1, s2]
     depth = top[by_depth[0]] - top[by_depth]  # below the shallowest point, increasing
     out = np.empty(flat.shape, dtype=complex)
-    bar = tqdm(total=len(flat), desc="A(theta)", unit="angle", disable=not progress)
     start = 0
-    while start < len(flat):
-        active = int(np.searchsorted(depth, DECAY_CUTOFF / (k0 * flat[order[start]] ** 2), side="right"))
-        stop = min(len(flat), start + max(1, WORK_PER_CHUNK // active))
-        s = flat[order[start:stop], None]
-        exponents = [k0 * s * s * p[:active, 2] - 1j * k0 * s * p[:active, 0] for p in corners]
-        out[order[start:stop]] = exp_divided_difference(*exponents) @ weight[:active]
-        bar.update(stop - start)
-        start = stop
-    bar.close()
+    with task("A(theta)", len(flat), "angle") as bar:
+        while start < len(flat):
+            active = int(np.searchsorted(depth, DECAY_CUTOFF / (k0 * flat[order[start]] ** 2), side="right"))
+            stop = min(len(flat), start + max(1, WORK_PER_CHUNK // active))
+            s = flat[order[start:stop], None]
+            exponents = [k0 * s * s * p[:active, 2] - 1j * k0 * s * p[:active, 0] for p in corners]
+            out[order[start:stop]] = exp_divided_difference(*exponents) @ weight[:active]
+            bar.update(stop - start)
+            start = stop
     return (k0 * flat**3 / math.pi * out).reshape(sec.shape)
 
 

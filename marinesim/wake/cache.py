@@ -14,12 +14,12 @@ import json
 from pathlib import Path
 from typing import Iterable
 
-from tqdm import tqdm
 
 from marinesim.cache import cache_root
 from marinesim.constants import RHO_SEAWATER, G
 from marinesim.errors import FileFormatError
 from marinesim.hull import Hull
+from marinesim.progress import task
 from marinesim.wake.compute import Wake, WakeGrid, compute_wake
 
 CACHE_FORMAT = 2
@@ -37,8 +37,7 @@ def cache_key(hull: Hull, speed_m_s: float, grid: WakeGrid, rho: float, g: float
 
 
 def cached_wake(hull: Hull, speed_m_s: float, grid: WakeGrid = WakeGrid(), *, rho: float = RHO_SEAWATER,
-                g: float = G, refinement: float = 1.0, progress: bool = False,
-                folder: Path | None = None) -> tuple[Wake, bool]:
+                g: float = G, refinement: float = 1.0, folder: Path | None = None) -> tuple[Wake, bool]:
     """The wake from the cache, or computed and stored; and whether it came from the cache."""
     path = (folder or cache_dir()) / f"{cache_key(hull, speed_m_s, grid, rho, g, refinement)}.npz"
     if path.is_file():
@@ -48,16 +47,19 @@ def cached_wake(hull: Hull, speed_m_s: float, grid: WakeGrid = WakeGrid(), *, rh
             return wake, True
         except FileFormatError:
             pass  # a damaged entry: recompute it below
-    wake = compute_wake(hull, speed_m_s, grid, rho=rho, g=g, refinement=refinement, progress=progress)
+    wake = compute_wake(hull, speed_m_s, grid, rho=rho, g=g, refinement=refinement)
     path.parent.mkdir(parents=True, exist_ok=True)
     wake.save(path)
     return wake, False
 
 
 def precompute_wakes(hull: Hull, speeds_m_s: Iterable[float], grid: WakeGrid = WakeGrid(), *,
-                     rho: float = RHO_SEAWATER, g: float = G, progress: bool = False,
-                     folder: Path | None = None) -> list[tuple[Wake, bool]]:
-    """The wakes of ``hull`` at each speed (cached), with a progress bar over the speeds."""
+                     rho: float = RHO_SEAWATER, g: float = G, folder: Path | None = None) -> list[tuple[Wake, bool]]:
+    """The wakes of ``hull`` at each speed (m/s), from the cache or computed and stored."""
     speeds = list(speeds_m_s)
-    return [cached_wake(hull, speed, grid, rho=rho, g=g, folder=folder, progress=progress and len(speeds) == 1)
-            for speed in tqdm(speeds, desc="wakes", unit="speed", disable=not progress or len(speeds) < 2)]
+    wakes = []
+    with task("wakes", len(speeds), "speed") as bar:
+        for speed in speeds:
+            wakes.append(cached_wake(hull, speed, grid, rho=rho, g=g, folder=folder))
+            bar.update(1)
+    return wakes

@@ -91,12 +91,12 @@ class Wake:
 
 
 def compute_wake(hull: Hull, speed_m_s: float, grid: WakeGrid = WakeGrid(), *, rho: float = RHO_SEAWATER,
-                 g: float = G, refinement: float = 1.0, progress: bool = False) -> Wake:
+                 g: float = G, refinement: float = 1.0) -> Wake:
     """Tuck's A(theta), Michell's wave resistance and the far-field wake of ``hull`` at ``speed_m_s``."""
     k0 = wavenumber(speed_m_s, g)
     wavelength = 2.0 * math.pi / k0
     statics = hydrostatics(hull, rho)
-    froude = froude_number(speed_m_s, statics.froude_length_m, g)
+    froude = statics.froude(speed_m_s, g)
     if froude < MIN_FROUDE:
         raise ParameterError(f"Fn {froude:.3f} at {speed_m_s:.3g} m/s is below {MIN_FROUDE}: this hull makes "
                              "almost no waves so slowly, thin-ship theory does not describe them, and the "
@@ -109,14 +109,14 @@ def compute_wake(hull: Hull, speed_m_s: float, grid: WakeGrid = WakeGrid(), *, r
     started = time.perf_counter()
     u, weights = resistance_quadrature(k0, hull_reach(surface))
     sec = np.cosh(u)
-    a = tuck_amplitude(surface, k0, sec, progress)
+    a = tuck_amplitude(surface, k0, sec)
     resistance = resistance_from_amplitude(a, sec, weights, speed_m_s, rho)
     amplitude_seconds = time.perf_counter() - started
 
     started = time.perf_counter()
     spectrum = wake_spectrum(surface, k0, float(np.abs(x).max()), float(np.abs(y).max()), grid.spacing_m,
-                             refinement, progress)
-    elevation = spectrum.on_grid(x, y, progress) * _bow_fade(x, bow, stern)
+                             refinement)
+    elevation = spectrum.on_grid(x, y) * _bow_fade(x, bow, stern)
     field_seconds = time.perf_counter() - started
 
     info = {
@@ -146,11 +146,6 @@ def compute_wake(hull: Hull, speed_m_s: float, grid: WakeGrid = WakeGrid(), *, r
         info["grid_note"] = "the grid ends before the stern: give more columns (nx) or a larger spacing"
     kept = slice(None, None, max(1, len(sec) // PLOTTED_ANGLES))
     return Wake(elevation.astype(np.float32), x, y, sec[kept], a[kept], info)
-
-
-def froude_number(speed_m_s: float, length_m: float, g: float = G) -> float:
-    """Fn = U / sqrt(g L), L the waterline length (Hydrostatics.froude_length_m)."""
-    return speed_m_s / math.sqrt(g * length_m)
 
 
 def _bow_fade(x: np.ndarray, bow: float, stern: float) -> np.ndarray:

@@ -33,10 +33,10 @@ from dataclasses import dataclass
 
 import numpy as np
 from scipy.interpolate import CubicSpline
-from tqdm import tqdm
 
-from marinesim.hull import Surface
 from marinesim.errors import ParameterError
+from marinesim.hull import Surface
+from marinesim.progress import task
 from marinesim.wake.amplitude import hull_reach, phase_quadrature, tuck_amplitude
 from marinesim.wake.nufft import NonuniformSum
 
@@ -63,7 +63,7 @@ class WakeSpectrum:
             out[start:start + 256] = (np.cos(ys * self.ky) * np.exp(1j * xs * self.kx) @ self.weight).real
         return out.reshape(shape)
 
-    def on_grid(self, x: np.ndarray, y: np.ndarray, progress: bool = False) -> np.ndarray:
+    def on_grid(self, x: np.ndarray, y: np.ndarray) -> np.ndarray:
         """zeta on the grid ``x`` (uniform, increasing) by ``y`` (symmetric about 0), shape (len(y), len(x))."""
         dx = (x[-1] - x[0]) / (len(x) - 1)
         rows, inverse = np.unique(np.round(np.abs(y), 9), return_inverse=True)
@@ -71,14 +71,16 @@ class WakeSpectrum:
         nufft = NonuniformSum(self.kx * dx, self.weight * np.exp(1j * self.kx * x[0]), len(x))
         half = np.empty((len(rows), len(x)))
         chunks = range(0, len(rows), ROWS_PER_CHUNK)
-        for start in tqdm(chunks, desc="wake field", unit="chunk", disable=not progress):
-            eta = rows[start:start + ROWS_PER_CHUNK]
-            half[start:start + len(eta)] = nufft(np.cos(np.outer(self.ky, eta))).real.T
+        with task("wake field", len(chunks), "chunk") as bar:
+            for start in chunks:
+                eta = rows[start:start + ROWS_PER_CHUNK]
+                half[start:start + len(eta)] = nufft(np.cos(np.outer(self.ky, eta))).real.T
+                bar.update(1)
         return half[inverse.ravel()]
 
 
 def wake_spectrum(surface: Surface, k0: float, xi_max: float, eta_max: float, spacing: float,
-                  refinement: float = 1.0, progress: bool = False) -> WakeSpectrum:
+                  refinement: float = 1.0) -> WakeSpectrum:
     """The quadrature of the far-field integral for a grid reaching ``xi_max`` downstream and
     ``eta_max`` across (m) at ``spacing`` (m); ``refinement`` multiplies the nodes per radian."""
     k_band = math.pi / spacing

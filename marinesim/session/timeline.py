@@ -1,18 +1,21 @@
-"""What the viewer shows, as functions of time: the ocean, the vessel's pose and motions, its wake.
+"""The session's timeline: the ocean, the vessel's pose and motions, its wake and the local solver,
+as functions of time.
 
-The simulation owns no GL state; the renderer reads it. Its state is a timeline of *legs*: the
+The timeline owns no GL state; the renderer reads it. Its state is a list of *legs*: the
 vessel's straight track and its response to the sea at that time. A live change (sea state,
 speed, heading) starts a new leg that blends in over ``ramp_s`` seconds with the weight
 ``w = 3 s^2 - 2 s^3`` (:func:`~marinesim.sea.ocean.smoothstep`), the one the ocean ramps its
 amplitudes with (:meth:`Ocean.ramp_to`): the response is linear in the amplitudes, so blending
-the two legs' motions with ``w`` is the response to the ramping sea. Track position and heading blend with the
-same weight, which turns the ship along a smooth curve. A change asked for while another blends
-waits for it to end. Motions, poses and recordings at any time come from the timeline, so the
-same scenario, seed and changes give the same numbers whatever the frame rate.
+the two legs' motions with ``w`` is the response to the ramping sea. Track position and heading
+blend with the same weight, which turns the ship along a smooth curve. A change asked for while
+another blends waits for it to end. Motions, poses and recordings at any time come from the
+timeline, so the same scenario, seed and changes give the same numbers whatever the frame rate.
+The local wave solver, when started, is stepped with the clock.
 """
 
 from __future__ import annotations
 
+import contextvars
 import dataclasses
 import math
 from concurrent.futures import Future, ThreadPoolExecutor
@@ -23,17 +26,17 @@ import numpy as np
 from marinesim.angles import compass_to_math, math_to_compass, wave_compass_from_beta
 from marinesim.constants import KNOT
 from marinesim.errors import ParameterError, require_at_least, require_positive
-from marinesim.hull import hydrostatics
+from marinesim.pose import Pose
 from marinesim.recent import Recent
-from marinesim.scenario.export import VARIANCE_FRACTION, build_ocean
-from marinesim.scenario.schema import MAX_SPEED_KN, Scenario
+from marinesim.scenario import Scenario
+from marinesim.scenario.schema import MAX_SPEED_KN
 from marinesim.sea.ocean import smoothstep
-from marinesim.sea.seastate import RegularWave, SeaState, WaveSystem
-from marinesim.sea.spectra import Jonswap, JonswapFetch
-from marinesim.solver.footprint import HullPose
+from marinesim.sea.seastate import SeaState, scaled_sea
+from marinesim.session.assembly import Assembly
+from marinesim.solver.local import LocalSolver
 from marinesim.vessel.response import Response, Track
 from marinesim.wake.cache import cached_wake
-from marinesim.wake.compute import QUALITATIVE_BELOW_FROUDE, Wake, WakeGrid, froude_number
+from marinesim.wake.compute import QUALITATIVE_BELOW_FROUDE, Wake, WakeGrid
 
 RAMP_S = 20.0
 """Default time over which a live change blends in (s)."""
@@ -81,10 +84,10 @@ class Leg:
 class Simulation:
     """The scenario's ocean, vessel and wake, advanced by :meth:`advance` and queried at any time."""
 
-    def __init__(self, scenario: Scenario, *, wake: bool = True, wake_grid: WakeGrid = WAKE_GRID,
-                 progress: bool = False) -> None:
+    def __init__(self, scenario: Scenario, *, wake: bool = True, wake_grid: WakeGrid = WAKE_GRID) -> None:
         self.scenario = scenario
-        self.ocean = build_ocean(scenario)
+        self.assembly = Assembly(scenario)
+        self.ocean = self.assembly.ocean
         self.time = 0.0
         self.vessel = scenario.vessel
         heading = compass_to_math(self.vessel.heading_deg) if self.vessel else 0.0
@@ -94,14 +97,13 @@ class Simulation:
         """The vessel's response on each leg (the newest kept, older recomputed: memory stays flat)."""
         self._pending: list[_Change] = []
         self._preparing = ThreadPoolExecutor(max_workers=1, thread_name_prefix="sea-change")
-        self._last_pose: tuple[float, int, HullPose | None] = (math.nan, 0, None)
+        self._last_pose: tuple[float, int, Pose | None] = (math.nan, 0, None)
         self.wake_on = wake and self.vessel is not None and self.vessel.hull is not None
         self._wake_grid = wake_grid
         self._wakes: dict[float, Future | Wake | None] = {}
         self._pool = ThreadPoolExecutor(max_workers=1) if self.wake_on else None
-        self._progress = progress
+        self.solver: LocalSolver | None = None
         if self.wake_on:
-            self._length = hydrostatics(self.vessel.hull).froude_length_m
             self._request_wake(speed, wait=True)
 
     # -- timeline -----------------------------------------------------------------------------
@@ -109,7 +111,7 @@ class Simulation:
     def _respond(self, index: int) -> Response:
         """The response on leg ``index``: to the sea it blends into, along its track."""
         leg = self.legs[index]
-        components = self.ocean.components(t=leg.start + leg.ramp_s, variance_fraction=VARIANCE_FRACTION)
+        components = self.assembly.components(t=leg.start + leg.ramp_s)
         return Response(self.vessel.rao, components, leg.track, self.vessel.points)
 
     def response(self, index: int) -> Response:
@@ -117,7 +119,23 @@ class Simulation:
         return self._responses.get(index, len(self.legs) - 1)
 
     def advance(self, dt: float) -> None:
-        """Move the clock on by ``dt`` (s) and start the changes waiting for a blend to end."""
+        """Move the clock on by ``dt`` (s), start the changes waiting for a blend to end, step the solver."""
+        self._move_clock(dt)
+        if self.solver is not None and dt > 0:
+            self.solver.step(dt, self.pose())
+
+    def seek(self, t: float) -> None:
+        """Jump the clock forward to ``t`` (s); the solver's water starts at rest around the new pose."""
+        self._move_clock(t - self.time)
+        if self.solver is not None:
+            self.solver.place(self.pose())
+
+    def start_solver(self, solver: LocalSolver) -> None:
+        """Step ``solver`` (placed at the current pose) with the clock from now on; the timeline releases it."""
+        solver.place(self.pose())
+        self.solver = solver
+
+    def _move_clock(self, dt: float) -> None:
         if not math.isfinite(dt) or dt < 0:
             raise ParameterError(f"time step must be a finite non-negative number of seconds, got {dt!r}")
         self.time += dt
@@ -193,7 +211,7 @@ class Simulation:
 
     # -- queries ------------------------------------------------------------------------------
 
-    def pose(self, t: float | None = None) -> HullPose:
+    def pose(self, t: float | None = None) -> Pose:
         """Track point, heading and 6-DOF motion (m, rad) at ``t`` (default: now).
 
         The renderer, the camera and the HUD all ask for the pose at the same time each frame:
@@ -207,7 +225,7 @@ class Simulation:
         motion = (0.0,) * 6
         if self.vessel is not None:
             motion = tuple(float(v) for v in self._linear(np.array([t]))[0, :6])
-        pose = HullPose(float(x), float(y), previous.track.heading + w * turn, motion)
+        pose = Pose(float(x), float(y), previous.track.heading + w * turn, motion)
         self._last_pose = (t, len(self.legs), pose)
         return pose
 
@@ -240,11 +258,12 @@ class Simulation:
     def _request_wake(self, speed: float, wait: bool = False) -> None:
         if speed in self._wakes:
             return
-        if froude_number(speed, self._length) < QUALITATIVE_BELOW_FROUDE:
+        if self.assembly.hydrostatics.froude(speed) < QUALITATIVE_BELOW_FROUDE:
             self._wakes[speed] = None
             return
-        hull, grid, progress = self.vessel.hull, self._wake_grid, self._progress and wait
-        future = self._pool.submit(lambda: cached_wake(hull, speed, grid, progress=progress)[0])
+        hull, grid = self.vessel.hull, self._wake_grid
+        compute = (contextvars.copy_context().run if wait else _call)  # a wake waited for shows its progress
+        future = self._pool.submit(compute, lambda: cached_wake(hull, speed, grid)[0])
         self._wakes[speed] = future.result() if wait else future
 
     def wakes(self, t: float | None = None) -> list[tuple[Wake, float]]:
@@ -273,7 +292,7 @@ class Simulation:
             return "wake off"
         speed = self.legs[-1].track.speed  # the wake is requested when a speed change starts
         wake = self._wakes.get(speed)
-        froude = froude_number(speed, self._length)
+        froude = self.assembly.hydrostatics.froude(speed)
         if wake is None:
             return f"no wake drawn: Fn {froude:.2f} < {QUALITATIVE_BELOW_FROUDE}"
         if isinstance(wake, Future) and not wake.done():
@@ -284,6 +303,8 @@ class Simulation:
         self._preparing.shutdown(wait=False, cancel_futures=True)
         if self._pool is not None:
             self._pool.shutdown(wait=False, cancel_futures=True)
+        if self.solver is not None:
+            self.solver.release()
 
     def describe(self) -> list[str]:
         """HUD lines: the sea state and the vessel's course."""
@@ -296,22 +317,5 @@ class Simulation:
         return lines
 
 
-def scaled_sea(sea: SeaState, hs_factor: float, tp_factor: float, turn_deg: float) -> SeaState:
-    """``sea`` with every height times ``hs_factor``, every period times ``tp_factor`` and every
-    direction turned ``turn_deg`` clockwise (compass); spreading unchanged. Hs scales exactly."""
-    for name, value in (("Hs factor", hs_factor), ("Tp factor", tp_factor)):
-        if not (math.isfinite(value) and value > 0):
-            raise ParameterError(f"{name} must be a positive number, got {value!r}")
-    turn = -math.radians(turn_deg)  # compass clockwise = math clockwise
-    systems = []
-    for system in sea.systems:
-        if isinstance(system, RegularWave):
-            systems.append(dataclasses.replace(system, height=system.height * hs_factor,
-                                               period=system.period * tp_factor, beta=system.beta + turn))
-            continue
-        spectrum = system.spectrum
-        if isinstance(spectrum, JonswapFetch):
-            spectrum = Jonswap(spectrum.hs, spectrum.tp, spectrum.gamma, g=spectrum.g)
-        spectrum = dataclasses.replace(spectrum, hs=spectrum.hs * hs_factor, tp=spectrum.tp * tp_factor)
-        systems.append(WaveSystem(spectrum, system.beta + turn, system.spreading))
-    return SeaState(tuple(systems), depth=sea.depth, g=sea.g)
+def _call(function):
+    return function()

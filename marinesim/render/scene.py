@@ -1,8 +1,9 @@
-"""One viewing session: the simulation, its renderer, the HUD, the cameras and the motion history.
+"""What is drawn of a session: its simulation, the renderer, the HUD, the cameras and the motion history.
 
 The window (:mod:`marinesim.render.viewer`) and the headless renders
-(:mod:`marinesim.render.offscreen`) both draw their frames through :meth:`Session.draw`, so a
-video shows exactly what the window shows.
+(:mod:`marinesim.render.offscreen`) both draw their frames through :meth:`Scene.draw`, so a
+video shows exactly what the window shows. The local wave solver runs on the scene's context, so
+the scene makes it and hands it to the simulation, which steps it.
 """
 
 from __future__ import annotations
@@ -17,8 +18,8 @@ from marinesim.gl import is_software
 from marinesim.render.camera import BridgeCamera, FreeCamera, OrbitCamera
 from marinesim.render.hud import Hud, StripHistory
 from marinesim.render.renderer import Renderer, RenderOptions
-from marinesim.render.simulation import Simulation
-from marinesim.scenario.schema import Scenario
+from marinesim.scenario import Scenario
+from marinesim.session.timeline import Simulation
 
 CAMERAS = ("orbit", "bridge", "free")
 CHARTED = (("heave", "heave_m", "m"), ("roll", "roll_deg", "deg"), ("pitch", "pitch_deg", "deg"))
@@ -34,17 +35,23 @@ def solver_wanted(ctx: moderngl.Context, choice: str) -> bool:
     return choice == "on" or (choice == "auto" and not is_software(ctx))
 
 
-class Session:
+class Scene:
     """Draws ``scenario`` on ``ctx``: ``camera`` is one of :data:`CAMERAS`; the bridge camera
     sits on the scenario's point named ``bridge`` (else 10 m above the reference point)."""
 
     def __init__(self, ctx: moderngl.Context, scenario: Scenario, camera: str = "orbit",
-                 options: RenderOptions = RenderOptions(), progress: bool = False) -> None:
+                 options: RenderOptions = RenderOptions()) -> None:
         self.ctx = ctx
-        self.sim = Simulation(scenario, wake=options.wake, progress=progress)
+        self.sim = Simulation(scenario, wake=options.wake)
+        vessel = scenario.vessel
+        if options.solver and vessel is not None and vessel.hull is not None:
+            from marinesim.solver.gpu import GpuSolver
+            from marinesim.solver.local import SolverConfig
+
+            config = SolverConfig.for_hull(vessel.hull, size=options.solver_size)
+            self.sim.start_solver(GpuSolver(config, vessel.hull, self.sim.pose(), ctx=ctx))
         self.renderer = Renderer(ctx, self.sim, options)
         self.hud = Hud(ctx)
-        vessel = scenario.vessel
         mesh = self.renderer.mesh  # the vessel as drawn frames the orbit camera
         length = float(np.ptp(mesh.positions[:, 0])) if mesh is not None else 100.0
         bridge = vessel.points.get("bridge", (0.0, 0.0, 10.0)) if vessel is not None else (0.0, 0.0, 10.0)

@@ -1,0 +1,128 @@
+"""The vessel's motions over a run, exported: CSV (or Parquet) plus a JSON sidecar.
+
+Columns and sidecar as docs/CONVENTIONS.md ("Time series and files"). The table streams to
+disk in blocks, so memory stays flat with duration; it is written to a temporary file renamed
+into place at the end, so an interrupted export leaves no partial file. Same scenario and seed:
+byte-identical files (the sidecar holds no clock time).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+from pathlib import Path
+from typing import IO, Iterable
+
+import numpy as np
+
+from marinesim.atomic import atomic_path, write_json
+from marinesim.errors import MarinesimError, ParameterError
+from marinesim.progress import Bar, task
+from marinesim.scenario import Scenario
+from marinesim.scenario.schema import check_run
+from marinesim.session.assembly import Assembly
+from marinesim.session.sidecar import run_sidecar, sha256
+
+FORMATS = ("csv", "parquet")
+CONVENTIONS = ("body frame x forward, y port, z up, origin at the RAO reference point; "
+               "roll/pitch/yaw positive about x/y/z (pitch bow down, yaw bow to port), degrees; "
+               "points: position in the steady vessel frame, R = Rz(yaw) Ry(pitch) Rx(roll); "
+               "<point>_relative_m = point's vertical motion minus the incident wave elevation there; "
+               "wave_elevation_m: incident wave at the reference point (docs/CONVENTIONS.md)")
+"""What the columns mean, as the sidecar states it."""
+
+
+def with_run(scenario: Scenario, duration: float | None = None, dt: float | None = None,
+             seed: int | None = None) -> Scenario:
+    """``scenario`` with its run options overridden (checked as in the scenario file)."""
+    run = scenario.run
+    run = dataclasses.replace(run, duration_s=run.duration_s if duration is None else float(duration),
+                              dt_s=run.dt_s if dt is None else float(dt),
+                              seed=run.seed if seed is None else int(seed))
+    check_run(run)
+    return dataclasses.replace(scenario, run=run)
+
+
+@dataclass(frozen=True)
+class Export:
+    table: Path
+    sidecar: Path
+    rows: int
+    columns: list[str]
+
+
+def export_motions(assembly: Assembly, out: Path, file_format: str = "csv",
+                   duration_s: float | None = None) -> Export:
+    """Write the motions of the assembled scenario over ``[0, duration_s]`` (default: its run) at the run's
+    dt to ``out``, with the sidecar ``out.json`` beside it."""
+    if file_format not in FORMATS:
+        raise ParameterError(f"unknown export format {file_format!r} (known: {', '.join(FORMATS)})")
+    out = Path(out)
+    sidecar = out.with_suffix(".json")
+    if sidecar == out:
+        raise ParameterError(f"the export file needs an extension other than .json: {out}")
+    scenario, response = assembly.scenario, assembly.response
+    run = scenario.run
+    duration = run.duration_s if duration_s is None else duration_s
+    steps = int(round(duration / run.dt_s)) + 1
+    blocks = response.frames(0.0, run.dt_s, steps)
+    with task(f"export {out.name}", steps) as bar, atomic_path(out) as temp:
+        if file_format == "csv":
+            _write_csv(temp, blocks, bar)
+        else:
+            _write_parquet(temp, blocks, bar)
+    vessel, rao = scenario.vessel, scenario.vessel.rao
+    write_json(sidecar, {
+        "file": out.name,
+        "format": file_format,
+        "rows": steps,
+        "columns": response.columns,
+        "conventions": CONVENTIONS,
+        **run_sidecar(assembly, duration, run.dt_s, response.components),
+        "vessel": {
+            "rao": str(vessel.rao_path),
+            "rao_sha256": sha256(vessel.rao_path),
+            "rao_format": rao.source_format,
+            "rao_notes": list(rao.notes),
+            "rao_reference_point_m": list(rao.reference_point),
+            "hull": str(vessel.hull_path) if vessel.hull_path else None,
+            "hull_sha256": sha256(vessel.hull_path) if vessel.hull_path else None,
+            "speed_kn": vessel.speed_kn,
+            "heading_deg": vessel.heading_deg,
+            "points_m": {name: list(p) for name, p in vessel.points.items()},
+        },
+    })
+    return Export(out, sidecar, steps, response.columns)
+
+
+def write_csv_block(handle: IO[str], block: dict[str, np.ndarray], header: bool) -> None:
+    """Motion rows (columns as :func:`~marinesim.vessel.response.motion_columns`) to an open text file."""
+    import pandas as pd
+
+    pd.DataFrame(block).to_csv(handle, index=False, header=header, lineterminator="\n")
+
+
+def _write_csv(path: Path, blocks: Iterable[dict[str, np.ndarray]], bar: Bar) -> None:
+    with path.open("w", encoding="utf-8", newline="") as handle:
+        for i, block in enumerate(blocks):
+            write_csv_block(handle, block, header=(i == 0))
+            bar.update(len(block["time_s"]))
+
+
+def _write_parquet(path: Path, blocks: Iterable[dict[str, np.ndarray]], bar: Bar) -> None:
+    try:
+        import pyarrow as pa
+        import pyarrow.parquet as pq
+    except ImportError:
+        raise MarinesimError("Parquet export needs pyarrow: pip install 'marinesim[parquet]'") from None
+    writer = None
+    try:
+        for block in blocks:
+            table = pa.table(block)
+            if writer is None:
+                writer = pq.ParquetWriter(path, table.schema)
+            writer.write_table(table)
+            bar.update(len(block["time_s"]))
+    finally:
+        if writer is not None:
+            writer.close()

@@ -1,0 +1,111 @@
+"""The headless run of a scenario: what ``marinesim run`` writes without a viewer.
+
+Into one folder: ``sea.png`` (spectrum and surface); with a vessel, ``motions.csv`` and its JSON
+sidecar (as ``marinesim export``), ``motions.png`` and ``rao.png``, and with a hull and a speed
+``wake.png`` (the Kelvin wake, precomputed into the cache for every scenario speed); without one,
+``wave_elevation.csv`` (elevation at the origin), its sidecar and ``wave_elevation.png``.
+Same scenario and seed: bit-identical tables. The ocean is built once, for all of them.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from marinesim.atomic import atomic_path, write_json
+from marinesim.constants import KNOT
+from marinesim.progress import task
+from marinesim.sea.plot import plot_sea, plot_series
+from marinesim.session.assembly import Assembly
+from marinesim.session.export import export_motions
+from marinesim.session.sidecar import run_sidecar
+from marinesim.vessel.plot import plot_motions, plot_rao
+
+ELEVATION_CHUNK = 1000
+"""Time steps of the wave elevation computed at once."""
+
+
+@dataclass
+class Headless:
+    """What a headless run wrote (by name: sea_plot, motions, sidecar, ...) and what it has to say."""
+
+    files: dict[str, Path] = field(default_factory=dict)
+    notes: list[str] = field(default_factory=list)
+
+
+def run_headless(assembly: Assembly, out_dir: Path) -> Headless:
+    """Run the assembled scenario without a display into ``out_dir`` (made if missing)."""
+    out_dir.mkdir(parents=True, exist_ok=True)
+    scenario = assembly.scenario
+    result = Headless({"sea_plot": out_dir / "sea.png"})
+    with atomic_path(result.files["sea_plot"]) as temp:
+        plot_sea(assembly.ocean, temp)
+    if scenario.vessel is None:
+        result.files |= _wave_elevation(assembly, out_dir)
+        return result
+    import pandas as pd
+
+    export = export_motions(assembly, out_dir / "motions.csv")
+    result.files |= {"motions": export.table, "sidecar": export.sidecar, "motions_plot": out_dir / "motions.png",
+                     "rao_plot": out_dir / "rao.png"}
+    vessel = scenario.vessel
+    with atomic_path(result.files["motions_plot"]) as temp:
+        plot_motions(pd.read_csv(export.table), temp,
+                     f"{scenario.name}: {vessel.rao_path.name}, {vessel.speed_kn:.3g} kn, heading "
+                     f"{vessel.heading_deg:g} deg, seed {scenario.run.seed}")
+    with atomic_path(result.files["rao_plot"]) as temp:
+        plot_rao(vessel.rao, temp, [180.0, 135.0, 90.0, 45.0, 0.0], vessel.speed_m_s)
+    if vessel.hull is not None and vessel.wake_speeds_m_s:
+        _wakes(assembly, out_dir, result)
+    return result
+
+
+def _wakes(assembly: Assembly, out_dir: Path, result: Headless) -> None:
+    """Precompute (or read from the cache) the wakes of every scenario speed; draw the one at the vessel's."""
+    from marinesim.wake.cache import precompute_wakes
+    from marinesim.wake.compute import MIN_FROUDE, QUALITATIVE_BELOW_FROUDE
+    from marinesim.wake.plot import plot_wake
+
+    vessel, statics = assembly.scenario.vessel, assembly.hydrostatics
+    speeds = [u for u in vessel.wake_speeds_m_s if statics.froude(u) >= MIN_FROUDE]
+    for skipped in sorted(set(vessel.wake_speeds_m_s) - set(speeds)):
+        result.notes.append(f"no wake at {skipped / KNOT:.3g} kn: Fn {statics.froude(skipped):.3f} is below {MIN_FROUDE}")
+    wakes = precompute_wakes(vessel.hull, speeds)
+    froude = statics.froude(vessel.speed_m_s)
+    if froude < QUALITATIVE_BELOW_FROUDE:
+        if vessel.speed_m_s > 0:
+            result.notes.append(f"no wake drawn at {vessel.speed_kn:.3g} kn: Fn {froude:.3f} is below "
+                                f"{QUALITATIVE_BELOW_FROUDE}, where thin-ship theory does not hold for this hull")
+        return
+    wake = next(w for w, _ in wakes if w.info["speed_m_s"] == vessel.speed_m_s)
+    path = out_dir / "wake.png"
+    with atomic_path(path) as temp:
+        plot_wake(wake, temp)
+    result.files["wake_plot"] = path
+
+
+def _wave_elevation(assembly: Assembly, out_dir: Path) -> dict[str, Path]:
+    """The incident wave elevation at (0, 0) over the run (m), its sidecar and its plot."""
+    import pandas as pd
+
+    files = {"elevation": out_dir / "wave_elevation.csv", "sidecar": out_dir / "wave_elevation.json",
+             "elevation_plot": out_dir / "wave_elevation.png"}
+    scenario, run = assembly.scenario, assembly.scenario.run
+    steps = int(round(run.duration_s / run.dt_s)) + 1
+    times = np.arange(steps) * run.dt_s
+    components = assembly.components()
+    elevation = np.empty(steps)
+    with task("wave elevation", steps) as bar:
+        for lo in range(0, steps, ELEVATION_CHUNK):
+            hi = min(lo + ELEVATION_CHUNK, steps)
+            elevation[lo:hi] = components.elevation(0.0, 0.0, times[lo:hi])
+            bar.update(hi - lo)
+    with atomic_path(files["elevation"]) as temp:
+        pd.DataFrame({"time_s": times, "wave_elevation_m": elevation}).to_csv(temp, index=False)
+    with atomic_path(files["elevation_plot"]) as temp:
+        plot_series(times, elevation, "elevation [m]", f"wave elevation at (0, 0), {scenario.name}, seed {run.seed}",
+                    temp)
+    write_json(files["sidecar"], run_sidecar(assembly, run.duration_s, run.dt_s, components) | {"point_m": [0.0, 0.0]})
+    return files
