@@ -18,9 +18,6 @@ from marinesim.sea import Ocean, SeaState
 from marinesim.sea.build import SPECTRUM_TYPES, SPREADING_TYPES, wave_system
 from marinesim.sea.summary import summary
 
-DEFAULT_SCENARIO = Path(__file__).resolve().parent.parent / "configs" / "default.toml"
-
-
 def main(argv: list[str] | None = None) -> int:
     parser = _parser()
     args = parser.parse_args(argv)
@@ -228,7 +225,7 @@ def _add_run(commands: argparse._SubParsersAction) -> None:
         "the motions and the RAOs, the motion CSV over the scenario's run, and a 10 s video, and says where "
         "they are.",
     )
-    p.add_argument("scenario", nargs="?", type=Path, default=DEFAULT_SCENARIO, help="scenario TOML file")
+    p.add_argument("scenario", nargs="?", type=Path, help="scenario TOML file (default: the shipped default.toml)")
     p.add_argument("--out", type=Path, help="output folder of a headless run (default out/<scenario name>)")
     p.add_argument("--headless", action="store_true", help="do not open a window even if there is a display")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
@@ -245,7 +242,9 @@ def _run_scenario(args: argparse.Namespace) -> int:
     from marinesim.session.assembly import Assembly
     from marinesim.session.headless import run_headless
 
-    scenario = load_scenario(args.scenario)
+    from marinesim.resources import default_scenario
+
+    scenario = load_scenario(args.scenario or default_scenario())
     print(f"scenario {scenario.path}: {len(scenario.sea.systems)} wave system(s), Hs {scenario.sea.hs:.2f} m, "
           f"Tp {scenario.sea.tp:.2f} s, {scenario.run.duration_s:g} s at dt {scenario.run.dt_s:g} s, "
           f"seed {scenario.run.seed}")

@@ -1,18 +1,17 @@
 """OpenGL plumbing shared by the solver and the renderer: contexts and shader sources.
 
-Shaders live in the top-level ``shaders/`` folder as GLSL files; compile-time constants are
+Shaders are GLSL files in the ``shaders`` resources (:mod:`marinesim.resources`); compile-time constants are
 injected as ``#define`` lines after the ``#version`` line, so one file serves every grid size.
 """
 
 from __future__ import annotations
 
-from pathlib import Path
-
 import moderngl
 
 from marinesim.errors import MarinesimError
+from marinesim.resources import resource_dir
 
-SHADER_DIR = Path(__file__).resolve().parents[1] / "shaders"
+SHADER_DIR = resource_dir("shaders")
 GL_VERSION = 430
 """Compute shaders need OpenGL 4.3."""
 
