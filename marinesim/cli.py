@@ -13,6 +13,7 @@ import numpy as np
 from marinesim import __version__
 from marinesim.atomic import atomic_path
 from marinesim.errors import MarinesimError, ParameterError, require_finite
+from marinesim.formats import extensions, formats
 from marinesim.progress import reporting
 from marinesim.sea import Ocean, SeaState
 from marinesim.sea.build import SPECTRUM_TYPES, SPREADING_TYPES, wave_system
@@ -94,7 +95,7 @@ def _hull_from_args(args: argparse.Namespace):
 def _add_hull(commands: argparse._SubParsersAction) -> None:
     p = commands.add_parser(
         "hull", help="check a hull mesh and print its hydrostatics",
-        description="Read a hull (STL, OBJ, PLY, GLB, OFF or WAMIT .gdf), place it in the body frame "
+        description=f"Read a hull ({', '.join(extensions('mesh'))}), place it in the body frame "
                     "(x forward, y to port, z up, waterline z = 0), check it and print its hydrostatics.")
     p.add_argument("hull", type=Path, help="hull mesh file")
     _add_hull_options(p)
@@ -120,7 +121,8 @@ def _run_hull(args: argparse.Namespace) -> int:
 def _add_wake(commands: argparse._SubParsersAction) -> None:
     p = commands.add_parser(
         "wake", help="compute the Kelvin wake and wave resistance of a hull",
-        description="Integrate Tuck's amplitude function A(theta) exactly over the hull's wetted triangles, "
+        description="Integrate Tuck's amplitude function A(theta) exactly over the wetted triangles of the hull "
+                    f"({', '.join(extensions('mesh'))}), "
                     "give Michell's wave resistance, and compute the far-field wake on a grid in the vessel "
                     "frame. Results are cached; --out writes the field, its grid and the parameters (.npz).")
     p.add_argument("hull", type=Path, help="hull mesh file")
@@ -337,11 +339,10 @@ def _run_render(args: argparse.Namespace) -> int:
 
 
 def _add_rao(commands: argparse._SubParsersAction) -> None:
-    from marinesim.vessel import FORMATS
-
     p = commands.add_parser(
         "rao", help="summarise an RAO file (ranges, long-wave limits, resonances)",
-        description="Read an RAO file (" + "; ".join(FORMATS.values()) + ") and summarise it: DOFs, "
+        description="Read an RAO file (" + "; ".join(f.description for f in formats("rao"))
+                    + ") and summarise it: DOFs, "
                     "frequency/heading/speed ranges, the long-wave-limit check per DOF, resonance periods.")
     p.add_argument("file", type=Path, help="RAO file")
     p.add_argument("--json", action="store_true", help="print the summary as one JSON object")

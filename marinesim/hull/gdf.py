@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
+import trimesh
 
 from marinesim.errors import FileFormatError
 from marinesim.tokens import Tokens, parse_float, parse_int, read_text
@@ -61,6 +62,12 @@ def read_gdf(path: str | Path) -> tuple[GdfHeader, np.ndarray, np.ndarray]:
     first = 4 * np.arange(len(corners))[:, None]
     faces = np.concatenate([first + [0, 1, 2], first + [0, 2, 3]])
     return header, vertices, faces
+
+
+def read_gdf_mesh(path: Path) -> trimesh.Trimesh:
+    """The whole (mirrored) surface of a ``.gdf`` file as a mesh, vertices and faces as :func:`read_gdf` gives them."""
+    _, vertices, faces = read_gdf(path)
+    return trimesh.Trimesh(vertices, faces, process=False)
 
 
 def _header(path: Path, lines: list[str]) -> GdfHeader:

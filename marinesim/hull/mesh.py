@@ -6,8 +6,9 @@ no units and often another axis convention, so :func:`load_hull` takes them as o
 refuses what cannot be a vessel: an empty or non-finite mesh, nothing below the waterline, a
 length no ship has (millimetres read as metres), a hull open below the waterline. What it can
 repair (winding that disagrees between faces, normals pointing inwards) it repairs and says so
-in ``notes``. Reading a mesh file and placing it in the body frame (:func:`mesh_file`,
-:func:`read_mesh`, :func:`to_body_frame`) are shared with the visual meshes of :mod:`marinesim.hull.visual`.
+in ``notes``. Reading a mesh file in any mesh format of :mod:`marinesim.formats` (:func:`load_mesh`) and
+placing it in the body frame (:func:`to_body_frame`) are shared with the visual meshes of
+:mod:`marinesim.hull.visual`; :func:`read_mesh` is the reader of the formats trimesh reads.
 """
 
 from __future__ import annotations
@@ -20,13 +21,12 @@ from pathlib import Path
 import numpy as np
 import trimesh
 
+from marinesim import formats
 from marinesim.errors import FileFormatError, ParameterError, require_finite, require_positive
-from marinesim.hull.gdf import read_gdf
 from marinesim.hull.wetted import Surface, wetted_surface
 from marinesim.pose import rotation_y
 
 UNITS = {"m": 1.0, "cm": 0.01, "mm": 0.001, "ft": 0.3048, "in": 0.0254}
-MESH_EXTENSIONS = (".stl", ".obj", ".ply", ".glb", ".gltf", ".off")
 LENGTH_LIMITS_M = (0.5, 600.0)  # no vessel, model or full scale, lies outside these
 CLOSURE_TOLERANCE = 1e-4  # of the wetted area: about a quarter of one panel of the WAMIT tanker
 MODEL_SCALE_BELOW_M = 10.0  # shorter than this: say that it may be a model-scale mesh
@@ -59,7 +59,8 @@ class Hull:
 
 def load_hull(path: str | Path, *, units: str = "m", scale: float = 1.0, axes: str = "x,y,z",
               draft: float | None = None, trim_deg: float = 0.0) -> Hull:
-    """Read a hull (STL, OBJ, PLY, GLB/glTF, OFF through trimesh; WAMIT ``.gdf``) into the body frame.
+    """Read a hull in any mesh format of :mod:`marinesim.formats` (WAMIT ``.gdf``, STL, OBJ, ...) into the
+    body frame.
 
     ``units`` are the mesh's length units (m, cm, mm, ft, in); ``scale`` the geometric scale of a
     model mesh (50 for a 1:50 model); ``axes`` says which mesh axes become body x, y, z, e.g.
@@ -67,12 +68,8 @@ def load_hull(path: str | Path, *, units: str = "m", scale: float = 1.0, axes: s
     (default: the mesh's own z = 0 is the waterline); ``trim_deg`` then rotates the hull about
     the y axis through the origin, bow down positive.
     """
-    path = mesh_file(path, (".gdf", *MESH_EXTENSIONS), "hull")
-    if path.suffix.lower() == ".gdf":
-        _, vertices, faces = read_gdf(path)
-    else:
-        mesh = read_mesh(path)
-        vertices, faces = np.asarray(mesh.vertices, float), np.asarray(mesh.faces, np.int64)
+    path, mesh = load_mesh(path, "hull")
+    vertices, faces = np.asarray(mesh.vertices, float), np.asarray(mesh.faces, np.int64)
     vertices, faces = to_body_frame(vertices, faces, path, units=units, scale=scale, axes=axes, what="hull")
     if draft is not None:
         draft = require_positive("draft", draft)
@@ -112,19 +109,18 @@ def make_hull(vertices: np.ndarray, faces: np.ndarray, source: str, notes: tuple
     return Hull(np.array(mesh.vertices), np.array(mesh.faces), source, tuple(notes))
 
 
-def mesh_file(path: str | Path, formats: tuple[str, ...], what: str) -> Path:
-    """``path`` as a :class:`Path`; :class:`FileFormatError` if there is no such file or its extension is not
-    one of ``formats`` (``what`` names the kind of mesh in the message)."""
+def load_mesh(path: str | Path, what: str) -> tuple[Path, trimesh.Trimesh]:
+    """``path`` as a :class:`Path` and its mesh, read by the reader of its registered mesh format, in the
+    file's own numbers and axes; :class:`FileFormatError` if there is no such file or its format is unknown
+    (``what`` names the kind of mesh in the message)."""
     path = Path(path)
     if not path.is_file():
         raise FileFormatError(path, None, "no such file")
-    if path.suffix.lower() not in formats:
-        raise FileFormatError(path, None, f"unknown {what} format {path.suffix!r} (supported: {', '.join(formats)})")
-    return path
+    return path, formats.reader(formats.detect(path, "mesh", what))(path)
 
 
 def read_mesh(path: Path) -> trimesh.Trimesh:
-    """The triangles of a trimesh-readable file (:data:`MESH_EXTENSIONS`) as one mesh, in the file's own
+    """The triangles of a file in a format trimesh reads (STL, OBJ, PLY, glTF, OFF) as one mesh, in the file's own
     numbers and axes, with its colours or materials (``visual``); scene transforms applied, nothing merged."""
     try:
         mesh = trimesh.load(path, force="mesh", process=False)

@@ -19,7 +19,7 @@ import numpy as np
 import trimesh
 
 from marinesim.errors import ParameterError, require_finite
-from marinesim.hull.mesh import MESH_EXTENSIONS, mesh_file, read_mesh, to_body_frame
+from marinesim.hull.mesh import load_mesh, to_body_frame
 
 
 @dataclass(frozen=True)
@@ -34,7 +34,7 @@ class VisualMesh:
 
 def load_visual_mesh(path: str | Path, *, units: str = "m", scale: float = 1.0, axes: str = "x,y,z",
                      offset: Sequence[float] = (0.0, 0.0, 0.0)) -> VisualMesh:
-    """Read a visual mesh (STL, OBJ, PLY, GLB/glTF, OFF) into the body frame.
+    """Read a visual mesh in any mesh format of :mod:`marinesim.formats` (glTF, STL, OBJ, ...) into the body frame.
 
     ``units``, ``scale`` and ``axes`` mean what they mean for :func:`~marinesim.hull.load_hull`;
     ``offset`` (m) is where the mesh's origin lies in the body frame after them.
@@ -42,8 +42,7 @@ def load_visual_mesh(path: str | Path, *, units: str = "m", scale: float = 1.0, 
     shift = np.array([require_finite("offset", value) for value in offset])
     if shift.shape != (3,):
         raise ParameterError(f"offset must be [x, y, z] in metres (body frame), got {list(offset)!r}")
-    path = mesh_file(path, MESH_EXTENSIONS, "visual mesh")
-    mesh = read_mesh(path)
+    path, mesh = load_mesh(path, "visual mesh")
     vertices, faces = to_body_frame(np.asarray(mesh.vertices, float), np.asarray(mesh.faces, np.int64), path,
                                     units=units, scale=scale, axes=axes, what="visual mesh")
     return VisualMesh(vertices + shift, faces, _corner_colours(mesh.visual, faces), str(path))

@@ -6,8 +6,8 @@ and a :class:`Track` into motions of the vessel and of points on board.
 """
 
 from marinesim.vessel.rao import DOFS, RaoTable, long_wave_limit, make_table
-from marinesim.vessel.read import FORMATS, read_rao
+from marinesim.vessel.read import read_rao
 from marinesim.vessel.response import Response, Track, motion_columns
 
-__all__ = ["DOFS", "FORMATS", "RaoTable", "Response", "Track", "long_wave_limit", "make_table", "motion_columns",
+__all__ = ["DOFS", "RaoTable", "Response", "Track", "long_wave_limit", "make_table", "motion_columns",
            "read_rao"]

@@ -29,6 +29,11 @@ from marinesim.vessel.rao import DOFS, RaoTable, make_table
 NEEDED = ("added_mass", "radiation_damping", "inertia_matrix", "hydrostatic_stiffness")
 
 
+def sniff(head: bytes) -> bool:
+    """Whether the file starts as NetCDF does (HDF5 or classic CDF signature)."""
+    return head.startswith((b"\x89HDF", b"CDF"))
+
+
 def read_capytaine(path: str | Path, *, roll_damping: float = 0.0) -> RaoTable:
     """RAOs from a Capytaine dataset; ``roll_damping`` is the extra roll damping (fraction of critical)."""
     path = Path(path)

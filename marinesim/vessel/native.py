@@ -45,6 +45,12 @@ SPEED_COLUMNS = {"speed_m_s": 1.0, "speed_kn": KNOT}
 SETTINGS = ("vessel", "reference_point_m", "rho_kg_m3", "g_m_s2", "phase")
 
 
+def sniff(head: bytes) -> bool:
+    """Whether the file's first bytes hold a header row (``heading_deg`` and a ``*_phase_deg`` column)."""
+    return any("heading_deg" in line and "_phase_deg" in line
+               for line in head.decode("utf-8", errors="replace").splitlines())
+
+
 def read_native(path: str | Path) -> RaoTable:
     """Read a native RAO table (format in the module docstring)."""
     path = Path(path)

@@ -38,6 +38,11 @@ TITLE_LINES = 6
 MAGIC = "MOTION TRANSFER FUNCTIONS"
 
 
+def sniff(head: bytes) -> bool:
+    """Whether the file's first bytes hold VERES's title :data:`MAGIC`."""
+    return MAGIC in head.decode("utf-8", errors="replace").upper()
+
+
 def read_veres(path: str | Path) -> RaoTable:
     """Read a VERES ``.re1`` file (all speeds, headings and frequencies it holds)."""
     path = Path(path)

@@ -70,6 +70,17 @@ def read_wamit(path: str | Path, *, ulen: float | None = None, period_kind: int 
         raise FileFormatError(path, None, str(error)) from None
 
 
+def sniff(head: bytes) -> bool:
+    """Whether the file's first bytes look like a ``.4`` file: a first line of seven numbers."""
+    text = head.decode("utf-8", errors="replace")
+    first = next((line for line in text.splitlines() if line.strip()), "").split()
+    try:
+        [float(part) for part in first]
+    except ValueError:
+        return False
+    return len(first) == 7
+
+
 def _read_rows(path: Path) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Periods (file order, monotonic), headings (deg, increasing) and values (heading, period, 6)."""
     periods: list[float] = []

@@ -1,0 +1,134 @@
+"""The registry of file formats: RAO tables and hull/visual meshes, each read by one module.
+
+A :class:`Format` names its reader (and its optional content sniffer) as ``"module:function"``
+strings imported on first use, so listing the formats imports no reader and none of their
+dependencies. The built-in formats are declared in the table at the end of this module; a new
+format is one reader module plus one ``register`` line there.
+
+Reader contracts: an RAO reader is ``reader(path: Path, **options) -> RaoTable`` taking the
+keyword options its format declares; a mesh reader is ``reader(path: Path) -> trimesh.Trimesh``
+in the file's own units and axes. A sniffer is ``sniffer(head: bytes) -> bool`` on the first
+:data:`HEAD_BYTES` bytes of the file.
+"""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+
+from marinesim.errors import FileFormatError, ParameterError
+
+KINDS = {"rao": "RAO", "mesh": "mesh"}  # kind -> what the messages call a file of that kind
+HEAD_BYTES = 4096
+
+
+@dataclass(frozen=True)
+class Format:
+    """One file format: what it is, how it is recognised and which function reads it."""
+
+    name: str
+    kind: str  # a key of KINDS
+    description: str
+    extensions: tuple[str, ...]  # lower case, with the dot
+    reader: str  # "module:function"
+    sniffer: str | None = None  # "module:function" on the file's head bytes; None: by extension only
+    options: tuple[str, ...] = ()  # keyword options the reader accepts
+
+
+_REGISTRY: dict[str, Format] = {}
+
+
+def register(fmt: Format) -> Format:
+    """Add ``fmt``; a name or, within its kind, an extension already registered is refused."""
+    if fmt.kind not in KINDS:
+        raise ValueError(f"format {fmt.name!r}: kind must be one of {', '.join(KINDS)}, got {fmt.kind!r}")
+    if fmt.name in _REGISTRY:
+        raise ValueError(f"format {fmt.name!r} is already registered")
+    for other in formats(fmt.kind):
+        shared = set(fmt.extensions) & set(other.extensions)
+        if shared:
+            raise ValueError(f"format {fmt.name!r}: {', '.join(sorted(shared))} already read as {other.name!r}")
+    _REGISTRY[fmt.name] = fmt
+    return fmt
+
+
+def formats(kind: str | None = None) -> tuple[Format, ...]:
+    """The registered formats of ``kind`` (all when None), in registration order."""
+    return tuple(f for f in _REGISTRY.values() if kind is None or f.kind == kind)
+
+
+def extensions(kind: str) -> tuple[str, ...]:
+    """Every file extension a format of ``kind`` is recognised by, in registration order."""
+    return tuple(extension for f in formats(kind) for extension in f.extensions)
+
+
+def get(name: str, kind: str) -> Format:
+    """The format of ``kind`` called ``name``; :class:`ParameterError` listing the known ones otherwise."""
+    fmt = _REGISTRY.get(name)
+    if fmt is None or fmt.kind != kind:
+        raise ParameterError(f"unknown {KINDS[kind]} format {name!r}; supported: "
+                             + ", ".join(f.name for f in formats(kind)))
+    return fmt
+
+
+def detect(path: Path, kind: str, what: str | None = None) -> Format:
+    """The format of the file ``path``: by its extension, else by the sniffers on its first bytes.
+
+    :class:`FileFormatError` lists the supported formats when neither decides; ``what`` names the
+    file in that message (default: the kind's name, e.g. "RAO").
+    """
+    candidates = formats(kind)
+    suffix = path.suffix.lower()
+    for fmt in candidates:
+        if suffix in fmt.extensions:
+            return fmt
+    sniffable = [f for f in candidates if f.sniffer]
+    if sniffable:
+        head = _head(path)
+        for fmt in sniffable:
+            if _function(fmt.sniffer)(head):
+                return fmt
+    tried = "" if sniffable else f" {path.suffix!r}"  # the extension alone decided: name it
+    raise FileFormatError(path, None, f"unknown {what or KINDS[kind]} format{tried}; supported: "
+                          + "; ".join(f"{f.name} ({f.description})" for f in candidates))
+
+
+def reader(fmt: Format | str) -> Callable:
+    """The function that reads files of ``fmt`` (a :class:`Format` or a registered name), imported now."""
+    if isinstance(fmt, str):
+        fmt = _REGISTRY[fmt]
+    return _function(fmt.reader)
+
+
+def _function(spec: str) -> Callable:
+    module, _, name = spec.partition(":")
+    return getattr(importlib.import_module(module), name)
+
+
+def _head(path: Path) -> bytes:
+    try:
+        with path.open("rb") as handle:
+            return handle.read(HEAD_BYTES)
+    except FileNotFoundError:
+        raise FileFormatError(path, None, "no such file") from None
+    except OSError as error:
+        raise FileFormatError(path, None, f"cannot read: {error.strerror}") from None
+
+
+register(Format("wamit", "rao", "WAMIT .4 motion RAOs (numeric output)", (".4",),
+                "marinesim.vessel.wamit:read_wamit", "marinesim.vessel.wamit:sniff", options=("ulen",)))
+register(Format("veres", "rao", "VERES/ShipX .re1 motion transfer functions", (".re1",),
+                "marinesim.vessel.veres:read_veres", "marinesim.vessel.veres:sniff"))
+register(Format("capytaine", "rao", "Capytaine NetCDF dataset (.nc) with hydrodynamic coefficients", (".nc",),
+                "marinesim.vessel.capytaine:read_capytaine", "marinesim.vessel.capytaine:sniff",
+                options=("roll_damping",)))
+register(Format("native", "rao", "marinesim table (.csv, .txt, .rao; see marinesim/vessel/native.py)",
+                (".csv", ".txt", ".rao"), "marinesim.vessel.native:read_native", "marinesim.vessel.native:sniff"))
+register(Format("gdf", "mesh", "WAMIT low-order panels, .gdf", (".gdf",), "marinesim.hull.gdf:read_gdf_mesh"))
+register(Format("stl", "mesh", "STL, .stl", (".stl",), "marinesim.hull.mesh:read_mesh"))
+register(Format("obj", "mesh", "Wavefront OBJ, .obj", (".obj",), "marinesim.hull.mesh:read_mesh"))
+register(Format("ply", "mesh", "Stanford PLY, .ply", (".ply",), "marinesim.hull.mesh:read_mesh"))
+register(Format("gltf", "mesh", "glTF 2.0, .glb or .gltf", (".glb", ".gltf"), "marinesim.hull.mesh:read_mesh"))
+register(Format("off", "mesh", "Object File Format, .off", (".off",), "marinesim.hull.mesh:read_mesh"))

@@ -1,0 +1,182 @@
+"""The file-format registry: every registered format reads a real file, detection, refusals.
+
+Each registered format must have an entry in ``SAMPLES``: a function giving a real file of that
+format (shipped in rao/ or hulls/, or written here by a real program: marinesim's own writer,
+Capytaine, trimesh's exporters) and the check that reading it gave the right numbers.
+"""
+
+import math
+import os
+import shutil
+import subprocess
+import sys
+from collections.abc import Callable
+from pathlib import Path
+
+import numpy as np
+import pytest
+import trimesh
+
+from marinesim import formats
+from marinesim.errors import FileFormatError, ParameterError
+from marinesim.hull import hydrostatics, load_hull, load_visual_mesh, wigley_hull
+from marinesim.vessel import read_rao
+from marinesim.vessel.native import write_native
+from marinesim.vessel.read import OPTION_LIMITS
+
+ROOT = Path(__file__).resolve().parents[1]
+TANKER_RAO = ROOT / "rao" / "tanker" / "tanker.4"
+S175 = ROOT / "rao" / "s175" / "input.re1"
+WIGLEY = ROOT / "hulls" / "wigley.stl"
+
+
+def capytaine_dataset(folder: Path) -> Path:
+    """A 40 x 10 m barge at 3 m draft, solved by Capytaine at three frequencies, as Capytaine writes it."""
+    capytaine = pytest.importorskip("capytaine")
+    xarray = pytest.importorskip("xarray")
+    mesh = capytaine.mesh_parallelepiped(size=(40.0, 10.0, 4.0), resolution=(6, 2, 2), center=(0.0, 0.0, -1.0))
+    body = capytaine.FloatingBody(mesh=mesh, dofs=capytaine.rigid_body_dofs(rotation_center=(0, 0, 0)),
+                                  center_of_mass=(0.0, 0.0, -0.5)).immersed_part()
+    body.inertia_matrix = body.compute_rigid_body_inertia(rho=1025.0)
+    body.hydrostatic_stiffness = body.compute_hydrostatic_stiffness(rho=1025.0)
+    problems = xarray.Dataset(coords={"omega": [0.1, 0.5, 1.0], "wave_direction": [0.0, math.pi / 2, math.pi],
+                                      "radiating_dof": list(body.dofs), "water_depth": [np.inf], "rho": [1025.0]})
+    path = folder / "barge.nc"
+    capytaine.export_dataset(path, capytaine.BEMSolver().fill_dataset(problems, body))
+    return path
+
+
+def native_table(folder: Path) -> Path:
+    """The S175 table written by marinesim's own writer."""
+    path = folder / "s175.csv"
+    write_native(read_rao(S175), path)
+    return path
+
+
+def exported_wigley(suffix: str) -> Callable[[Path], Path]:
+    """The shipped Wigley hull re-exported by trimesh in another format."""
+    def write(folder: Path) -> Path:
+        mesh = trimesh.load(WIGLEY, force="mesh")
+        path = folder / f"wigley{suffix}"
+        mesh.export(path)
+        return path
+    return write
+
+
+def check_rao(path: Path, name: str) -> None:
+    """Read as ``name``, and heave tends to 1 at the table's longest wave in head seas."""
+    table = read_rao(path)
+    assert table.source_format == name
+    heave = table(table.omega[:1], np.array([math.pi]), table.speed[0])[0, 2]
+    assert abs(heave) == pytest.approx(1.0, abs=0.05), f"{name}: long-wave heave {abs(heave):.3f}, not 1"
+
+
+def check_wigley(path: Path, name: str) -> None:
+    """The Wigley hull's hydrostatics, as made by its generator."""
+    made = hydrostatics(wigley_hull(100.0, 10.0, 6.25, nx=80, nz=16))
+    read = hydrostatics(load_hull(path))
+    assert read.volume_m3 == pytest.approx(made.volume_m3, rel=1e-6), name
+    assert read.wetted_area_m2 == pytest.approx(made.wetted_area_m2, rel=1e-6), name
+
+
+def check_tanker_gdf(path: Path, name: str) -> None:
+    """The tanker's waterplane area equals WAMIT's own C33 for these panels (ISY mirror applied)."""
+    hst = {(int(i), int(j)): v for i, j, v in np.loadtxt(ROOT / "rao" / "tanker" / "tanker.hst")}
+    assert hydrostatics(load_hull(path)).waterplane_area_m2 == pytest.approx(hst[3, 3], rel=1e-5)
+
+
+def check_barge_visual(path: Path, name: str) -> None:
+    """The barge's visual mesh (cm, y up): 100 m long, 25 m mast on top, with its vertex colours."""
+    mesh = load_visual_mesh(path, units="cm", axes="x,-z,y", offset=(-50.0, 0.0, -5.0))
+    assert np.ptp(mesh.vertices[:, 0]) == pytest.approx(100.0) and mesh.vertices[:, 2].max() == pytest.approx(25.0)
+    assert mesh.colours is not None
+
+
+SAMPLES: dict[str, tuple[Callable[[Path], Path], Callable[[Path, str], None]]] = {
+    "wamit": (lambda folder: TANKER_RAO, check_rao),
+    "veres": (lambda folder: S175, check_rao),
+    "capytaine": (capytaine_dataset, check_rao),
+    "native": (native_table, check_rao),
+    "gdf": (lambda folder: ROOT / "hulls" / "tanker.gdf", check_tanker_gdf),
+    "stl": (lambda folder: WIGLEY, check_wigley),
+    "obj": (exported_wigley(".obj"), check_wigley),
+    "ply": (exported_wigley(".ply"), check_wigley),
+    "gltf": (lambda folder: ROOT / "hulls" / "barge_visual.glb", check_barge_visual),
+    "off": (exported_wigley(".off"), check_wigley),
+}
+
+
+def test_every_registered_format_has_a_real_file_check():
+    """A format registered without a sample here (or a sample left for a removed format) would go
+    untested: adding a format must add a real file of it and a check of what it reads."""
+    assert sorted(f.name for f in formats.formats()) == sorted(SAMPLES)
+
+
+@pytest.mark.parametrize("name", sorted(SAMPLES))
+def test_each_format_reads_a_real_file(name, tmp_path):
+    """The file is detected as its format and read to the right numbers: a failure means the
+    registry routes the extension to another reader, or that reader misreads the file."""
+    make, check = SAMPLES[name]
+    path = make(tmp_path)
+    fmt = next(f for f in formats.formats() if f.name == name)
+    assert formats.detect(path, fmt.kind) == fmt
+    check(path, name)
+
+
+@pytest.mark.parametrize("name", [f.name for f in formats.formats("rao") if f.sniffer])
+def test_content_decides_for_an_unknown_extension(name, tmp_path):
+    """A sample copied to an extension no format claims is still recognised by its first bytes:
+    a failure means that format's sniffer misses its own files or another sniffer claims them."""
+    path = tmp_path / "motions.dat"
+    shutil.copyfile(SAMPLES[name][0](tmp_path), path)
+    assert formats.detect(path, "rao").name == name
+
+
+def test_unknown_formats_are_refused_listing_the_registered_ones(tmp_path):
+    """What no format claims is refused with every registered format of its kind named (else the user
+    cannot tell what would be read), and a format name of the other kind is not accepted."""
+    notes = tmp_path / "notes.dat"
+    notes.write_text("hello world\n")
+    with pytest.raises(FileFormatError, match="unknown RAO format; supported: ") as error:
+        read_rao(notes)
+    assert all(f"{f.name} ({f.description})" in str(error.value) for f in formats.formats("rao"))
+    model = tmp_path / "model.fbx"
+    model.write_text("not a mesh")
+    with pytest.raises(FileFormatError, match="unknown hull format '.fbx'; supported: ") as error:
+        load_hull(model)
+    assert all(f.name in str(error.value) for f in formats.formats("mesh"))
+    with pytest.raises(ParameterError, match="unknown RAO format 'gdf'; supported: wamit, veres, capytaine, native"):
+        read_rao(TANKER_RAO, file_format="gdf")
+
+
+def test_options_are_refused_by_formats_that_do_not_declare_them():
+    """ULEN is WAMIT's and roll damping Capytaine's: another format given one must refuse it rather
+    than ignore it; and read_rao must know the message of every option a format declares."""
+    assert {option for f in formats.formats("rao") for option in f.options} == set(OPTION_LIMITS)
+    assert read_rao(TANKER_RAO, ulen=2.0).source_format == "wamit"
+    with pytest.raises(ParameterError, match="ULEN applies to WAMIT files only, not veres"):
+        read_rao(S175, ulen=2.0)
+    with pytest.raises(ParameterError, match="extra roll damping applies to Capytaine datasets only .*, not wamit"):
+        read_rao(TANKER_RAO, roll_damping=0.05)
+
+
+def test_registering_a_clash_is_refused():
+    """Two formats claiming one name or one extension would make detection depend on order; a refused
+    registration must leave the registry as it was."""
+    before = formats.formats()
+    with pytest.raises(ValueError, match="already registered"):
+        formats.register(formats.Format("wamit", "rao", "again", (".w",), "marinesim.vessel.wamit:read_wamit"))
+    with pytest.raises(ValueError, match=r"\.4 already read as 'wamit'"):
+        formats.register(formats.Format("other", "rao", "other", (".4",), "marinesim.vessel.wamit:read_wamit"))
+    assert formats.formats() == before
+
+
+def test_listing_formats_imports_no_reader():
+    """Listing the formats (``marinesim --help`` does) must not import numpy, trimesh or any reader:
+    a failure means the registry pulls in the readers' dependencies at import."""
+    code = ("import sys; from marinesim import formats; formats.formats(); formats.extensions('mesh'); "
+            "print(sorted(m for m in sys.modules if m.split('.')[0] in ('numpy', 'trimesh', 'scipy', 'xarray') "
+            "or m.startswith(('marinesim.vessel', 'marinesim.hull'))))")
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True,
+                            env=os.environ | {"PYTHONPATH": str(ROOT)})
+    assert result.stdout.strip() == "[]"
