@@ -1,11 +1,31 @@
-"""Shared sea states for the tests (real spectra, real FFTs; nothing mocked)."""
+"""What the tests share: the checkout's root, one OpenGL context fixture, sea states (real spectra,
+real FFTs, a real EGL context; nothing mocked) and a wake cache of their own."""
 
 import math
+from pathlib import Path
 
 import pytest
 
 from marinesim.angles import wave_beta_from_compass
 from marinesim.sea import Cos2s, Jonswap, SeaState, WaveSystem
+
+ROOT = Path(__file__).resolve().parents[1]
+"""The checkout: its rao/, hulls/, configs/ and shaders/ are the files the tests read."""
+DEFAULT = ROOT / "configs" / "default.toml"
+
+
+@pytest.fixture(scope="module")
+def gl_context():
+    """A headless OpenGL 4.3 context (EGL: Mesa's llvmpipe without a GPU) for one test module, released
+    after it; the module's tests are skipped where no such context can be made."""
+    from marinesim.gl import GraphicsError, standalone_context
+
+    try:
+        context = standalone_context()
+    except GraphicsError as error:
+        pytest.skip(str(error))
+    yield context
+    context.release()
 
 
 @pytest.fixture(scope="session")
@@ -24,7 +44,7 @@ def close_angle_deg(a: float, b: float) -> float:
     return abs((a - b + 180.0) % 360.0 - 180.0)
 
 
-__all__ = ["close_angle_deg", "math"]
+__all__ = ["DEFAULT", "ROOT", "close_angle_deg", "math"]
 
 
 @pytest.fixture(scope="session", autouse=True)

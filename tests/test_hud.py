@@ -11,15 +11,9 @@ from marinesim.render.hud import AXIS_FLOOR, MARGIN, PAD, TRACE_COLOR, Hud, Stri
 
 
 @pytest.fixture(scope="module")
-def ctx():
-    from marinesim.gl import GraphicsError, standalone_context
-    try:
-        context = standalone_context()
-    except GraphicsError as error:
-        pytest.skip(str(error))
-    yield context
-    _targets.clear()
-    context.release()
+def ctx(gl_context):
+    yield gl_context
+    _targets.clear()  # the framebuffers go before their context
 
 
 @pytest.fixture(scope="module")

@@ -24,9 +24,8 @@ from marinesim.wake.measure import KELVIN_HALF_ANGLE_DEG, kelvin_half_angle_deg
 
 
 @pytest.fixture(scope="module")
-def ctx():
-    from marinesim.gl import standalone_context
-    return standalone_context()
+def ctx(gl_context):
+    return gl_context
 
 
 def plane_packet(size: int, cell: float, mode: tuple[int, int], across: float = math.inf) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

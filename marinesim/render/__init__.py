@@ -1,1 +1,4 @@
 """The viewer: rendering the sea, the vessel and its wake (moderngl), cameras, HUD, video."""
+
+CAMERAS = ("orbit", "bridge", "free")
+"""The cameras a view can look through: orbiting the vessel, on its bridge, flying free."""

@@ -15,13 +15,13 @@ import numpy as np
 
 from marinesim.errors import ParameterError
 from marinesim.gl import is_software
+from marinesim.render import CAMERAS
 from marinesim.render.camera import BridgeCamera, FreeCamera, OrbitCamera
 from marinesim.render.hud import Hud, StripHistory
 from marinesim.render.renderer import Renderer, RenderOptions
 from marinesim.scenario import Scenario
 from marinesim.session.timeline import Simulation
 
-CAMERAS = ("orbit", "bridge", "free")
 CHARTED = (("heave", "heave_m", "m"), ("roll", "roll_deg", "deg"), ("pitch", "pitch_deg", "deg"))
 """Strip charts: title, motion column, unit."""
 HISTORY_STEP_S = 0.2

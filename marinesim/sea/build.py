@@ -11,12 +11,10 @@ import math
 from marinesim.angles import wave_beta_from_compass
 from marinesim.constants import G
 from marinesim.errors import ParameterError, require_finite, require_positive
+from marinesim.sea.kinds import SPECTRUM_TYPES, SPREADING_TYPES
 from marinesim.sea.seastate import RegularWave, WaveSystem
 from marinesim.sea.spectra import Jonswap, JonswapFetch, PiersonMoskowitz, Tma
 from marinesim.sea.spreading import Cos2s, HalfPlaneCos2n, LongCrested, Mitsuyasu, Spreading
-
-SPECTRUM_TYPES = ("jonswap", "pm", "tma", "regular")
-SPREADING_TYPES = ("cos2s", "mitsuyasu", "cos2n-halfplane", "long-crested")
 
 
 def wave_system(

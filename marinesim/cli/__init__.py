@@ -1,0 +1,49 @@
+"""The ``marinesim`` command: one module per command, each with ``add`` (its options) and ``handle``
+(the work, importing what it needs only then, so that ``marinesim --version`` and ``--help`` answer
+at once). User mistakes print one line and exit with status 2.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from marinesim import __version__
+from marinesim.cli import export, hull, rao, render, run, sea, wake
+from marinesim.errors import MarinesimError
+
+COMMANDS = (run, render, export, rao, hull, wake, sea)
+"""The command modules, in the order ``--help`` lists them."""
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run the command line ``argv`` (default: the process's); the exit status."""
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    if args.command is None:
+        parser.print_help()
+        return 0
+    try:
+        return args.handler(args)
+    except MarinesimError as error:
+        print(f"marinesim {args.command}: error: {error}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print(f"marinesim {args.command}: interrupted (files being written were discarded)", file=sys.stderr)
+        return 130
+    except OSError as error:
+        print(f"marinesim {args.command}: error: {error.strerror or error}: {error.filename}", file=sys.stderr)
+        return 2
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The whole command line: every command's options."""
+    parser = argparse.ArgumentParser(
+        prog="marinesim",
+        description="Ship motion and wake simulator: waves on FFT cascades, RAO response, Kelvin wake.",
+    )
+    parser.add_argument("--version", action="version", version=f"marinesim {__version__}")
+    commands = parser.add_subparsers(dest="command", metavar="COMMAND")
+    for command in COMMANDS:
+        command.add(commands)
+    return parser

@@ -1,0 +1,63 @@
+"""What several commands share: progress bars, number lists, hull placement and view options."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from marinesim.errors import ParameterError, require_finite
+from marinesim.progress import Bar, Reporter
+from marinesim.render import CAMERAS
+
+
+def bars(quiet: bool) -> Reporter | None:
+    """A progress reporter drawing tqdm bars on stderr (None when ``quiet``)."""
+    if quiet:
+        return None
+    from tqdm import tqdm
+
+    def bar(name: str, total: int, unit: str) -> Bar:
+        return tqdm(total=total, desc=name, unit=unit, file=sys.stderr, mininterval=0.5)
+    return bar
+
+
+def number_list(option: str, text: str, unit: str) -> list[float]:
+    """Comma-separated finite numbers, or a ParameterError naming the option."""
+    try:
+        return [require_finite(option, float(v)) for v in text.split(",")]
+    except ValueError:
+        raise ParameterError(f"{option} must be comma-separated {unit}, got {text!r}") from None
+
+
+def add_hull_options(p: argparse.ArgumentParser) -> None:
+    g = p.add_argument_group("hull placement (meshes carry no units and often other axes)")
+    g.add_argument("--units", default="m", help="mesh length units: m, cm, mm, ft, in (default m)")
+    g.add_argument("--scale", type=float, default=1.0, help="geometric scale of a model mesh, e.g. 50 for 1:50")
+    g.add_argument("--axes", default="x,y,z", help="mesh axes that become body x (forward), y (port), z (up), "
+                                                   "e.g. 'x,-z,y' for a y-up mesh (default x,y,z)")
+    g.add_argument("--draft", type=float, help="draft, m: the lowest point goes to z = -draft (default: the "
+                                               "mesh's z = 0 is the waterline)")
+    g.add_argument("--trim-deg", type=float, default=0.0, help="trim, deg, bow down positive (default 0)")
+
+
+def hull_from_args(args: argparse.Namespace):
+    """The hull the ``hull`` argument and the placement options describe."""
+    from marinesim.hull import load_hull
+
+    return load_hull(args.hull, units=args.units, scale=args.scale, axes=args.axes, draft=args.draft,
+                     trim_deg=args.trim_deg)
+
+
+def add_view_options(p: argparse.ArgumentParser) -> None:
+    g = p.add_argument_group("view")
+    g.add_argument("--camera", choices=CAMERAS, default="orbit", help="orbit (default), bridge or free")
+    g.add_argument("--solver", choices=("auto", "on", "off"), default="auto",
+                   help="the local wave solver around the hull: auto = on with a GPU, off on a software renderer")
+    g.add_argument("--no-wake", action="store_true", help="do not draw the Kelvin wake")
+
+
+def render_options(args: argparse.Namespace):
+    """The renderer's options from the view options."""
+    from marinesim.render.renderer import RenderOptions
+
+    return RenderOptions(wake=not args.no_wake)

@@ -1,0 +1,48 @@
+"""``marinesim rao``: read an RAO file in any registered format and summarise it."""
+
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+
+from marinesim.cli.common import number_list
+from marinesim.errors import require_finite
+from marinesim.formats import formats
+
+
+def add(commands: argparse._SubParsersAction) -> None:
+    p = commands.add_parser(
+        "rao", help="summarise an RAO file (ranges, long-wave limits, resonances)",
+        description="Read an RAO file (" + "; ".join(f.description for f in formats("rao"))
+                    + ") and summarise it: DOFs, "
+                    "frequency/heading/speed ranges, the long-wave-limit check per DOF, resonance periods.")
+    p.add_argument("file", type=Path, help="RAO file")
+    p.add_argument("--json", action="store_true", help="print the summary as one JSON object")
+    p.add_argument("--plot", type=Path, metavar="PATH", help="draw amplitude and phase against period (PNG)")
+    p.add_argument("--headings", default="180,135,90,45,0",
+                   help="relative headings to plot, deg, waves towards (180 = head seas; default 180,135,90,45,0)")
+    p.add_argument("--speed-kn", type=float, default=0.0, help="speed for the plot, kn (default 0)")
+    p.add_argument("--ulen", type=float, help="WAMIT length scale ULEN, m (default: from the .gdf beside)")
+    p.add_argument("--roll-damping-pct", type=float, default=0.0,
+                   help="Capytaine: extra linear roll damping, %% of critical (default 0)")
+    p.set_defaults(handler=handle)
+
+
+def handle(args: argparse.Namespace) -> int:
+    from marinesim.atomic import atomic_path
+    from marinesim.constants import KNOT
+    from marinesim.vessel import read_rao
+    from marinesim.vessel.plot import plot_rao
+    from marinesim.vessel.summary import format_rao_summary, rao_summary
+
+    headings = number_list("--headings", args.headings, "degrees")
+    table = read_rao(args.file, ulen=args.ulen, roll_damping=require_finite("roll damping", args.roll_damping_pct) / 100)
+    report = rao_summary(table)
+    print(json.dumps(report) if args.json else format_rao_summary(report))
+    if args.plot:
+        with atomic_path(args.plot) as temp:
+            plot_rao(table, temp, headings, require_finite("speed", args.speed_kn) * KNOT)
+        if not args.json:
+            print(f"wrote {args.plot}")
+    return 0

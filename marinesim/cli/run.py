@@ -1,0 +1,89 @@
+"""``marinesim run``: the viewer on a scenario, or, without a display, the headless run and a short video."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from marinesim.cli.common import add_view_options, bars, render_options
+
+HEADLESS_VIDEO = {"seconds": 10.0, "size": (640, 360), "fps": 25.0}
+"""The video a headless ``run`` renders: short and small, so that a software renderer makes it in a minute."""
+DESCRIBED = {"sea_plot": "the sea state picture", "motions": "the vessel's 6-DOF motions",
+             "sidecar": "their metadata", "motions_plot": "a plot of the motions", "rao_plot": "the RAOs",
+             "elevation": "the wave elevation at (0, 0)", "elevation_plot": "a plot of it",
+             "wake_plot": "the Kelvin wake", "video": "a video of the first seconds"}
+"""What each file of a headless run is, as the closing lines say."""
+
+
+def add(commands: argparse._SubParsersAction) -> None:
+    p = commands.add_parser(
+        "run", help="open the viewer on a scenario (default: the shipped configs/default.toml)",
+        description="Open the viewer on a scenario: the vessel moving in the rendered sea with its wake "
+        "(H in the window lists the keys). Without a display it runs headless instead: plots of the sea, "
+        "the motions and the RAOs, the motion CSV over the scenario's run, and a 10 s video, and says where "
+        "they are.",
+    )
+    p.add_argument("scenario", nargs="?", type=Path, help="scenario TOML file (default: the shipped default.toml)")
+    p.add_argument("--out", type=Path, help="output folder of a headless run (default out/<scenario name>)")
+    p.add_argument("--duration", type=float, help="run length, s (default: the scenario's); the video is the "
+                                                  "first 10 s of it at most")
+    p.add_argument("--headless", action="store_true", help="do not open a window even if there is a display")
+    p.add_argument("--quiet", action="store_true", help="no progress bar")
+    add_view_options(p)
+    p.set_defaults(handler=handle)
+
+
+def handle(args: argparse.Namespace) -> int:
+    from marinesim.progress import reporting
+    from marinesim.resources import default_scenario
+    from marinesim.scenario import load_scenario
+    from marinesim.session.assembly import Assembly
+    from marinesim.session.export import with_run
+    from marinesim.session.headless import run_headless
+
+    scenario = with_run(load_scenario(args.scenario or default_scenario()), duration=args.duration)
+    print(f"scenario {scenario.path}: {len(scenario.sea.systems)} wave system(s), Hs {scenario.sea.hs:.2f} m, "
+          f"Tp {scenario.sea.tp:.2f} s, {scenario.run.duration_s:g} s at dt {scenario.run.dt_s:g} s, "
+          f"seed {scenario.run.seed}")
+    vessel = scenario.vessel
+    if vessel is not None:
+        print(f"vessel: {vessel.rao_path.name} ({vessel.rao.source_format}), {vessel.speed_kn:.3g} kn, "
+              f"heading {vessel.heading_deg:g} deg, points: {', '.join(vessel.points) or 'none'}")
+    if not args.headless:
+        from marinesim.render.viewer import NoDisplay, Viewer
+
+        try:
+            with reporting(bars(args.quiet)):
+                viewer = Viewer(scenario, args.camera, args.solver, options=render_options(args))
+        except NoDisplay as reason:
+            print(f"{reason}: running headless instead")
+        else:
+            print("viewer open: H lists the keys, ESC quits")
+            viewer.run()
+            return 0
+    out_dir = args.out or Path("out") / scenario.name
+    with reporting(bars(args.quiet)):
+        headless = run_headless(Assembly(scenario), out_dir)
+        for note in headless.notes:
+            print(note)
+        files = headless.files | _video(scenario, out_dir, args)
+    width = max(len(DESCRIBED[key]) for key in files)
+    for key, path in files.items():
+        print(f"wrote {DESCRIBED[key] + ':':{width + 1}s} {path}")
+    return 0
+
+
+def _video(scenario, out_dir: Path, args: argparse.Namespace) -> dict[str, Path]:
+    """The first seconds of ``scenario`` as a small video, drawn through EGL."""
+    from marinesim.render.offscreen import render_video
+
+    video = HEADLESS_VIDEO
+    seconds = min(video["seconds"], scenario.run.duration_s)
+    size = video["size"]
+    print(f"rendering {seconds:g} s of video at {size[0]}x{size[1]}, {video['fps']:g} frames/s through EGL "
+          f"(camera {args.camera})")
+    result = render_video(scenario, out_dir / "video.mp4", seconds, size, video["fps"], args.camera, args.solver,
+                          render_options(args), motions=False)
+    print(f"the local wave solver was {'on' if result.solver else 'off (software renderer; --solver on forces it)'}")
+    return {"video": result.video}
