@@ -26,7 +26,8 @@ from marinesim.errors import ParameterError, require_at_least, require_positive
 from marinesim.hull import hydrostatics
 from marinesim.recent import Recent
 from marinesim.scenario.export import VARIANCE_FRACTION, build_ocean
-from marinesim.scenario.schema import MAX_SPEED_KN, Scenario
+from marinesim.scenario.model import MAX_SPEED_KN
+from marinesim.scenario.schema import Scenario
 from marinesim.sea.ocean import smoothstep
 from marinesim.sea.seastate import RegularWave, SeaState, WaveSystem
 from marinesim.sea.spectra import Jonswap, JonswapFetch

@@ -22,7 +22,7 @@ from marinesim import __version__
 from marinesim.angles import compass_to_math
 from marinesim.atomic import atomic_path
 from marinesim.errors import MarinesimError, ParameterError, ScenarioError
-from marinesim.scenario.schema import Scenario, check_run
+from marinesim.scenario.schema import Scenario, with_run_options
 from marinesim.sea.ocean import Ocean
 from marinesim.sea.summary import summary
 from marinesim.vessel.response import Response, Track
@@ -51,12 +51,9 @@ def build_response(scenario: Scenario, ocean: Ocean | None = None) -> Response:
 
 def with_run(scenario: Scenario, duration: float | None = None, dt: float | None = None,
              seed: int | None = None) -> Scenario:
-    """``scenario`` with its run options overridden (checked as in the scenario file)."""
-    run = scenario.run
-    run = dataclasses.replace(run, duration_s=run.duration_s if duration is None else float(duration),
-                              dt_s=run.dt_s if dt is None else float(dt),
-                              seed=run.seed if seed is None else int(seed))
-    check_run(run)
+    """``scenario`` with its run options (s, s, -) overridden, validated as in the scenario file."""
+    given = {"duration_s": duration, "dt_s": dt, "seed": seed}
+    run = with_run_options(scenario.run, **{key: value for key, value in given.items() if value is not None})
     return dataclasses.replace(scenario, run=run)
 
 
