@@ -18,14 +18,15 @@ import numpy as np
 from marinesim.constants import KNOT
 from marinesim.errors import MarinesimError
 from marinesim.render.session import Session
+from marinesim.render.simulation import CHANGE_RAMP_S
 from marinesim.scenario.export import write_csv_block
+from marinesim.scenario.model import MAX_SPEED_KN
 
 HS_STEP = 1.1       # each press: heights x 1.1 (or / 1.1)
 TP_STEP = 1.05      # periods x 1.05
 TURN_STEP_DEG = 15.0
 SPEED_STEP_KN = 1.0
 HEADING_STEP_DEG = 5.0
-CHANGE_RAMP_S = 10.0
 TIME_SCALES = (0.125, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0)
 FREE_SPEED_M_S = 40.0
 MAX_FRAME_S = 0.1
@@ -129,7 +130,7 @@ class Controls:
         }
         if sim.vessel is not None:
             actions |= {
-                "UP": lambda: sim.change(speed_kn=min(sim.speed_m_s / KNOT + SPEED_STEP_KN, 40.0),
+                "UP": lambda: sim.change(speed_kn=min(sim.speed_m_s / KNOT + SPEED_STEP_KN, MAX_SPEED_KN),
                                          ramp_s=CHANGE_RAMP_S),
                 "DOWN": lambda: sim.change(speed_kn=max(sim.speed_m_s / KNOT - SPEED_STEP_KN, 0.0),
                                            ramp_s=CHANGE_RAMP_S),
