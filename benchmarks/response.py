@@ -32,9 +32,9 @@ from marinesim.session.assembly import Assembly  # noqa: E402
 
 EXPORT = """
 import resource, sys, time
-from marinesim.scenario import load_scenario
+from marinesim.scenario import load_scenario, with_run
 from marinesim.session.assembly import Assembly
-from marinesim.session.export import export_motions, with_run
+from marinesim.session.export import export_motions
 scenario = with_run(load_scenario(sys.argv[1]), duration=float(sys.argv[2]), dt=0.1)
 start = time.perf_counter()
 export_motions(Assembly(scenario), sys.argv[3])

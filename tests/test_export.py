@@ -13,9 +13,9 @@ import pandas as pd
 import pytest
 
 from marinesim.errors import ScenarioError
-from marinesim.scenario import load_scenario
+from marinesim.scenario import load_scenario, with_run
 from marinesim.session.assembly import Assembly
-from marinesim.session.export import export_motions, with_run
+from marinesim.session.export import export_motions
 from marinesim.vessel import motion_columns
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -153,7 +153,7 @@ def test_cli_export_and_rao(tmp_path):
      "vessel.points.bad name: a point name must be a plain identifier"),
     (("hull = ", "# hull = "), None),
     (("speed_kn = 6.0", "speed_kn = 6.0\nhull_units = \"mm\""), "vessel.hull: .*units='m' gives 256.9 m"),
-    (("speed_kn = 6.0", "speed_kn = 6.0\nhull_draft_m = -1.0"), "vessel.hull: draft must be > 0"),
+    (("speed_kn = 6.0", "speed_kn = 6.0\nhull_draft_m = -1.0"), "vessel.hull_draft_m: must be > 0 m"),
     (("speed_kn = 6.0", "speed_kn = 6.0\nwake_speeds_kn = [0.0]"), "vessel.wake_speeds_kn: expected speeds"),
     (("hull = ", "hull_trim_deg = 1.0\n# hull = "), "vessel.hull_trim_deg: given without vessel.hull"),
 ])

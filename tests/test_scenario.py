@@ -13,7 +13,8 @@ import pytest
 
 from marinesim.errors import MarinesimError, ScenarioError
 from marinesim.hull import load_hull
-from marinesim.scenario import load_scenario
+from marinesim.scenario import load_scenario, reference, with_run
+from marinesim.scenario.model import with_reference
 from marinesim.session.assembly import VARIANCE_FRACTION, Assembly
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -54,7 +55,7 @@ def test_good_scenario_converts_directions(tmp_path):
 
 
 @pytest.mark.parametrize("change, key", [
-    (("hs_m = 3.0", "hs_m = -3.0"), "sea[0]: hs"),
+    (("hs_m = 3.0", "hs_m = -3.0"), "sea[0].hs_m: must be > 0 m"),
     (("hs_m = 3.0", "hs = 3.0"), "sea[0].hs: unknown key"),
     (("tp_s = 9.0", 'tp_s = "nine"'), "sea[0].tp_s: expected float"),
     (("tp_s = 9.0", "tp_s = nan"), "sea[0].tp_s"),
@@ -192,7 +193,7 @@ def test_an_open_superstructure_alone_is_a_visual_mesh_without_a_hull(tmp_path):
     ('visual_mesh = "BARGE"\nvisual_mesh_units = "cm"\nvisual_mesh_offset_m = [1.0, 2.0]',
      r"vessel.visual_mesh: offset must be \[x, y, z\]"),
     ('visual_mesh = "BARGE"\nvisual_mesh_units = "cm"\nvisual_mesh_scale = 0.0',
-     r"vessel.visual_mesh: scale must be > 0"),
+     r"vessel.visual_mesh_scale: must be > 0"),
     ('visual_mesh_units = "cm"', r"vessel.visual_mesh_units: given without vessel.visual_mesh"),
     ('visual_mesh_offset_m = "up"', r"vessel.visual_mesh_offset_m: expected list"),
 ])
@@ -203,3 +204,69 @@ def test_bad_visual_meshes_are_refused_naming_the_key_and_file(tmp_path, lines, 
     path = with_visual(tmp_path, lines.replace("BARGE", relative(tmp_path, BARGE_VISUAL)))
     with pytest.raises(ScenarioError, match=message):
         load_scenario(path)
+
+
+TANKER = ROOT / "rao" / "tanker" / "tanker.4"
+
+
+@pytest.mark.parametrize("change, message", [
+    (("[run]", f'[vessel]\nrao = "{TANKER.as_posix()}"\nspeed_kn = 55\n[run]'),
+     "vessel.speed_kn: must be in 0..40 kn, got 55"),
+    (("[run]", f'[vessel]\nrao = "{TANKER.as_posix()}"\nroll_damping_pct = 100\n[run]'),
+     "vessel.roll_damping_pct: must be in 0..100 % of critical (100 excluded), got 100"),
+    (("[run]", f'[vessel]\nrao = "{TANKER.as_posix()}"\nwake_speeds_kn = [12.0]\n[run]'),
+     "vessel.wake_speeds_kn: given without vessel.hull"),
+    (("from_deg = 45.0", "from_deg = 400"), "sea[0].from_deg: must be a compass direction in 0..360 deg, got 400"),
+    (("spreading_s = 10.0", "gamma = 0.5"), "sea[0].gamma: must be in 1..20, got 0.5"),
+    (("[run]", "[ocean]\ntiles = 9\n[run]"), "ocean.tiles: must be in 1..8, got 9"),
+    (("[run]", "[ocean]\nresolution = 100\n[run]"), "ocean.resolution: must be a power of two >= 16, got 100"),
+    (("duration_s = 60.0", "duration_s = 0"), "run.duration_s: must be in 0..604800 s (0 excluded), got 0"),
+    (("dt_s = 0.5", "dt_s = 90.0"), "run.dt_s: must be <= duration_s (60 s), got 90.0"),
+    (("tp_s = 9.0", 'tp_s = "nine"'), "sea[0].tp_s: expected float, got 'nine'"),
+    (("tp_s = 9.0", "tp_s = true"), "sea[0].tp_s: expected float, got True"),
+    (("tp_s = 9.0", "tp_s = inf"), "sea[0].tp_s: expected a finite number, got inf"),
+    (("hs_m = 3.0", "hs = 3.0"), "sea[0].hs: unknown key (known: type, from_deg, hs_m, tp_s, gamma, u10_m_s, "
+                                 "fetch_km, spreading, spreading_s, height_m, period_s, phase_deg)"),
+])
+def test_the_model_refuses_each_value_with_key_range_and_unit(tmp_path, change, message):
+    """A value outside its key's range (or of the wrong type) is refused in one line naming the file, the
+    key's path, the range with its unit, and the value as written. If this fails, the model lost a range,
+    words it differently from the README's reference, or reports a key other than the one at fault."""
+    path = write(tmp_path, GOOD.replace(*change))
+    with pytest.raises(ScenarioError) as info:
+        load_scenario(path)
+    assert str(info.value) == f"{path}: {message}"
+
+
+def test_ints_are_accepted_where_numbers_are_expected(tmp_path):
+    """TOML writes 3 for 3.0: an int is a valid float key. If this fails, the model is stricter than
+    scenario files have always been read."""
+    text = GOOD.replace("hs_m = 3.0", "hs_m = 3").replace("duration_s = 60.0", "duration_s = 60")
+    scenario = load_scenario(write(tmp_path, text))
+    assert scenario.sea.systems[0].spectrum.hs == 3.0 and isinstance(scenario.run.duration_s, float)
+
+
+def test_readme_scenario_reference_is_the_models():
+    """README's scenario reference is the table generated from the model. If this fails, a key, range,
+    unit or default changed in marinesim/scenario/model.py and README.md was not regenerated
+    (python -m marinesim.scenario README.md)."""
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    assert readme == with_reference(readme)
+    assert "| `[vessel]` | `speed_kn` | float | kn | 0..40 | `0.0` |" in reference()
+
+
+@pytest.mark.parametrize("overrides, message", [
+    ({"dt": 100.0}, "run.dt_s: must be <= duration_s (60 s), got 100.0"),
+    ({"duration": 1e7}, "run.duration_s: must be in 0..604800 s (0 excluded), got 10000000.0"),
+    ({"seed": -1}, "run.seed: must be >= 0, got -1"),
+    ({"seed": 1.5}, "run.seed: expected int, got 1.5"),
+])
+def test_run_overrides_are_checked_by_the_model(tmp_path, overrides, message):
+    """`marinesim export --duration/--dt/--seed` go through the same [run] model as the file. If this
+    fails, an override can set a run the scenario file could not (or is refused in other words)."""
+    scenario = load_scenario(write(tmp_path, GOOD))
+    with pytest.raises(ScenarioError) as info:
+        with_run(scenario, **overrides)
+    assert str(info.value) == message
+    run = with_run(scenario, duration=30.0, seed=4).run
+    assert (run.duration_s, run.dt_s, run.seed) == (30.0, 0.5, 4)

@@ -25,9 +25,9 @@ def add(commands: argparse._SubParsersAction) -> None:
 
 def handle(args: argparse.Namespace) -> int:
     from marinesim.progress import reporting
-    from marinesim.scenario import load_scenario
+    from marinesim.scenario import load_scenario, with_run
     from marinesim.session.assembly import Assembly
-    from marinesim.session.export import export_motions, with_run
+    from marinesim.session.export import export_motions
 
     scenario = with_run(load_scenario(args.scenario), args.duration, args.dt, args.seed)
     with reporting(bars(args.quiet)):

@@ -37,9 +37,8 @@ def add(commands: argparse._SubParsersAction) -> None:
 def handle(args: argparse.Namespace) -> int:
     from marinesim.progress import reporting
     from marinesim.resources import default_scenario
-    from marinesim.scenario import load_scenario
+    from marinesim.scenario import load_scenario, with_run
     from marinesim.session.assembly import Assembly
-    from marinesim.session.export import with_run
     from marinesim.session.headless import run_headless
 
     scenario = with_run(load_scenario(args.scenario or default_scenario()), duration=args.duration)

@@ -13,18 +13,19 @@ from typing import Callable
 
 import numpy as np
 
+from marinesim.atomic import AtomicFile
 from marinesim.constants import KNOT
 from marinesim.errors import MarinesimError
-from marinesim.atomic import AtomicFile
 from marinesim.render.scene import Scene
+from marinesim.scenario.model import MAX_SPEED_KN
 from marinesim.session.export import write_csv_block
+from marinesim.session.timeline import CHANGE_RAMP_S
 
 HS_STEP = 1.1       # each press: heights x 1.1 (or / 1.1)
 TP_STEP = 1.05      # periods x 1.05
 TURN_STEP_DEG = 15.0
 SPEED_STEP_KN = 1.0
 HEADING_STEP_DEG = 5.0
-CHANGE_RAMP_S = 10.0
 TIME_SCALES = (0.125, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0)
 FREE_SPEED_M_S = 40.0
 MAX_FRAME_S = 0.1
@@ -126,7 +127,7 @@ class Controls:
         }
         if sim.vessel is not None:
             actions |= {
-                "UP": lambda: sim.change(speed_kn=min(sim.speed_m_s / KNOT + SPEED_STEP_KN, 40.0),
+                "UP": lambda: sim.change(speed_kn=min(sim.speed_m_s / KNOT + SPEED_STEP_KN, MAX_SPEED_KN),
                                          ramp_s=CHANGE_RAMP_S),
                 "DOWN": lambda: sim.change(speed_kn=max(sim.speed_m_s / KNOT - SPEED_STEP_KN, 0.0),
                                            ramp_s=CHANGE_RAMP_S),

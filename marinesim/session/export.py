@@ -8,7 +8,6 @@ byte-identical files (the sidecar holds no clock time).
 
 from __future__ import annotations
 
-import dataclasses
 from dataclasses import dataclass
 from pathlib import Path
 from typing import IO, Iterable
@@ -18,8 +17,6 @@ import numpy as np
 from marinesim.atomic import atomic_path, write_json
 from marinesim.errors import MarinesimError, ParameterError
 from marinesim.progress import Bar, task
-from marinesim.scenario import Scenario
-from marinesim.scenario.schema import check_run
 from marinesim.session.assembly import Assembly
 from marinesim.session.sidecar import run_sidecar, sha256
 
@@ -30,17 +27,6 @@ CONVENTIONS = ("body frame x forward, y port, z up, origin at the RAO reference 
                "<point>_relative_m = point's vertical motion minus the incident wave elevation there; "
                "wave_elevation_m: incident wave at the reference point (docs/CONVENTIONS.md)")
 """What the columns mean, as the sidecar states it."""
-
-
-def with_run(scenario: Scenario, duration: float | None = None, dt: float | None = None,
-             seed: int | None = None) -> Scenario:
-    """``scenario`` with its run options overridden (checked as in the scenario file)."""
-    run = scenario.run
-    run = dataclasses.replace(run, duration_s=run.duration_s if duration is None else float(duration),
-                              dt_s=run.dt_s if dt is None else float(dt),
-                              seed=run.seed if seed is None else int(seed))
-    check_run(run)
-    return dataclasses.replace(scenario, run=run)
 
 
 @dataclass(frozen=True)

@@ -29,7 +29,7 @@ from marinesim.errors import ParameterError, require_at_least, require_positive
 from marinesim.pose import Pose
 from marinesim.recent import Recent
 from marinesim.scenario import Scenario
-from marinesim.scenario.schema import MAX_SPEED_KN
+from marinesim.scenario.model import MAX_SPEED_KN
 from marinesim.sea.ocean import smoothstep
 from marinesim.sea.seastate import SeaState, scaled_sea
 from marinesim.session.assembly import Assembly
@@ -38,8 +38,8 @@ from marinesim.vessel.response import Response, Track
 from marinesim.wake.cache import cached_wake
 from marinesim.wake.compute import QUALITATIVE_BELOW_FROUDE, Wake, WakeGrid
 
-RAMP_S = 20.0
-"""Default time over which a live change blends in (s)."""
+CHANGE_RAMP_S = 10.0
+"""Time over which a live change blends in unless told otherwise (s): the viewer's keys use it."""
 PREPARE_S = 0.5
 """A sea change starts this long (s) after it is asked for, or when the blend before it ends if
 later: meanwhile a worker thread computes its amplitudes (:meth:`Ocean.prepare`, 0.1-0.2 s at
@@ -171,7 +171,8 @@ class Simulation:
         return math_to_compass(self.legs[-1].track.heading if requested is None else requested)
 
     def change(self, *, hs_factor: float = 1.0, tp_factor: float = 1.0, turn_waves_deg: float = 0.0,
-               speed_kn: float | None = None, heading_deg: float | None = None, ramp_s: float = RAMP_S) -> None:
+               speed_kn: float | None = None, heading_deg: float | None = None,
+               ramp_s: float = CHANGE_RAMP_S) -> None:
         """Ask for a change: all wave heights times ``hs_factor``, periods times ``tp_factor``,
         directions turned by ``turn_waves_deg`` (compass, clockwise), a new speed or compass heading."""
         if speed_kn is not None and not 0.0 <= speed_kn <= MAX_SPEED_KN:

@@ -1,0 +1,333 @@
+"""The scenario file's schema: one pydantic model that validates a TOML scenario, holds every key's
+type, unit, range and default, words the errors, and writes the README's scenario reference.
+
+Each numeric key carries one :class:`Quantity` (unit and range); the loader
+(:mod:`marinesim.scenario.schema`) builds the sea, the vessel and the run from the validated model.
+"""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Annotated, Any, Literal, TypeVar, get_args, get_origin
+
+from pydantic import AfterValidator, BaseModel, ConfigDict, Field, ValidationError, WrapValidator, model_validator
+from pydantic_core import PydanticCustomError, core_schema
+
+from marinesim.errors import ScenarioError
+from marinesim.hull.mesh import UNITS
+from marinesim.sea.build import SPECTRUM_TYPES, SPREADING_TYPES
+
+MAX_SPEED_KN = 40.0
+"""The fastest a vessel goes in a scenario or in the viewer (kn)."""
+MAX_DURATION_S = 7 * 24 * 3600.0
+"""The longest run (s): a week."""
+
+
+@dataclass(frozen=True)
+class Quantity:
+    """A numeric key's unit and range (bounds ``ge``/``gt``/``le``/``lt``, optional ``test`` named by
+    ``what``); as pydantic metadata it refuses values outside the range, for a list every item."""
+
+    unit: str = ""
+    ge: float | None = None
+    gt: float | None = None
+    le: float | None = None
+    lt: float | None = None
+    what: str = ""
+    test: Callable[[float], bool] | None = None
+
+    def __get_pydantic_core_schema__(self, source: Any, handler: Callable[[Any], Any]) -> Any:
+        return core_schema.no_info_wrap_validator_function(self._check, handler(source))
+
+    def contains(self, value: float) -> bool:
+        return ((self.ge is None or value >= self.ge) and (self.gt is None or value > self.gt)
+                and (self.le is None or value <= self.le) and (self.lt is None or value < self.lt)
+                and (self.test is None or self.test(value)))
+
+    def span(self, unit: bool = True) -> str:
+        """The range in words, e.g. ``in 0..40 kn``, ``> 0 m``, ``in 0..100 % (100 excluded)``."""
+        low, high = _first(self.ge, self.gt), _first(self.le, self.lt)
+        unit = f" {self.unit}" if unit and self.unit else ""
+        if low is not None and high is not None:
+            excluded = [f"{bound:g}" for bound in (self.gt, self.lt) if bound is not None]
+            text = f"in {low:g}..{high:g}{unit}" + (f" ({' and '.join(excluded)} excluded)" if excluded else "")
+        elif low is not None:
+            text = f"{'>=' if self.ge is not None else '>'} {low:g}{unit}"
+        elif high is not None:
+            text = f"{'<=' if self.le is not None else '<'} {high:g}{unit}"
+        else:
+            text = ""
+        return " ".join(part for part in (self.what, text) if part)
+
+    def _check(self, given: Any, handler: Callable[[Any], Any]) -> Any:
+        """The typed value, if within range; the message quotes the value as the file gives it."""
+        value = handler(given)
+        if isinstance(value, list):
+            if not all(self.contains(v) for v in value):
+                raise PydanticCustomError("range", f"expected {self.span()}, got {given!r}")
+        elif value is not None and not self.contains(value):
+            raise PydanticCustomError("range", f"must be {self.span()}, got {given!r}")
+        return value
+
+
+def _first(*values: float | None) -> float | None:
+    return next((v for v in values if v is not None), None)
+
+
+def _expecting(what: str) -> WrapValidator:
+    """Word any refusal of the value as ``expected <what>, got <value>``."""
+    def wrap(value: Any, handler: Callable[[Any], Any]) -> Any:
+        try:
+            return handler(value)
+        except ValidationError:
+            raise PydanticCustomError("expected", f"expected {what}, got {value!r}") from None
+    return WrapValidator(wrap)
+
+
+def _identifier(name: str) -> str:
+    if not name.isidentifier():
+        raise PydanticCustomError("name", "a point name must be a plain identifier (letters, digits, _)")
+    return name
+
+
+def _power_of_two(n: float) -> bool:
+    return int(n) & (int(n) - 1) == 0
+
+
+def _refuse(key: str, message: str) -> PydanticCustomError:
+    """An error of a cross-key rule, reported at ``key`` of the section that raises it."""
+    return PydanticCustomError("rule", message, {"key": key})
+
+
+Point = Annotated[list[float], Quantity("m"), Field(min_length=3, max_length=3),
+                  _expecting("[x, y, z] in metres (body frame)")]
+HULL_OPTIONS = {"hull_units": "units", "hull_scale": "scale", "hull_axes": "axes", "hull_draft_m": "draft",
+                "hull_trim_deg": "trim_deg"}
+"""Scenario key -> :func:`~marinesim.hull.load_hull` option."""
+VISUAL_MESH_OPTIONS = {"visual_mesh_units": "units", "visual_mesh_scale": "scale", "visual_mesh_axes": "axes",
+                       "visual_mesh_offset_m": "offset"}
+"""Scenario key -> :func:`~marinesim.hull.load_visual_mesh` option."""
+
+
+class Section(BaseModel):
+    """Strict TOML types (ints accepted for floats, no bools for numbers, no NaN or inf), no unknown keys."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", allow_inf_nan=False, frozen=True)
+
+
+class OceanOptions(Section):
+    """``[ocean]``: the FFT cascades that carry the sea."""
+
+    depth_m: Annotated[float | None, Quantity("m", gt=0.0)] = Field(None, description="water depth; absent: deep water")
+    tiles: Annotated[int, Quantity(ge=1, le=8)] = Field(4, description="FFT cascades (tiles)")
+    resolution: Annotated[int, Quantity(ge=16, what="a power of two", test=_power_of_two)] = Field(
+        256, description="samples per tile side")
+    choppiness: Annotated[float, Quantity()] = Field(1.0, description="horizontal displacement factor (0: none)")
+
+
+class SeaOptions(Section):
+    """``[[sea]]``: one wave system (a spectrum from a direction, or a regular wave)."""
+
+    type: Literal[SPECTRUM_TYPES] = Field(description="spectrum: jonswap, pm, tma, or a regular wave")
+    from_deg: Annotated[float, Quantity("deg", ge=0.0, le=360.0, what="a compass direction")] = Field(
+        description="compass direction the waves come from")
+    hs_m: Annotated[float | None, Quantity("m", gt=0.0)] = Field(
+        None, description="significant wave height (jonswap, pm, tma)")
+    tp_s: Annotated[float | None, Quantity("s", gt=0.0)] = Field(None, description="peak period (jonswap, pm, tma)")
+    gamma: Annotated[float | None, Quantity(ge=1.0, le=20.0)] = Field(
+        None, description="JONSWAP peak enhancement; absent: DNV's from hs_m, tp_s")
+    u10_m_s: Annotated[float | None, Quantity("m/s", gt=0.0)] = Field(
+        None, description="wind speed at 10 m: a JONSWAP from wind and fetch instead of hs_m, tp_s")
+    fetch_km: Annotated[float | None, Quantity("km", gt=0.0)] = Field(None, description="fetch, with u10_m_s")
+    spreading: Literal[SPREADING_TYPES] | None = Field(
+        None, description="directional spreading; absent: cos2s with spreading_s, else long-crested")
+    spreading_s: Annotated[float | None, Quantity(gt=0.0, le=1000.0)] = Field(
+        None, description="spreading exponent s (n for cos2n-halfplane)")
+    height_m: Annotated[float | None, Quantity("m", gt=0.0)] = Field(None, description="wave height (regular)")
+    period_s: Annotated[float | None, Quantity("s", gt=0.0)] = Field(None, description="wave period (regular)")
+    phase_deg: Annotated[float, Quantity("deg")] = Field(0.0, description="phase at the origin (regular)")
+
+
+class VesselOptions(Section):
+    """``[vessel]``: the RAO table, hull and visual mesh (paths relative to the scenario), course, points."""
+
+    rao: str = Field(description="RAO file (WAMIT .4, VERES .re1, Capytaine .nc, marinesim .csv)")
+    speed_kn: Annotated[float, Quantity("kn", ge=0.0, le=MAX_SPEED_KN)] = Field(
+        0.0, description="speed, within the RAO table's speeds if it has several")
+    heading_deg: Annotated[float, Quantity("deg", ge=0.0, le=360.0, what="a compass heading")] = Field(
+        0.0, description="compass heading the bow points to")
+    ulen_m: Annotated[float | None, Quantity("m", gt=0.0)] = Field(
+        None, description="WAMIT length scale ULEN; absent: from the .gdf beside the .4")
+    roll_damping_pct: Annotated[float, Quantity("% of critical", ge=0.0, lt=100.0)] = Field(
+        0.0, description="extra linear roll damping (Capytaine datasets)")
+    hull: str | None = Field(None, description="hull mesh (.gdf, .stl, .obj, .ply, .glb, .off): the wake")
+    hull_units: Literal[tuple(UNITS)] = Field("m", description="the hull mesh's length units")
+    hull_scale: Annotated[float, Quantity(gt=0.0)] = Field(1.0, description="geometric scale (50 for a 1:50 model)")
+    hull_axes: str = Field("x,y,z", description='mesh axes that become body x, y, z (e.g. "x,-z,y")')
+    hull_draft_m: Annotated[float | None, Quantity("m", gt=0.0)] = Field(
+        None, description="draft: keel at z = -draft; absent: the mesh's z = 0 is the waterline")
+    hull_trim_deg: Annotated[float, Quantity("deg", gt=-30.0, lt=30.0)] = Field(0.0, description="trim, bow down")
+    wake_speeds_kn: Annotated[list[float], Quantity("kn", gt=0.0, le=MAX_SPEED_KN, what="speeds")] = Field(
+        default_factory=list, description="more speeds to precompute the Kelvin wake for (needs hull)")
+    visual_mesh: str | None = Field(None, description="mesh drawn instead of the hull (may be open)")
+    visual_mesh_units: Literal[tuple(UNITS)] = Field("m", description="the visual mesh's length units")
+    visual_mesh_scale: Annotated[float, Quantity(gt=0.0)] = Field(1.0, description="its geometric scale")
+    visual_mesh_axes: str = Field("x,y,z", description="its axes that become body x, y, z")
+    visual_mesh_offset_m: Annotated[list[float], Quantity("m")] = Field(
+        default_factory=lambda: [0.0, 0.0, 0.0], description="its origin in the body frame, [x, y, z]")
+    points: dict[Annotated[str, AfterValidator(_identifier)], Point] = Field(
+        default_factory=dict, description="named points on board, [x, y, z] in the body frame "
+                                          "(x forward, y port, z up)")
+
+    @model_validator(mode="after")
+    def _options_need_their_mesh(self) -> VesselOptions:
+        for mesh, options in (("hull", ("wake_speeds_kn", *HULL_OPTIONS)), ("visual_mesh", VISUAL_MESH_OPTIONS)):
+            given = [key for key in options if key in self.model_fields_set]
+            if given and getattr(self, mesh) is None:
+                raise _refuse(given[0], f"given without vessel.{mesh}")
+        return self
+
+
+
+class RunOptions(Section):
+    """``[run]``: how long, how fine, which seed."""
+
+    duration_s: Annotated[float, Quantity("s", gt=0.0, le=MAX_DURATION_S)] = Field(600.0, description="run length")
+    dt_s: Annotated[float, Quantity("s", gt=0.0)] = Field(0.1, description="time step, at most duration_s")
+    seed: Annotated[int, Quantity(ge=0)] = Field(0, description="random seed of the wave amplitudes")
+
+    @model_validator(mode="after")
+    def _step_within_run(self) -> RunOptions:
+        if self.dt_s > self.duration_s:
+            raise _refuse("dt_s", f"must be <= duration_s ({self.duration_s:g} s), got {self.dt_s!r}")
+        return self
+
+
+def _at_least_one(systems: list[SeaOptions]) -> list[SeaOptions]:
+    if not systems:
+        raise PydanticCustomError("required", "at least one [[sea]] wave system is required")
+    return systems
+
+
+class ScenarioFile(Section):
+    """A whole scenario file."""
+
+    ocean: OceanOptions = Field(default_factory=OceanOptions, description="the FFT cascades")
+    sea: Annotated[list[SeaOptions], AfterValidator(_at_least_one)] = Field(
+        default_factory=list, validate_default=True, description="one or more wave systems")
+    vessel: VesselOptions | None = Field(None, description="the vessel; absent: a sea only")
+    run: RunOptions = Field(default_factory=RunOptions, description="the run")
+
+
+M = TypeVar("M", bound=BaseModel)
+
+
+def validate(model: type[M], data: Any, where: str = "") -> M:
+    """``data`` as ``model``, or :class:`ScenarioError` with the first error's key path (under ``where``)."""
+    try:
+        return model.model_validate(data)
+    except ValidationError as error:
+        raise ScenarioError(_message(model, error.errors()[0], where)) from None
+
+
+_TYPES = {"float_type": "float", "int_type": "int", "string_type": "str", "list_type": "list",
+          "dict_type": "a table", "model_type": "a table", "model_attributes_type": "a table",
+          "finite_number": "a finite number"}
+
+
+def _message(model: type[BaseModel], error: dict, where: str) -> str:
+    """One line: the key path, then what is wrong with the value there."""
+    loc = [part for part in error["loc"] if part != "[key]"]
+    kind, got = error["type"], error.get("input")
+    if kind == "rule":
+        loc.append(error["ctx"]["key"])
+    if kind == "missing":
+        text = "required"
+    elif kind == "extra_forbidden":
+        text = f"unknown key (known: {', '.join(_section(model, loc[:-1]).model_fields)})"
+    elif kind in _TYPES:
+        text = f"expected {_TYPES[kind]}, got {got!r}"
+    elif kind == "literal_error":
+        text = f"expected {error['ctx']['expected']}, got {got!r}"
+    else:
+        text = error["msg"]
+    return f"{_path([where, *loc] if where else loc)}: {text}"
+
+
+def _path(loc: list[str | int]) -> str:
+    text = ""
+    for part in loc:
+        text += f"[{part}]" if isinstance(part, int) else (f".{part}" if text else str(part))
+    return text
+
+
+def _section(model: type[BaseModel], loc: list[str | int]) -> type[BaseModel]:
+    """The model class at ``loc`` (keys and list indices) inside ``model``."""
+    for part in loc:
+        if isinstance(part, str):
+            model = _model_in(model.model_fields[part].annotation)
+    return model
+
+
+def _model_in(annotation: Any) -> Any:
+    """The model class an annotation holds (``M``, ``M | None``, ``list[M]``, ``Annotated[...]``)."""
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        return annotation
+    return next((m for m in map(_model_in, get_args(annotation)) if m is not None), None)
+
+
+def reference() -> str:
+    """The scenario keys as a markdown table, generated from the model (README's scenario reference)."""
+    rows = ["| section | key | type | unit | range | default | meaning |", "|---|---|---|---|---|---|---|"]
+    for name, section_field in ScenarioFile.model_fields.items():
+        title = f"[[{name}]]" if get_origin(section_field.annotation) is list else f"[{name}]"
+        for key, field in _model_in(section_field.annotation).model_fields.items():
+            quantity = _quantity([*field.metadata, field.annotation])
+            kind, choices = _type_name(field.annotation)
+            where, key = (f"[{name}.{key}]", "*name*") if get_origin(field.annotation) is dict else (title, key)
+            span = (quantity.span(unit=False).removeprefix("in ") or "any") if quantity else choices
+            rows.append(f"| `{where}` | `{key}` | {kind} | {quantity.unit if quantity else ''} | {span} | "
+                        f"{_default(field)} | {field.description} |")
+    return "\n".join(rows) + "\n"
+
+
+def _quantity(items: Any) -> Quantity | None:
+    """The :class:`Quantity` among ``items`` or inside their type arguments."""
+    for item in items:
+        found = item if isinstance(item, Quantity) else _quantity(get_args(item))
+        if found is not None:
+            return found
+    return None
+
+
+def _type_name(annotation: Any) -> tuple[str, str]:
+    """(type in words, the choices of a string key or '')."""
+    origin, args = get_origin(annotation), [a for a in get_args(annotation) if a is not type(None)]
+    if origin is Literal:
+        return "str", ", ".join(args)
+    if origin is list:
+        return f"list of {_type_name(args[0])[0]}", ""
+    if origin is dict:
+        return _type_name(args[1])[0], ""
+    if args:
+        return _type_name(args[0])
+    return annotation.__name__, ""
+
+
+def _default(field: Any) -> str:
+    if field.is_required():
+        return "required"
+    value = field.get_default(call_default_factory=True)
+    return "absent" if value is None else f"`{json.dumps(value)}`"
+
+
+MARKERS = ("<!-- scenario-reference:start -->\n", "<!-- scenario-reference:end -->")
+
+
+def with_reference(readme: str) -> str:
+    """``readme`` with the text between the scenario-reference :data:`MARKERS` replaced by :func:`reference`."""
+    start, end = readme.index(MARKERS[0]) + len(MARKERS[0]), readme.index(MARKERS[1])
+    return readme[:start] + reference() + readme[end:]
+
