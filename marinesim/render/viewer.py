@@ -1,6 +1,6 @@
 """The interactive viewer: a pyglet window with a moderngl context drawing a :class:`~marinesim.render.scene.Scene`.
 
-:func:`open_viewer` raises :class:`NoDisplay` when there is no display to open a window on; the
+:func:`open_window` raises :class:`NoDisplay` when there is no display to open a window on; the
 ``run`` command then renders headless instead (:mod:`marinesim.render.offscreen`).
 """
 

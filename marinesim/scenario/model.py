@@ -195,7 +195,8 @@ class RunOptions(Section):
     """``[run]``: how long, how fine, which seed."""
 
     duration_s: Annotated[float, Quantity("s", gt=0.0, le=MAX_DURATION_S)] = Field(600.0, description="run length")
-    dt_s: Annotated[float, Quantity("s", gt=0.0)] = Field(0.1, description="time step, at most duration_s")
+    dt_s: Annotated[float, Quantity("s", what="in (0, duration_s]", test=lambda dt: dt > 0.0)] = Field(
+        0.1, description="time step")
     seed: Annotated[int, Quantity(ge=0)] = Field(0, description="random seed of the wave amplitudes")
 
     @model_validator(mode="after")

@@ -11,10 +11,8 @@ constant ``1 + i`` in its DC cell, which no wave uses, so the Jacobian is
 
 The work around the FFT is two compiled loops (numba, GIL released): :func:`_pack_cells` turns
 the cosine and sine of every cell's phase into its four packed spectra, written straight into
-the FFT's input, and :func:`_jacobian` reads the Jacobian off the outputs in one pass. Done as
-numpy passes (temporaries, a fancy-indexed scatter, three passes for ``J``) the same work took
-twice as long (benchmarks/RESULTS.md, session 9). The cosines and sines stay numpy's, which are
-vectorised.
+the FFT's input, and :func:`_jacobian` reads the Jacobian off the outputs in one pass. The
+cosines and sines stay numpy's, which are vectorised.
 """
 
 from __future__ import annotations
@@ -125,10 +123,10 @@ def lane_workers(count: int) -> list[ThreadPoolExecutor]:
     """One single-thread executor per lane, each pinned where the OS allows: to a block of CPUs
     of its own (its FFT's threads inherit it), or round robin if there are more lanes than CPUs.
 
-    Unpinned, the lanes ran one after the other in most frames: a viewer asks for the fields
-    once per frame, the workers sleep in between, and on the 2-CPU test machine the scheduler
-    woke both lanes' threads on one CPU and left the other idle for milliseconds. In a 60 Hz
-    loop an update took 5.8-6.3 ms, against 3.7 ms pinned (benchmarks/RESULTS.md). The blocks
+    Unpinned, the lanes run one after the other in most frames: a viewer asks for the fields
+    once per frame, the workers sleep in between, and on a 2-CPU machine the scheduler wakes
+    both lanes' threads on one CPU and leaves the other idle for milliseconds (in a 60 Hz loop,
+    5.8-6.3 ms an update unpinned against 3.7 ms pinned: benchmarks/RESULTS.md). The blocks
     are the same for every ocean: two oceans updating at the same time share them.
     """
     cpus = available_cpus()
