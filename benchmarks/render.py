@@ -22,7 +22,6 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-import moderngl  # noqa: E402
 import numpy as np  # noqa: E402
 
 from marinesim.render.offscreen import Offscreen, parse_size  # noqa: E402
@@ -64,12 +63,12 @@ def main() -> None:
         stages["simulation"].append(times.simulation)
         stages["upload"].append(times.upload)
         stages["draw"].append(time.perf_counter() - start)
-    renderer = scene.renderer
+    sky_view = scene.renderer.view(scene.camera.eye(scene.sim.pose()), size)
     sky = []
     for _ in range(args.frames):
         start = time.perf_counter()
         ctx.clear()
-        renderer._sky_vao.render(moderngl.TRIANGLES, vertices=3)
+        scene.renderer.sky.draw(sky_view)
         ctx.finish()
         sky.append(time.perf_counter() - start)
     ocean = scene.sim.ocean

@@ -376,7 +376,7 @@ def test_the_visual_mesh_is_drawn_in_its_pose_instead_of_the_hull(barge):
         image, hull_image, without = (v.frame(hud=False).astype(int) for v in (view, hull_view, bare))
         renderer = view.scene.renderer
         assert renderer.mesh.positions[:, 2].max() == pytest.approx(25.0, abs=1e-4), "not the visual mesh drawn"
-        assert renderer._mask is not None, "the hull mask (no water inside the waterplane) comes from the hull"
+        assert renderer.hull_mask.cells is not None, "the hull mask (no water inside the waterplane) comes from the hull"
         x0, y0, x1, y1 = projected_box(view, renderer.mesh)
     for changed in (np.abs(image - hull_image).max(axis=-1) > 25, np.abs(image - without).max(axis=-1) > 25):
         rows, cols = np.nonzero(changed)
@@ -396,7 +396,7 @@ def test_a_visual_mesh_without_a_hull_is_drawn_and_the_sea_runs_under_it(barge):
             v.go_to(30.0)
         changed = np.abs(view.frame(hud=False).astype(int) - bare.frame(hud=False).astype(int)).max(axis=-1) > 25
         renderer = view.scene.renderer
-        assert renderer._mask is None and view.scene.sim.solver is None and not view.scene.sim.wakes()
+        assert renderer.hull_mask.cells is None and view.scene.sim.solver is None and not view.scene.sim.wakes()
         x0, y0, x1, y1 = projected_box(view, renderer.mesh)
     rows, cols = np.nonzero(changed)
     assert changed.sum() > 100, "the visual mesh covers almost no pixels"

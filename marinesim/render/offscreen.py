@@ -17,7 +17,8 @@ import numpy as np
 from marinesim.atomic import atomic_path
 from marinesim.errors import ParameterError
 from marinesim.gl import standalone_context
-from marinesim.render.renderer import FOAM_TAU_S, RenderOptions
+from marinesim.render.layers.foam import FOAM_TAU_S
+from marinesim.render.renderer import RenderOptions
 from marinesim.progress import task
 from marinesim.render.scene import Scene, solver_wanted
 from marinesim.scenario import Scenario

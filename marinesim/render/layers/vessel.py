@@ -1,0 +1,51 @@
+"""The vessel pass: the drawn mesh (body frame) carried by the 6-DOF pose, lit by the sky and sun."""
+
+from __future__ import annotations
+
+import moderngl
+
+from marinesim.pose import Pose
+from marinesim.render.layers.base import View, mat4
+from marinesim.render.program import Program
+from marinesim.render.vessel_mesh import VesselMesh, vessel_mesh, visual_mesh
+from marinesim.session.timeline import Simulation
+
+
+def drawn_mesh(sim: Simulation) -> VesselMesh | None:
+    """The vessel as drawn (body frame, m): the scenario's visual mesh, else the hull with topsides and a
+    deckhouse around the bridge point; None without either."""
+    vessel = sim.vessel
+    if vessel is not None and vessel.visual is not None:
+        return visual_mesh(vessel.visual)
+    if vessel is not None and vessel.hull is not None:
+        return vessel_mesh(vessel.hull, house_at=vessel.points.get("bridge"))
+    return None
+
+
+class VesselLayer:
+    """Draws ``mesh`` with back faces culled; nothing when it is None or not ``shown``."""
+
+    def __init__(self, ctx: moderngl.Context, mesh: VesselMesh | None, shown: bool = True) -> None:
+        self.ctx, self.mesh, self.shown = ctx, mesh, shown
+        self.program = Program.from_files(ctx, "vessel")
+        self.vao = self._vbo = None
+        if mesh is not None:
+            self._vbo = ctx.buffer(mesh.vertex_data().tobytes())
+            self.vao = ctx.vertex_array(self.program.gl, [
+                (self._vbo, "3f 3f 3f", "in_position", "in_normal", "in_colour")])
+
+    def draw(self, view: View, pose: Pose) -> None:
+        """The mesh in ``pose`` (body -> E frame)."""
+        if self.vao is None or not self.shown:
+            return
+        self.ctx.enable(moderngl.CULL_FACE)
+        self.program.update(view.shared() | {"u_model": mat4(pose.matrix()),
+                                             "u_view_projection": mat4(view.view_projection)})
+        self.vao.render(moderngl.TRIANGLES)
+        self.ctx.disable(moderngl.CULL_FACE)
+
+    def release(self) -> None:
+        if self.vao is not None:
+            self.vao.release()
+            self._vbo.release()
+        self.program.release()
