@@ -3,7 +3,13 @@ then renamed over it.
 
 An interrupted run never leaves a half-written file behind, an existing file is replaced only by
 a complete one, and every output gets the same permissions (0666 less the umask, as ``open``
-would give; ``mkstemp`` alone makes 0600).
+would give; ``mkstemp`` alone makes 0600). Only a regular file (or nothing) is ever replaced: a
+device, a FIFO, a directory or a symbolic link at the target is refused before anything is written.
+
+Files that belong together (a table and the sidecar that describes it) are committed by
+:func:`commit_together`: SIGINT and SIGTERM wait until the last is in place, and if a rename fails
+the files renamed before it get their previous contents back, so the pair on disk is the old one
+or the new one. :func:`output_lock` keeps a second writer off an output while the first runs.
 """
 
 from __future__ import annotations
@@ -11,9 +17,12 @@ from __future__ import annotations
 import contextlib
 import json
 import os
+import signal
+import stat
 import tempfile
+import threading
 from pathlib import Path
-from typing import Iterator
+from typing import Iterator, Sequence
 
 from marinesim.errors import MarinesimError
 
@@ -25,6 +34,7 @@ class AtomicFile:
         self.path = Path(path)
         if not self.path.parent.is_dir():
             raise MarinesimError(f"cannot write {self.path}: folder {self.path.parent} does not exist")
+        check_replaceable(self.path)
         fd, temp = tempfile.mkstemp(prefix=f".{self.path.stem}.", suffix=f".part{self.path.suffix}",
                                     dir=self.path.parent)
         os.close(fd)
@@ -44,6 +54,19 @@ class AtomicFile:
             os.unlink(self.temp)
 
 
+def check_replaceable(path: Path) -> None:
+    """Refuse (:class:`MarinesimError`) a target that exists and is not a regular file."""
+    try:
+        mode = os.lstat(path).st_mode
+    except FileNotFoundError:
+        return
+    if not stat.S_ISREG(mode):
+        kind = ("a symbolic link" if stat.S_ISLNK(mode) else "a folder" if stat.S_ISDIR(mode)
+                else "a FIFO" if stat.S_ISFIFO(mode) else "a device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode)
+                else "not a regular file")
+        raise MarinesimError(f"cannot write {path}: it is {kind}; give the path of a regular file")
+
+
 @contextlib.contextmanager
 def atomic_path(path: str | os.PathLike) -> Iterator[Path]:
     """Yield a temporary path to write; on success it is renamed to ``path``, else removed."""
@@ -56,8 +79,101 @@ def atomic_path(path: str | os.PathLike) -> Iterator[Path]:
         raise
 
 
-def write_json(path: str | os.PathLike, data: dict) -> Path:
-    """``data`` as indented JSON (UTF-8, one trailing newline) to ``path``, atomically."""
-    with atomic_path(path) as temp:
-        temp.write_text(json.dumps(data, indent=2) + "\n", encoding="utf-8")
-    return Path(path)
+def json_text(data: dict) -> str:
+    """``data`` as the indented JSON every sidecar is written in (one trailing newline)."""
+    return json.dumps(data, indent=2) + "\n"
+
+
+def commit_together(files: Sequence[AtomicFile]) -> None:
+    """Rename every file into place in order, as one unit (see the module's docstring)."""
+    backups: list[tuple[AtomicFile, Path | None]] = []
+    with _signals_held():
+        try:
+            for file in files:
+                backups.append((file, _backup(file.path)))
+                file.commit()
+        except BaseException:
+            for file, backup in reversed(backups[:-1]):
+                if backup is not None:
+                    os.replace(backup, file.path)
+                else:
+                    with contextlib.suppress(FileNotFoundError):
+                        os.unlink(file.path)
+            raise
+        finally:
+            for _, backup in backups:
+                if backup is not None:
+                    with contextlib.suppress(FileNotFoundError):
+                        os.unlink(backup)
+
+
+def _backup(path: Path) -> Path | None:
+    """A hard link to the file at ``path`` under a temporary name (None if there is none)."""
+    if not path.exists():
+        return None
+    backup = path.with_name(f".{path.name}.{os.getpid()}.previous")
+    with contextlib.suppress(FileNotFoundError):
+        os.unlink(backup)
+    os.link(path, backup)
+    return backup
+
+
+@contextlib.contextmanager
+def _signals_held() -> Iterator[None]:
+    """SIGINT and SIGTERM are delivered only when the block ends (main thread; elsewhere a no-op)."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    held = {signal.SIGINT, signal.SIGTERM}
+    previous = signal.pthread_sigmask(signal.SIG_BLOCK, held)
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, previous)
+
+
+@contextlib.contextmanager
+def output_lock(path: Path) -> Iterator[None]:
+    """Hold ``<path>.lock`` (it names this process) while ``path`` is written; a second writer is refused
+    while the first runs, and a lock left by a process that no longer runs is taken over."""
+    lock = path.with_name(path.name + ".lock")
+    mine = AtomicFile(lock)
+    mine.temp.write_text(f"{os.getpid()}\n")
+    try:
+        for _ in range(2):
+            try:
+                os.link(mine.temp, lock)  # fails if the lock exists: creating it with its content is atomic
+                break
+            except FileExistsError:
+                owner = _lock_owner(lock)
+                if owner is not None:
+                    raise MarinesimError(f"cannot write {path}: another marinesim (process {owner}) is writing "
+                                         f"it; wait for it to finish (or remove {lock} if it no longer runs)") from None
+                with contextlib.suppress(FileNotFoundError):
+                    os.unlink(lock)
+        else:
+            raise MarinesimError(f"cannot write {path}: the lock {lock} keeps coming back")
+    finally:
+        mine.discard()
+    try:
+        yield
+    finally:
+        with contextlib.suppress(FileNotFoundError):
+            os.unlink(lock)
+
+
+def _lock_owner(lock: Path) -> int | None:
+    """The process that holds ``lock`` if it still runs, else None (a lock names its process from the start)."""
+    try:
+        pid = int(lock.read_text().strip())
+    except (OSError, ValueError):
+        return None
+    if pid <= 0:
+        return None
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return None
+    except PermissionError:
+        return pid
+    return pid

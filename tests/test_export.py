@@ -110,7 +110,7 @@ def test_interrupted_export_leaves_no_partial_file(tmp_path):
     _, stderr = process.communicate(timeout=60)
     assert process.returncode == 130 and "interrupted" in stderr and "Traceback" not in stderr
     assert (tmp_path / "motions.csv").read_bytes() == old
-    assert not list(tmp_path.glob(".motions.*")) and not (tmp_path / "motions.json").exists()
+    assert not list(tmp_path.glob(".motions.*")) and not (tmp_path / "motions.csv.json").exists()
 
 
 def test_cli_export_and_rao(tmp_path):
@@ -119,7 +119,7 @@ def test_cli_export_and_rao(tmp_path):
                  "--quiet", cwd=tmp_path)
     assert result.returncode == 0, result.stderr
     assert "41 rows" in result.stdout
-    assert json.loads((tmp_path / "m.json").read_text())["seed"] == 3
+    assert json.loads((tmp_path / "m.csv.json").read_text())["seed"] == 3
     report = cli("rao", str(ROOT / "rao" / "s175" / "input.re1"), "--json", "--plot", str(tmp_path / "rao.png"))
     assert report.returncode == 0, report.stderr
     summary = json.loads(report.stdout)

@@ -102,7 +102,7 @@ def test_run_writes_reproducible_files_that_match_the_surface(tmp_path):
     frame = pd.read_csv(a / "wave_elevation.csv")
     assert list(frame.columns) == ["time_s", "wave_elevation_m"]
     assert len(frame) == 121 and frame["time_s"].iloc[-1] == pytest.approx(60.0)
-    sidecar = json.loads((a / "wave_elevation.json").read_text())
+    sidecar = json.loads((a / "wave_elevation.csv.json").read_text())
     assert sidecar["seed"] == 3 and len(sidecar["scenario_sha256"]) == 64
     # what the CSV holds is the drawn surface: at t = 0 the summed FFT tiles at the origin
     scenario = load_scenario(scenario_path)

@@ -81,7 +81,7 @@ def test_installed_outside_the_checkout_it_runs_and_renders(installed, tmp_path)
     run = _run(installed, "marinesim", "run", "--headless", "--quiet", "--duration", "2", "--out", "out",
                cwd=tmp_path)
     assert run.returncode == 0, run.stderr[-3000:]
-    for name in ("sea.png", "motions.csv", "motions.json", "rao.png", "video.mp4"):
+    for name in ("sea.png", "motions.csv", "motions.csv.json", "rao.png", "video.mp4"):
         assert (tmp_path / "out" / name).stat().st_size > 0, f"the headless run did not write {name}"
     assert str(default) in run.stdout
 

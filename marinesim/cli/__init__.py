@@ -1,11 +1,14 @@
 """The ``marinesim`` command: one module per command, each with ``add`` (its options) and ``handle``
 (the work, importing what it needs only then, so that ``marinesim --version`` and ``--help`` answer
-at once). User mistakes print one line and exit with status 2.
+at once). User mistakes print one line and exit with status 2; Ctrl-C (SIGINT) and SIGTERM (what
+``timeout``, ``docker stop`` and a cancelled job send) discard the files being written, print one
+line and exit with 130 and 143.
 """
 
 from __future__ import annotations
 
 import argparse
+import signal
 import sys
 
 from marinesim import __version__
@@ -16,6 +19,10 @@ COMMANDS = (run, render, export, rao, hull, wake, sea)
 """The command modules, in the order ``--help`` lists them."""
 
 
+class Terminated(BaseException):
+    """SIGTERM arrived: unwind as Ctrl-C does (temporary files are discarded on the way out)."""
+
+
 def main(argv: list[str] | None = None) -> int:
     """Run the command line ``argv`` (default: the process's); the exit status."""
     parser = build_parser()
@@ -23,6 +30,7 @@ def main(argv: list[str] | None = None) -> int:
     if args.command is None:
         parser.print_help()
         return 0
+    previous = signal.signal(signal.SIGTERM, _terminate)
     try:
         return args.handler(args)
     except MarinesimError as error:
@@ -31,9 +39,18 @@ def main(argv: list[str] | None = None) -> int:
     except KeyboardInterrupt:
         print(f"marinesim {args.command}: interrupted (files being written were discarded)", file=sys.stderr)
         return 130
+    except Terminated:
+        print(f"marinesim {args.command}: terminated (files being written were discarded)", file=sys.stderr)
+        return 143
     except OSError as error:
         print(f"marinesim {args.command}: error: {error.strerror or error}: {error.filename}", file=sys.stderr)
         return 2
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+
+
+def _terminate(signum: int, frame: object) -> None:
+    raise Terminated
 
 
 def build_parser() -> argparse.ArgumentParser:

@@ -18,7 +18,8 @@ def add(commands: argparse._SubParsersAction) -> None:
     p.add_argument("--duration", type=float, help="run length, s (default: the scenario's)")
     p.add_argument("--dt", type=float, help="time step, s (default: the scenario's)")
     p.add_argument("--seed", type=int, help="random seed (default: the scenario's)")
-    p.add_argument("--format", choices=("csv", "parquet"), default="csv", help="table format (default csv)")
+    p.add_argument("--format", choices=("csv", "parquet"),
+                   help="table format (default: from the extension, .csv or .parquet; else csv)")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     p.set_defaults(handler=handle)
 

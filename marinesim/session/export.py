@@ -1,9 +1,10 @@
 """The vessel's motions over a run, exported: CSV (or Parquet) plus a JSON sidecar.
 
 Columns and sidecar as docs/CONVENTIONS.md ("Time series and files"). The table streams to
-disk in blocks, so memory stays flat with duration; it is written to a temporary file renamed
-into place at the end, so an interrupted export leaves no partial file. Same scenario and seed:
-byte-identical files (the sidecar holds no clock time).
+disk in blocks, so memory stays flat with duration; it and its sidecar are written to temporary
+files renamed into place together at the end (:func:`~marinesim.session.sidecar.write_table`), so
+an interrupted export leaves the previous pair or the new one, never a partial file or a mix.
+Same scenario and seed: byte-identical files (the sidecar holds no clock time).
 """
 
 from __future__ import annotations
@@ -14,13 +15,14 @@ from typing import IO, Iterable
 
 import numpy as np
 
-from marinesim.atomic import atomic_path, write_json
 from marinesim.errors import MarinesimError, ParameterError
 from marinesim.progress import Bar, task
 from marinesim.session.assembly import Assembly
-from marinesim.session.sidecar import run_sidecar, sha256
+from marinesim.session.sidecar import run_sidecar, sha256, write_table
 
 FORMATS = ("csv", "parquet")
+EXTENSIONS = {".csv": "csv", ".parquet": "parquet", ".pq": "parquet"}
+"""The table format an export file's extension implies."""
 CONVENTIONS = ("body frame x forward, y port, z up, origin at the RAO reference point; "
                "roll/pitch/yaw positive about x/y/z (pitch bow down, yaw bow to port), degrees; "
                "points: position in the steady vessel frame, R = Rz(yaw) Ry(pitch) Rx(roll); "
@@ -37,48 +39,61 @@ class Export:
     columns: list[str]
 
 
-def export_motions(assembly: Assembly, out: Path, file_format: str = "csv",
+def export_motions(assembly: Assembly, out: Path, file_format: str | None = None,
                    duration_s: float | None = None) -> Export:
     """Write the motions of the assembled scenario over ``[0, duration_s]`` (default: its run) at the run's
-    dt to ``out``, with the sidecar ``out.json`` beside it."""
-    if file_format not in FORMATS:
-        raise ParameterError(f"unknown export format {file_format!r} (known: {', '.join(FORMATS)})")
+    dt to ``out`` (``file_format`` csv or parquet; default: from the extension, else csv), with its
+    sidecar ``<out>.json``, as one unit."""
     out = Path(out)
-    sidecar = out.with_suffix(".json")
-    if sidecar == out:
-        raise ParameterError(f"the export file needs an extension other than .json: {out}")
-    scenario, response = assembly.scenario, assembly.response
+    file_format = table_format(out, file_format)
+    scenario = assembly.scenario
     run = scenario.run
     duration = run.duration_s if duration_s is None else duration_s
     steps = int(round(duration / run.dt_s)) + 1
-    blocks = response.frames(0.0, run.dt_s, steps)
-    with task(f"export {out.name}", steps) as bar, atomic_path(out) as temp:
-        if file_format == "csv":
-            _write_csv(temp, blocks, bar)
-        else:
-            _write_parquet(temp, blocks, bar)
-    vessel, rao = scenario.vessel, scenario.vessel.rao
-    write_json(sidecar, {
-        "file": out.name,
-        "format": file_format,
-        "rows": steps,
-        "columns": response.columns,
-        "conventions": CONVENTIONS,
-        **run_sidecar(assembly, duration, run.dt_s, response.components),
-        "vessel": {
-            "rao": str(vessel.rao_path),
-            "rao_sha256": sha256(vessel.rao_path),
-            "rao_format": rao.source_format,
-            "rao_notes": list(rao.notes),
-            "rao_reference_point_m": list(rao.reference_point),
-            "hull": str(vessel.hull_path) if vessel.hull_path else None,
-            "hull_sha256": sha256(vessel.hull_path) if vessel.hull_path else None,
-            "speed_kn": vessel.speed_kn,
-            "heading_deg": vessel.heading_deg,
-            "points_m": {name: list(p) for name, p in vessel.points.items()},
-        },
-    })
-    return Export(out, sidecar, steps, response.columns)
+
+    def write(temp: Path) -> None:
+        blocks = assembly.response.frames(0.0, run.dt_s, steps)
+        with task(f"export {out.name}", steps) as bar:
+            (_write_csv if file_format == "csv" else _write_parquet)(temp, blocks, bar)
+
+    def describe() -> dict:
+        vessel, rao, response = scenario.vessel, scenario.vessel.rao, assembly.response
+        return {
+            "format": file_format,
+            "rows": steps,
+            "columns": response.columns,
+            "conventions": CONVENTIONS,
+            **run_sidecar(assembly, duration, run.dt_s, response.components),
+            "vessel": {
+                "rao": str(vessel.rao_path),
+                "rao_sha256": sha256(vessel.rao_path),
+                "rao_format": rao.source_format,
+                "rao_notes": list(rao.notes),
+                "rao_reference_point_m": list(rao.reference_point),
+                "hull": str(vessel.hull_path) if vessel.hull_path else None,
+                "hull_sha256": sha256(vessel.hull_path) if vessel.hull_path else None,
+                "speed_kn": vessel.speed_kn,
+                "heading_deg": vessel.heading_deg,
+                "points_m": {name: list(p) for name, p in vessel.points.items()},
+            },
+        }
+
+    sidecar = write_table(out, write, describe)
+    return Export(out, sidecar, steps, assembly.response.columns)
+
+
+def table_format(path: Path, file_format: str | None) -> str:
+    """The table format of ``path``: ``file_format`` if given (it must agree with a .csv or .parquet
+    extension), else the extension's, else csv."""
+    by_extension = EXTENSIONS.get(path.suffix.lower())
+    if file_format is None:
+        return by_extension or "csv"
+    if file_format not in FORMATS:
+        raise ParameterError(f"unknown export format {file_format!r} (known: {', '.join(FORMATS)})")
+    if by_extension is not None and by_extension != file_format:
+        raise ParameterError(f"--format {file_format} does not fit {path.name}: give a .{file_format} file "
+                             f"or --format {by_extension}")
+    return file_format
 
 
 def write_csv_block(handle: IO[str], block: dict[str, np.ndarray], header: bool) -> None:

@@ -1,9 +1,10 @@
 """The headless run of a scenario: what ``marinesim run`` writes without a viewer.
 
 Into one folder: ``sea.png`` (spectrum and surface); with a vessel, ``motions.csv`` and its JSON
-sidecar (as ``marinesim export``), ``motions.png`` and ``rao.png``, and with a hull and a speed
+sidecar ``motions.csv.json`` (as ``marinesim export``), ``motions.png`` and ``rao.png``, and with a hull and a speed
 ``wake.png`` (the Kelvin wake, precomputed into the cache for every scenario speed); without one,
-``wave_elevation.csv`` (elevation at the origin), its sidecar and ``wave_elevation.png``.
+``wave_elevation.csv`` (elevation at the origin), its sidecar ``wave_elevation.csv.json`` and
+``wave_elevation.png``.
 Same scenario and seed: bit-identical tables. The ocean is built once, for all of them.
 """
 
@@ -14,13 +15,13 @@ from pathlib import Path
 
 import numpy as np
 
-from marinesim.atomic import atomic_path, write_json
+from marinesim.atomic import atomic_path
 from marinesim.constants import KNOT
 from marinesim.progress import task
 from marinesim.sea.plot import plot_sea, plot_series
 from marinesim.session.assembly import Assembly
 from marinesim.session.export import export_motions
-from marinesim.session.sidecar import run_sidecar
+from marinesim.session.sidecar import run_sidecar, write_table
 from marinesim.vessel.plot import plot_motions, plot_rao
 
 ELEVATION_CHUNK = 1000
@@ -90,8 +91,7 @@ def _wave_elevation(assembly: Assembly, out_dir: Path) -> dict[str, Path]:
     """The incident wave elevation at (0, 0) over the run (m), its sidecar and its plot."""
     import pandas as pd
 
-    files = {"elevation": out_dir / "wave_elevation.csv", "sidecar": out_dir / "wave_elevation.json",
-             "elevation_plot": out_dir / "wave_elevation.png"}
+    files = {"elevation": out_dir / "wave_elevation.csv", "elevation_plot": out_dir / "wave_elevation.png"}
     scenario, run = assembly.scenario, assembly.scenario.run
     steps = int(round(run.duration_s / run.dt_s)) + 1
     times = np.arange(steps) * run.dt_s
@@ -102,10 +102,11 @@ def _wave_elevation(assembly: Assembly, out_dir: Path) -> dict[str, Path]:
             hi = min(lo + ELEVATION_CHUNK, steps)
             elevation[lo:hi] = components.elevation(0.0, 0.0, times[lo:hi])
             bar.update(hi - lo)
-    with atomic_path(files["elevation"]) as temp:
-        pd.DataFrame({"time_s": times, "wave_elevation_m": elevation}).to_csv(temp, index=False)
+    files["sidecar"] = write_table(
+        files["elevation"],
+        lambda temp: pd.DataFrame({"time_s": times, "wave_elevation_m": elevation}).to_csv(temp, index=False),
+        lambda: run_sidecar(assembly, run.duration_s, run.dt_s, components) | {"point_m": [0.0, 0.0]})
     with atomic_path(files["elevation_plot"]) as temp:
         plot_series(times, elevation, "elevation [m]", f"wave elevation at (0, 0), {scenario.name}, seed {run.seed}",
                     temp)
-    write_json(files["sidecar"], run_sidecar(assembly, run.duration_s, run.dt_s, components) | {"point_m": [0.0, 0.0]})
     return files

@@ -1,6 +1,9 @@
 """The JSON sidecar beside every table a run writes: what produced it, so that it can be produced again.
 
-It holds no clock time: the same scenario, seed and inputs give the same bytes.
+A table ``m.csv`` has its sidecar ``m.csv.json`` (so ``m.csv`` and ``m.parquet`` keep their own),
+which names the table's sha256 (``data_sha256``): the two are written as one unit
+(:func:`write_table`), and a reader can tell that a sidecar describes the bytes beside it. The
+sidecar holds no clock time: the same scenario, seed and inputs give the same bytes.
 """
 
 from __future__ import annotations
@@ -8,10 +11,12 @@ from __future__ import annotations
 import hashlib
 import platform
 from pathlib import Path
+from typing import Callable
 
 import numpy as np
 
 from marinesim import __version__
+from marinesim.atomic import AtomicFile, commit_together, json_text, output_lock
 from marinesim.sea.ocean import Components
 from marinesim.sea.summary import summary
 from marinesim.session.assembly import VARIANCE_FRACTION, Assembly
@@ -24,6 +29,29 @@ def sha256(path: Path) -> str:
         for chunk in iter(lambda: handle.read(1 << 20), b""):
             digest.update(chunk)
     return digest.hexdigest()
+
+
+def sidecar_path(table: Path) -> Path:
+    """Where the sidecar of ``table`` goes: its full name plus ``.json``."""
+    return table.with_name(table.name + ".json")
+
+
+def write_table(path: Path, write: Callable[[Path], None], describe: Callable[[], dict]) -> Path:
+    """Write a table with ``write(temporary path)`` and its sidecar (``describe()`` after the table's name
+    and ``data_sha256``) as one unit, the output locked against a second writer; returns the sidecar's path."""
+    path = Path(path)
+    with output_lock(path):
+        table, sidecar = AtomicFile(path), AtomicFile(sidecar_path(path))
+        try:
+            write(table.temp)
+            metadata = {"file": path.name, "data_sha256": sha256(table.temp)} | describe()
+            sidecar.temp.write_text(json_text(metadata), encoding="utf-8")
+            commit_together([sidecar, table])
+        except BaseException:
+            table.discard()
+            sidecar.discard()
+            raise
+    return sidecar.path
 
 
 def run_sidecar(assembly: Assembly, duration_s: float, dt_s: float, components: Components) -> dict:

@@ -1,0 +1,189 @@
+"""An exported table and its sidecar are one unit: nothing lost, nothing mixed, nothing clobbered.
+
+Each fault is staged for real: a SIGTERM to a running export, a second export to the same file, a
+rename that fails half way, a FIFO, a device and a symbolic link where the output should go.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import signal
+import stat
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pandas as pd
+import pytest
+
+from marinesim.atomic import AtomicFile, commit_together
+from marinesim.errors import MarinesimError, ParameterError
+from marinesim.scenario import load_scenario, with_run
+from marinesim.session.assembly import Assembly
+from marinesim.session.export import export_motions
+
+from conftest import ROOT
+
+SCENARIO = f"""
+[ocean]
+resolution = 64
+tiles = 3
+
+[[sea]]
+type = "jonswap"
+hs_m = 3.0
+tp_s = 9.0
+from_deg = 200.0
+
+[vessel]
+rao = "{ROOT / 'rao' / 'tanker' / 'tanker.4'}"
+speed_kn = 4.0
+
+[run]
+duration_s = 86400.0
+dt_s = 0.1
+seed = 1
+"""
+
+
+@pytest.fixture
+def scenario(tmp_path) -> Path:
+    path = tmp_path / "long.toml"
+    path.write_text(SCENARIO)
+    return path
+
+
+def start_export(scenario: Path, cwd: Path, *args: str) -> subprocess.Popen:
+    """``marinesim export`` of a day at 10 Hz in the background, once its temporary table is growing."""
+    process = subprocess.Popen([sys.executable, "-m", "marinesim", "export", str(scenario), "--out", "m.csv",
+                                "--quiet", *args], cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.time() + 120
+    while time.time() < deadline:
+        parts = list(cwd.glob(".m.*.part.csv"))
+        if parts and parts[0].stat().st_size > 100_000:
+            return process
+        time.sleep(0.05)
+    process.kill()
+    pytest.fail("the export never started writing")
+
+
+def export(scenario: Path, cwd: Path, *args: str) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "marinesim", "export", str(scenario), "--quiet", *args], cwd=cwd,
+                          capture_output=True, text=True, timeout=600)
+
+
+def test_the_sidecar_names_the_bytes_of_its_table_and_each_table_has_its_own(tmp_path, scenario):
+    """``m.csv`` gets ``m.csv.json`` and ``m.parquet`` gets ``m.parquet.json`` (one shared ``m.json`` let the
+    second export overwrite the first's metadata); each sidecar's data_sha256 is its table's sha256."""
+    pytest.importorskip("pyarrow")
+    assembly = Assembly(with_run(load_scenario(scenario), duration=20.0))
+    csv = export_motions(assembly, tmp_path / "m.csv")
+    parquet = export_motions(assembly, tmp_path / "m.parquet")
+    assert (csv.sidecar.name, parquet.sidecar.name) == ("m.csv.json", "m.parquet.json")
+    for result, file_format in ((csv, "csv"), (parquet, "parquet")):
+        meta = json.loads(result.sidecar.read_text())
+        assert meta["data_sha256"] == hashlib.sha256(result.table.read_bytes()).hexdigest()
+        assert meta["format"] == file_format and meta["file"] == result.table.name
+    assert len(pd.read_parquet(parquet.table)) == len(pd.read_csv(csv.table)) == 201
+
+
+def test_a_format_that_contradicts_the_extension_is_refused(tmp_path, scenario):
+    """``--format parquet --out x.csv`` would write Parquet bytes into a file every tool reads as CSV."""
+    refused = export(scenario, tmp_path, "--out", "x.csv", "--format", "parquet", "--duration", "5")
+    assert refused.returncode == 2 and "--format parquet does not fit x.csv" in refused.stderr
+    assert len(refused.stderr.strip().splitlines()) == 1 and not list(tmp_path.glob("x.csv*"))
+
+
+def test_sigterm_discards_the_new_pair_and_keeps_the_old_one(tmp_path, scenario):
+    """SIGTERM (timeout, docker stop, a cancelled job) ends the export like Ctrl-C: one line, exit 143, the
+    previous pair untouched, no temporary file and no lock left behind."""
+    old_table, old_sidecar = b"time_s\n0.0\n", b'{"seed": 0}\n'
+    (tmp_path / "m.csv").write_bytes(old_table)
+    (tmp_path / "m.csv.json").write_bytes(old_sidecar)
+    process = start_export(scenario, tmp_path)
+    process.send_signal(signal.SIGTERM)
+    _, stderr = process.communicate(timeout=60)
+    assert process.returncode == 143 and "terminated" in stderr and "Traceback" not in stderr
+    assert len(stderr.strip().splitlines()) == 1
+    assert (tmp_path / "m.csv").read_bytes() == old_table and (tmp_path / "m.csv.json").read_bytes() == old_sidecar
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["long.toml", "m.csv", "m.csv.json"]
+
+
+def test_a_second_writer_is_refused_while_the_first_runs(tmp_path, scenario):
+    """Two exports to one file used to leave one's table beside the other's sidecar; now the second is refused
+    with the first's process named, and the first's pair is whole."""
+    first = start_export(scenario, tmp_path, "--duration", "40000")
+    second = export(scenario, tmp_path, "--out", "m.csv", "--seed", "2", "--duration", "10")
+    assert second.returncode == 2 and f"another marinesim (process {first.pid}) is writing it" in second.stderr
+    assert first.wait(timeout=600) == 0
+    meta = json.loads((tmp_path / "m.csv.json").read_text())
+    assert meta["seed"] == 1 and meta["data_sha256"] == hashlib.sha256((tmp_path / "m.csv").read_bytes()).hexdigest()
+    assert not (tmp_path / "m.csv.lock").exists()
+
+
+def test_a_lock_left_by_a_process_that_no_longer_runs_is_taken_over(tmp_path, scenario):
+    """A killed export leaves its lock; the next export sees that its process is gone and goes ahead."""
+    gone = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"], capture_output=True, text=True)
+    (tmp_path / "m.csv.lock").write_text(gone.stdout)
+    done = export(scenario, tmp_path, "--out", "m.csv", "--duration", "5")
+    assert done.returncode == 0, done.stderr
+    assert (tmp_path / "m.csv").exists() and not (tmp_path / "m.csv.lock").exists()
+
+
+def test_a_failed_rename_puts_back_what_was_there(tmp_path):
+    """If the second rename of a pair fails (here: its temporary file vanished), the first file gets its
+    previous contents back: the pair on disk is the old one, not a mix."""
+    a, b = tmp_path / "a.csv", tmp_path / "a.csv.json"
+    a.write_text("old table")
+    b.write_text("old sidecar")
+    new_b, new_a = AtomicFile(b), AtomicFile(a)
+    new_b.temp.write_text("new sidecar")
+    new_a.temp.write_text("new table")
+    os.unlink(new_a.temp)
+    with pytest.raises(FileNotFoundError):
+        commit_together([new_b, new_a])
+    assert (a.read_text(), b.read_text()) == ("old table", "old sidecar")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.csv", "a.csv.json"]
+
+
+@pytest.mark.parametrize("kind", ["fifo", "symlink", "device", "folder"])
+def test_an_output_that_is_not_a_regular_file_is_refused_and_left_alone(tmp_path, scenario, kind):
+    """Writing over a FIFO, a symbolic link, a device (the null device, as root, was once replaced by a
+    regular file) or a folder is refused with one line before the export starts."""
+    target = tmp_path / "out.csv"
+    if kind == "fifo":
+        os.mkfifo(target)
+    elif kind == "symlink":
+        (tmp_path / "elsewhere.csv").write_text("keep me")
+        target.symlink_to(tmp_path / "elsewhere.csv")
+    elif kind == "device":
+        try:
+            os.mknod(target, stat.S_IFCHR | 0o666, os.makedev(1, 3))
+        except PermissionError:
+            pytest.skip("making a device node needs root")
+    else:
+        target.mkdir()
+    before = os.lstat(target)
+    refused = export(scenario, tmp_path, "--out", "out.csv", "--duration", "5")
+    assert refused.returncode == 2 and "give the path of a regular file" in refused.stderr, refused.stderr
+    assert len(refused.stderr.strip().splitlines()) == 1
+    after = os.lstat(target)
+    assert (after.st_mode, after.st_ino, after.st_rdev) == (before.st_mode, before.st_ino, before.st_rdev)
+    assert not list(tmp_path.glob(".out.*")) and not (tmp_path / "out.csv.json").exists()
+    if kind == "symlink":
+        assert (tmp_path / "elsewhere.csv").read_text() == "keep me"
+
+
+def test_refusals_name_the_file(tmp_path):
+    """The API refuses the same way (MarinesimError naming the path), and an unknown format is a ParameterError."""
+    os.mkfifo(tmp_path / "pipe.csv")
+    with pytest.raises(MarinesimError, match="pipe.csv: it is a FIFO"):
+        AtomicFile(tmp_path / "pipe.csv")
+    from marinesim.session.export import table_format
+
+    with pytest.raises(ParameterError, match="unknown export format"):
+        table_format(tmp_path / "x.csv", "xlsx")
+    assert table_format(tmp_path / "x.parquet", None) == "parquet" and table_format(tmp_path / "x.out", None) == "csv"
