@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from test_render import luminance, offscreen
+from test_render_offscreen import luminance, offscreen
 
 from marinesim.render.camera import FreeCamera
 from marinesim.scenario import load_scenario

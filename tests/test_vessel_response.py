@@ -12,7 +12,7 @@ from marinesim.sea.seastate import SeaState
 from marinesim.vessel import DOFS, Response, Track, read_rao
 from marinesim.vessel.native import write_native
 
-from test_rao_readers import S175, TANKER, raw_wamit, synthetic_table
+from test_vessel_readers import S175, TANKER, raw_wamit, synthetic_table
 
 CSV_UNIT = np.array([1.0, 1.0, 1.0, math.pi / 180, math.pi / 180, math.pi / 180])  # CSV -> m, rad
 
