@@ -1,9 +1,15 @@
 """What the tests share: the checkout's root, one OpenGL context fixture, sea states (real spectra,
-real FFTs, a real EGL context; nothing mocked) and a wake cache of their own."""
+real FFTs, a real EGL context; nothing mocked), a wake cache of their own, and the few helpers more
+than one test file uses (the command in a process, scenario files, offscreen frames, RAO tables).
+Test files import them with ``from conftest import ...``."""
 
-import math
+from __future__ import annotations
+
+import subprocess
+import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from marinesim.angles import wave_beta_from_compass
@@ -12,6 +18,65 @@ from marinesim.sea import Cos2s, Jonswap, SeaState, WaveSystem
 ROOT = Path(__file__).resolve().parents[1]
 """The checkout: its rao/, hulls/, configs/ and shaders/ are the files the tests read."""
 DEFAULT = ROOT / "configs" / "default.toml"
+RENDER_SIZE = (320, 180)
+"""Offscreen frames are small: a software renderer draws them."""
+
+SEA_SCENARIO = """
+[[sea]]
+type = "jonswap"
+hs_m = 3.0
+tp_s = 9.0
+from_deg = 45.0
+spreading_s = 10.0
+
+[run]
+duration_s = 60.0
+dt_s = 0.5
+seed = 3
+"""
+"""A wind sea alone, no vessel: 60 s at dt 0.5 s, seed 3."""
+
+VESSEL_SCENARIO = f"""
+[ocean]
+resolution = 64
+tiles = 3
+
+[[sea]]
+type = "jonswap"
+hs_m = 4.0
+tp_s = 10.0
+from_deg = 200.0
+spreading_s = 10.0
+
+[vessel]
+rao = "{ROOT / 'rao' / 'tanker' / 'tanker.4'}"
+hull = "{ROOT / 'hulls' / 'tanker.gdf'}"
+speed_kn = 6.0
+heading_deg = 30.0
+
+[vessel.points]
+bridge = [-100.0, 0.0, 30.0]
+bow = [120.0, 0.0, 12.0]
+
+[run]
+duration_s = 120.0
+dt_s = 0.1
+seed = 11
+"""
+"""The WAMIT tanker (RAOs and hull) at 6 kn in a small ocean: 120 s at dt 0.1 s, seed 11."""
+
+
+def write(tmp_path: Path, text: str, name: str = "scenario.toml") -> Path:
+    """``text`` written to ``tmp_path / name``; its path."""
+    path = tmp_path / name
+    path.write_text(text)
+    return path
+
+
+def cli(*args: str, cwd=None, timeout: float = 600, **kwargs) -> subprocess.CompletedProcess:
+    """``python -m marinesim *args`` in a process of its own, as a user runs it; its output as text."""
+    return subprocess.run([sys.executable, "-m", "marinesim", *args], capture_output=True, text=True, cwd=cwd,
+                          timeout=timeout, **kwargs)
 
 
 @pytest.fixture(scope="module")
@@ -26,6 +91,65 @@ def gl_context():
         pytest.skip(str(error))
     yield context
     context.release()
+
+
+@pytest.fixture(scope="module")
+def default():
+    """The shipped default scenario (configs/default.toml)."""
+    from marinesim.scenario import load_scenario
+
+    return load_scenario(DEFAULT)
+
+
+@pytest.fixture(scope="module")
+def underway(tmp_path_factory):
+    """The default scenario with the tanker at 14 kn (Fn 0.145): a Kelvin wake worth drawing."""
+    from marinesim.scenario import load_scenario
+
+    text = DEFAULT.read_text().replace("speed_kn = 4.0", "speed_kn = 14.0").replace('"../', f'"{ROOT.as_posix()}/')
+    path = tmp_path_factory.mktemp("scenario") / "underway.toml"
+    path.write_text(text)
+    return load_scenario(path)
+
+
+def offscreen(scenario, size=RENDER_SIZE, **options):
+    """An Offscreen view of ``scenario`` (the viewer's Session without a window); the calling test is
+    skipped where no EGL OpenGL 4.3 context can be made."""
+    from marinesim.gl import GraphicsError
+    from marinesim.render.offscreen import Offscreen
+    from marinesim.render.renderer import RenderOptions
+
+    solver = "on" if options.get("solver") else "off"
+    try:
+        return Offscreen(scenario, size, solver=solver, options=RenderOptions(**options))
+    except GraphicsError as error:
+        pytest.skip(f"no EGL OpenGL 4.3 here: {error}")
+
+
+def luminance(image: np.ndarray) -> np.ndarray:
+    """Rec. 709 luminance of an RGB image."""
+    return image.astype(float) @ [0.2126, 0.7152, 0.0722]
+
+
+def raw_wamit(path: Path) -> dict[tuple[float, float], np.ndarray]:
+    """(period, beta_deg) -> six complex values (RE + i IM) straight from the file's columns."""
+    rows = np.loadtxt(path)
+    out: dict[tuple[float, float], np.ndarray] = {}
+    for per, beta, mode, _, _, re, im in rows:
+        out.setdefault((per, beta), np.zeros(6, complex))[int(mode) - 1] = re + 1j * im
+    return out
+
+
+def synthetic_table():
+    """A table whose Re/Im are bilinear in omega and beta (so interpolation is exact)."""
+    from marinesim.vessel.rao import make_table
+
+    omega = np.linspace(0.2, 2.0, 10)
+    beta = np.radians(np.arange(0.0, 181.0, 15.0))
+    coefficient = np.array([0.3 + 0.1j, 0.2 - 0.4j, 1.0 + 0.2j, 0.02 - 0.01j, 0.03 + 0.02j, -0.01 + 0.005j])
+    values = (coefficient[None, None, :] * (1.5 - 0.5 * omega)[None, :, None]
+              * (1.0 + 0.3 * beta)[:, None, None])[None]
+    return make_table(omega, beta, [0.0], values, source="synthetic", source_format="synthetic"), coefficient
 
 
 @pytest.fixture(scope="session")
@@ -44,7 +168,8 @@ def close_angle_deg(a: float, b: float) -> float:
     return abs((a - b + 180.0) % 360.0 - 180.0)
 
 
-__all__ = ["DEFAULT", "ROOT", "close_angle_deg", "math"]
+__all__ = ["DEFAULT", "RENDER_SIZE", "ROOT", "SEA_SCENARIO", "VESSEL_SCENARIO", "cli", "close_angle_deg", "luminance",
+           "offscreen", "raw_wamit", "synthetic_table", "write"]
 
 
 @pytest.fixture(scope="session", autouse=True)

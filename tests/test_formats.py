@@ -17,6 +17,7 @@ import numpy as np
 import pytest
 import trimesh
 
+from conftest import ROOT
 from marinesim import formats
 from marinesim.errors import FileFormatError, ParameterError
 from marinesim.hull import hydrostatics, load_hull, load_visual_mesh, wigley_hull
@@ -24,7 +25,6 @@ from marinesim.vessel import read_rao
 from marinesim.vessel.native import write_native
 from marinesim.vessel.read import OPTION_LIMITS
 
-ROOT = Path(__file__).resolve().parents[1]
 TANKER_RAO = ROOT / "rao" / "tanker" / "tanker.4"
 S175 = ROOT / "rao" / "s175" / "input.re1"
 WIGLEY = ROOT / "hulls" / "wigley.stl"
@@ -32,8 +32,9 @@ WIGLEY = ROOT / "hulls" / "wigley.stl"
 
 def capytaine_dataset(folder: Path) -> Path:
     """A 40 x 10 m barge at 3 m draft, solved by Capytaine at three frequencies, as Capytaine writes it."""
-    capytaine = pytest.importorskip("capytaine")
-    xarray = pytest.importorskip("xarray")
+    import capytaine
+    import xarray
+
     mesh = capytaine.mesh_parallelepiped(size=(40.0, 10.0, 4.0), resolution=(6, 2, 2), center=(0.0, 0.0, -1.0))
     body = capytaine.FloatingBody(mesh=mesh, dofs=capytaine.rigid_body_dofs(rotation_center=(0, 0, 0)),
                                   center_of_mass=(0.0, 0.0, -0.5)).immersed_part()

@@ -13,7 +13,9 @@ from pathlib import Path
 
 import pytest
 
-PACKAGE = Path(__file__).resolve().parents[1] / "marinesim"
+from conftest import ROOT
+
+PACKAGE = ROOT / "marinesim"
 LAYERS = (
     {"__init__", "errors", "constants", "angles", "atomic", "cache", "tokens", "recent", "progress",
      "resources", "formats", "pose", "gl"},

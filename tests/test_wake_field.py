@@ -1,19 +1,17 @@
 """The far-field Kelvin wake: its geometry, its phase and amplitude, the FFT against direct
-quadrature, the cache, the files and the command.
+quadrature, the cache and the files. The `marinesim wake` command is in test_cli_wake.py.
 
 Independent references: Kelvin's half-angle asin(1/3) and transverse wavelength 2 pi U^2 / g
 (dispersion, not this code), the stationary-phase limit of the centreline wave behind a lone
 source sheet, and direct summation of the same integral.
 """
 
-import json
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
 
-from marinesim.cli import main
+from conftest import ROOT
 from marinesim.errors import FileFormatError, ParameterError
 from marinesim.hull import Surface, hydrostatics, load_hull, wigley_hull
 from marinesim.wake import tuck_amplitude, wavenumber
@@ -21,7 +19,6 @@ from marinesim.wake.cache import cached_wake
 from marinesim.wake.compute import Wake, WakeGrid, compute_wake
 from marinesim.wake.field import wake_spectrum
 
-ROOT = Path(__file__).resolve().parent.parent
 G = 9.80665
 KELVIN_DEG = math.degrees(math.asin(1 / 3))
 
@@ -152,39 +149,3 @@ def test_cache_and_file_round_trip(tmp_path, wigley):
     loaded = Wake.load(path)
     assert np.array_equal(loaded.elevation, first.elevation) and np.array_equal(loaded.x, first.x)
     assert loaded.info == first.info
-
-
-def test_wake_command(tmp_path, capsys):
-    out, plot = tmp_path / "wake.npz", tmp_path / "wake.png"
-    code = main(["wake", str(ROOT / "hulls" / "wigley.stl"), "--speed-kn", "25", "--nx", "1024", "--ny", "512",
-                 "--out", str(out), "--plot", str(plot), "--json", "--quiet"])
-    assert code == 0
-    report = json.loads(capsys.readouterr().out)
-    for key in ("speed_m_s", "froude", "wave_resistance_N", "kelvin_half_angle_deg", "seconds"):
-        assert key in report
-    assert report["speed_m_s"] == pytest.approx(25 * 1852 / 3600)
-    assert report["froude"] == pytest.approx(report["speed_m_s"] / math.sqrt(G * 100.0), rel=1e-3)
-    assert Wake.load(out).elevation.shape == (512, 1024) and plot.stat().st_size > 10_000
-
-
-@pytest.mark.parametrize("args, message", [
-    (["--speed-kn", "0"], "speed"),
-    (["--speed-kn", "nan"], "speed"),
-    (["--speed-kn", "12", "--draft", "-1"], "draft"),
-    (["--speed-kn", "12", "--units", "mm"], "units='m'"),
-    (["--speed-kn", "12", "--scale", "0"], "scale must be > 0"),
-    (["--speed-kn", "12", "--nx", "8"], "nx must be >= 16"),
-    (["--speed-kn", "12", "--spacing", "30"], "cannot hold the transverse waves"),
-    (["--speed-kn", "12,x"], "--speed-kn must be comma-separated knots"),
-])
-def test_wake_command_refuses_bad_input(args, message, capsys):
-    code = main(["wake", str(ROOT / "hulls" / "wigley.stl"), *args, "--quiet"])
-    err = capsys.readouterr().err
-    assert code == 2 and message in err and "Traceback" not in err and len(err.strip().splitlines()) == 1
-
-
-def test_hull_command(capsys):
-    assert main(["hull", str(ROOT / "hulls" / "box_barge.stl"), "--json"]) == 0
-    report = json.loads(capsys.readouterr().out)
-    assert report["volume_m3"] == pytest.approx(100 * 20 * 5, rel=1e-6)
-    assert report["waterplane_area_m2"] == pytest.approx(100 * 20, rel=1e-6)

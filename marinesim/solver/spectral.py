@@ -79,7 +79,7 @@ def sponge(size: int, width: int, cell: float, g: float, dt: float) -> np.ndarra
 
 def sponge_rate(width: int, cell: float, g: float) -> float:
     """Peak absorption rate (1/s) of a sponge ``width`` cells wide: half the frequency of a wave as
-    long as the sponge. Measured with the packets of tests/test_solver.py (256 cells, sponge 32):
+    long as the sponge. Measured with the packets of tests/test_solver_local.py (256 cells, sponge 32):
     amplitude reflected 0.02 / 0.06 / 0.2 / 1.2 % and let through to the far side 0 / 0.02 / 0.2 /
     1.0 % for waves 4 / 8 / 16 / 32 cells long; waves twice the sponge width reflect 15 % and pass
     6 %. Twice this rate reflects 6 % at the sponge width (the ramp looks like a wall); half of it

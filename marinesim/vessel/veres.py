@@ -4,7 +4,7 @@ Layout: six title lines; ``RHO G``; ``LPP B T``; ``LCG VCG``; ``NVEL NHEAD NFREQ
 for each speed ``VEL SINK TRIM XMTN ZMTN`` and, for each heading, ``HEAD``, then for each
 frequency ``FREQ`` followed by NDOF lines ``I RE IM``.
 
-The source convention, established from the files in ``rao/`` (``tests/test_rao_readers.py``
+The source convention, established from the files in ``rao/`` (``tests/test_vessel_readers.py``
 repeats each check on the S175 and the supply vessel):
 
 * ``FREQ`` is the **wave** frequency in rad/s, the same list at every speed. At the lowest

@@ -1,44 +1,18 @@
-"""Scenario files: validated before anything runs; `marinesim run` writes reproducible files."""
+"""Scenario files (marinesim.scenario.model): validated before anything runs, each bad value refused
+in one line naming the file, the key, the range and the unit; the vessel section and its meshes."""
 
-import json
 import math
 import os
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
-import pandas as pd
 import pytest
 
+from conftest import DEFAULT, ROOT, SEA_SCENARIO as GOOD, VESSEL_SCENARIO as SCENARIO, write
 from marinesim.errors import MarinesimError, ScenarioError
 from marinesim.hull import load_hull
 from marinesim.scenario import load_scenario, reference, with_run
 from marinesim.scenario.model import with_reference
-from marinesim.session.assembly import VARIANCE_FRACTION, Assembly
-
-ROOT = Path(__file__).resolve().parent.parent
-DEFAULT = ROOT / "configs" / "default.toml"
-
-GOOD = """
-[[sea]]
-type = "jonswap"
-hs_m = 3.0
-tp_s = 9.0
-from_deg = 45.0
-spreading_s = 10.0
-
-[run]
-duration_s = 60.0
-dt_s = 0.5
-seed = 3
-"""
-
-
-def write(tmp_path: Path, text: str) -> Path:
-    path = tmp_path / "scenario.toml"
-    path.write_text(text)
-    return path
 
 
 def test_default_scenario_is_a_north_sea_state():
@@ -82,57 +56,6 @@ def test_bad_scenarios_are_refused_naming_the_key(tmp_path, change, key):
 def test_scenario_without_sea_is_refused(tmp_path):
     with pytest.raises(ScenarioError, match="at least one"):
         load_scenario(write(tmp_path, "[run]\nseed = 1\n"))
-
-
-def run_cli(*args, cwd):
-    return subprocess.run([sys.executable, "-m", "marinesim", "run", *args], capture_output=True, text=True,
-                          cwd=cwd, timeout=600)
-
-
-def test_run_writes_reproducible_files_that_match_the_surface(tmp_path):
-    scenario_path = write(tmp_path, GOOD)
-    first = run_cli(str(scenario_path), "--out", "a", "--quiet", cwd=tmp_path)
-    assert first.returncode == 0, first.stderr
-    assert "running headless" in first.stdout and "wave_elevation.csv" in first.stdout
-    second = run_cli(str(scenario_path), "--out", "b", "--quiet", cwd=tmp_path)
-    assert second.returncode == 0
-    a, b = tmp_path / "a", tmp_path / "b"
-    # same scenario and seed: byte-identical CSV
-    assert (a / "wave_elevation.csv").read_bytes() == (b / "wave_elevation.csv").read_bytes()
-    frame = pd.read_csv(a / "wave_elevation.csv")
-    assert list(frame.columns) == ["time_s", "wave_elevation_m"]
-    assert len(frame) == 121 and frame["time_s"].iloc[-1] == pytest.approx(60.0)
-    sidecar = json.loads((a / "wave_elevation.csv.json").read_text())
-    assert sidecar["seed"] == 3 and len(sidecar["scenario_sha256"]) == 64
-    # what the CSV holds is the drawn surface: at t = 0 the summed FFT tiles at the origin
-    scenario = load_scenario(scenario_path)
-    ocean = Assembly(scenario).ocean
-    drawn = sum(float(f.height[0, 0]) for f in ocean.fields(0.0))
-    sigma = scenario.sea.hs / 4
-    assert frame["wave_elevation_m"].iloc[0] == pytest.approx(drawn, abs=0.1 * sigma)
-    assert (a / "sea.png").stat().st_size > 20_000 and (a / "wave_elevation.png").stat().st_size > 10_000
-
-
-def test_run_time_series_has_the_sea_states_variance(tmp_path):
-    # a long record at one point: time-averaged eta^2 = sum |a|^2 / 2 of the kept components
-    text = GOOD.replace("duration_s = 60.0", "duration_s = 3600.0")
-    scenario = load_scenario(write(tmp_path, text))
-    ocean = Assembly(scenario).ocean
-    components = ocean.components(variance_fraction=VARIANCE_FRACTION)
-    times = np.arange(0.0, 3600.0, 0.5)
-    series = components.elevation(0.0, 0.0, times)
-    assert np.var(series) == pytest.approx(components.variance, rel=0.1)  # 1 h record: ~5% scatter
-    assert components.variance >= VARIANCE_FRACTION * ocean.components().variance
-
-
-def test_run_with_bad_scenario_exits_2_with_one_line(tmp_path):
-    path = write(tmp_path, GOOD.replace("hs_m = 3.0", "hs_m = -1.0"))
-    result = run_cli(str(path), cwd=tmp_path)
-    assert result.returncode == 2 and "Traceback" not in result.stderr
-    assert len(result.stderr.strip().splitlines()) == 1 and "sea[0]" in result.stderr
-    assert not (tmp_path / "out").exists()  # refused before anything ran
-    missing = run_cli(str(tmp_path / "nope.toml"), cwd=tmp_path)
-    assert missing.returncode == 2 and "no such scenario" in missing.stderr
 
 
 BARGE_VISUAL = ROOT / "hulls" / "barge_visual.glb"
@@ -270,3 +193,36 @@ def test_run_overrides_are_checked_by_the_model(tmp_path, overrides, message):
     assert str(info.value) == message
     run = with_run(scenario, duration=30.0, seed=4).run
     assert (run.duration_s, run.dt_s, run.seed) == (30.0, 0.5, 4)
+
+
+@pytest.mark.parametrize("change,message", [
+    (("speed_kn = 6.0", "speed_kn = 6.0\ndraft_m = 3.0"), "vessel.draft_m: unknown key"),
+    (("speed_kn = 6.0", "speed_kn = 45.0"), "vessel.speed_kn: must be in 0..40 kn"),
+    (("heading_deg = 30.0", "heading_deg = 400.0"), "vessel.heading_deg: must be a compass heading"),
+    (("bow = [120.0, 0.0, 12.0]", "bow = [120.0, 0.0]"), r"vessel.points.bow: expected \[x, y, z\]"),
+    (("tanker.4\"", "nothere.4\""), "vessel.rao: .*nothere.4: no such file"),
+    (("speed_kn = 6.0", "speed_kn = 6.0\nroll_damping_pct = 150.0"), "vessel.roll_damping_pct: must be in 0..100"),
+    (("speed_kn = 6.0", "speed_kn = 6.0\nroll_damping_pct = 5.0"), "vessel.rao: extra roll damping applies to "
+                                                                  "Capytaine datasets only"),
+    (("speed_kn = 6.0", "speed_kn = 6.0\nulen_m = -2.0"), "vessel.ulen_m: must be > 0"),
+    (("bow = [120.0, 0.0, 12.0]", "bow = [120.0, 0.0, 12.0]\n\"bad name\" = [0.0, 0.0, 0.0]"),
+     "vessel.points.bad name: a point name must be a plain identifier"),
+    (("hull = ", "# hull = "), None),
+    (("speed_kn = 6.0", "speed_kn = 6.0\nhull_units = \"mm\""), "vessel.hull: .*units='m' gives 256.9 m"),
+    (("speed_kn = 6.0", "speed_kn = 6.0\nhull_draft_m = -1.0"), "vessel.hull_draft_m: must be > 0 m"),
+    (("speed_kn = 6.0", "speed_kn = 6.0\nwake_speeds_kn = [0.0]"), "vessel.wake_speeds_kn: expected speeds"),
+    (("hull = ", "hull_trim_deg = 1.0\n# hull = "), "vessel.hull_trim_deg: given without vessel.hull"),
+])
+def test_bad_vessel_sections_are_refused_with_the_key(tmp_path, change, message):
+    path = write(tmp_path, SCENARIO.replace(*change))
+    if message is None:
+        assert load_scenario(path).vessel.hull_path is None
+        return
+    with pytest.raises(ScenarioError, match=message):
+        load_scenario(path)
+
+
+def test_speed_outside_a_multi_speed_table_is_refused(tmp_path):
+    text = SCENARIO.replace(str(ROOT / "rao" / "tanker" / "tanker.4"), str(ROOT / "rao" / "s175" / "input.re1"))
+    with pytest.raises(ScenarioError, match="22 kn is outside the RAO table's speeds 0..20 kn"):
+        load_scenario(write(tmp_path, text.replace("speed_kn = 6.0", "speed_kn = 22.0")))

@@ -33,7 +33,7 @@ from marinesim.sea.dispersion import omega_from_k
 from marinesim.sea.fft import available_cpus
 from marinesim.sea.summary import surface_summary
 from marinesim.sea.synthesis import Lane, _jacobian, _pack_cells
-from tests.conftest import close_angle_deg
+from conftest import close_angle_deg
 
 FIELD_NAMES = ("height", "displacement_x", "displacement_y", "slope_x", "slope_y")
 SAMPLE_NAMES = ("elevation", "displacement_x", "displacement_y", "slope_x", "slope_y")

@@ -11,53 +11,18 @@ from __future__ import annotations
 import dataclasses
 import math
 import re
-import threading
-import tracemalloc
-from pathlib import Path
 
 import numpy as np
 import pandas as pd
 import pytest
 
+from conftest import DEFAULT, RENDER_SIZE as SIZE, ROOT, luminance, offscreen
 from marinesim.cli import main
-from marinesim.constants import KNOT
-from marinesim.errors import ParameterError
-from marinesim.gl import GraphicsError
+from marinesim.pose import Pose
 from marinesim.render.camera import BridgeCamera
 from marinesim.render.offscreen import Offscreen, render_video
-from marinesim.render.renderer import RenderOptions
 from marinesim.scenario import load_scenario
-from marinesim.sea.cascades import cell_variances
 from marinesim.sea.seastate import scaled_sea
-from marinesim.session.assembly import Assembly
-from marinesim.session.timeline import PREPARE_S, Simulation
-from marinesim.pose import Pose
-
-ROOT = Path(__file__).resolve().parents[1]
-DEFAULT = ROOT / "configs" / "default.toml"
-SIZE = (320, 180)
-
-
-@pytest.fixture(scope="module")
-def default():
-    return load_scenario(DEFAULT)
-
-
-@pytest.fixture(scope="module")
-def underway(tmp_path_factory):
-    """The default scenario with the tanker at 14 kn (Fn 0.145): a Kelvin wake worth drawing."""
-    text = DEFAULT.read_text().replace("speed_kn = 4.0", "speed_kn = 14.0").replace('"../', f'"{ROOT.as_posix()}/')
-    path = tmp_path_factory.mktemp("scenario") / "underway.toml"
-    path.write_text(text)
-    return load_scenario(path)
-
-
-def offscreen(scenario, size=SIZE, **options) -> Offscreen:
-    solver = "on" if options.get("solver") else "off"
-    try:
-        return Offscreen(scenario, size, solver=solver, options=RenderOptions(**options))
-    except GraphicsError as error:
-        pytest.skip(f"no EGL OpenGL 4.3 here: {error}")
 
 
 def horizon_row(view: Offscreen) -> float:
@@ -74,10 +39,6 @@ def projected_box(view: Offscreen, mesh) -> tuple[float, float, float, float]:
     pose = scene.sim.pose()
     projected = scene.camera.eye(pose).project(pose.world(mesh.bounds()), view.size)[:, :2]
     return (*projected.min(axis=0), *projected.max(axis=0))
-
-
-def luminance(image: np.ndarray) -> np.ndarray:
-    return image.astype(float) @ [0.2126, 0.7152, 0.0722]
 
 
 def test_every_shader_compiles_and_frames_render_at_two_sizes_and_after_a_resize(underway):
@@ -205,147 +166,6 @@ def test_a_ten_second_video_has_its_frames_and_its_csv_equals_marinesim_export(d
     assert not list(tmp_path.glob(".*part*")), "a temporary file was left behind"
     assert main(["export", str(DEFAULT), "--out", str(tmp_path / "export.csv"), "--duration", "10", "--quiet"]) == 0
     pd.testing.assert_frame_equal(pd.read_csv(result.motions), pd.read_csv(tmp_path / "export.csv"))
-
-
-def test_live_changes_blend_smoothly_and_do_not_depend_on_the_frame_rate(default):
-    """A course and sea change at t = 5 s: the same poses at 60 and at 7 frames/s; no jump in heave or heading."""
-    def run(dt: float) -> Simulation:
-        sim = Simulation(default, wake=False)
-        while sim.time < 5.0 - 1e-9:
-            sim.advance(min(dt, 5.0 - sim.time))
-        sim.change(hs_factor=1.5, heading_deg=200.0, speed_kn=8.0, ramp_s=10.0)
-        while sim.time < 30.0 - 1e-9:
-            sim.advance(min(dt, 30.0 - sim.time))
-        return sim
-    fast, slow = run(1 / 60), run(1 / 7)
-    times = np.arange(0.0, 30.0, 0.05)
-    assert np.allclose(fast.frame(times)["heave_m"], slow.frame(times)["heave_m"], atol=1e-9)
-    a, b = fast.pose(17.3), slow.pose(17.3)  # the change starts at 5.5 s, up to the rounding of summed frame times
-    assert np.allclose([a.x, a.y, a.heading, *a.motion], [b.x, b.y, b.heading, *b.motion], rtol=0, atol=1e-9)
-    heave = fast.frame(times)["heave_m"]
-    assert np.abs(np.diff(heave)).max() < 0.1, "heave jumps during the blend"
-    headings = np.unwrap([fast.pose(t).heading for t in times])
-    assert np.abs(np.diff(headings)).max() < math.radians(1.0)
-    assert math.degrees(headings[-1]) % 360 == pytest.approx(250.0, abs=1e-6)  # compass 200 = math 250
-    assert fast.sea.hs == pytest.approx(1.5 * default.sea.hs, rel=1e-9)
-
-
-def test_changes_asked_for_during_a_blend_add_up(default):
-    """Two presses of 'waves up' and 'speed up' while a change blends: x1.21 and +2 kn, not x1.1 and +1."""
-    sim = Simulation(default, wake=False)
-    speed_kn = default.vessel.speed_kn
-    for _ in range(2):
-        sim.change(hs_factor=1.1, ramp_s=5.0)
-        sim.change(speed_kn=sim.speed_m_s / KNOT + 1.0, ramp_s=5.0)
-    assert sim.speed_m_s / KNOT == pytest.approx(speed_kn + 2.0)   # the waiting changes already count
-    sim.advance(30.0)
-    assert sim.sea.hs == pytest.approx(1.21 * default.sea.hs, rel=1e-9)
-    assert sim.legs[-1].track.speed / KNOT == pytest.approx(speed_kn + 2.0)
-    assert len(sim.legs) == 5, "each change should have started in turn"
-
-
-def test_a_sea_change_is_prepared_off_the_frame_thread_and_starts_at_a_fixed_time(default, monkeypatch):
-    """The costly part of a sea change (every cell's variance, 0.1-0.2 s at 4 x 256^2) runs on the
-    change's worker while frames go on; on the frame thread it would stall the picture at each key
-    press. The change starts PREPARE_S after it was asked for, however fast the worker was."""
-    threads = []
-
-    def variances(*args):
-        threads.append(threading.current_thread().name)
-        return cell_variances(*args)
-
-    monkeypatch.setattr("marinesim.sea.ocean.cell_variances", variances)
-    sim = Simulation(default, wake=False)
-    sim.advance(1.0)
-    threads.clear()
-    sim.change(hs_factor=1.3, ramp_s=4.0)
-    assert sim.sea.hs == pytest.approx(1.3 * default.sea.hs)  # the HUD shows what was asked for at once
-    assert len(sim.legs) == 1
-    while len(sim.legs) == 1:
-        sim.advance(1 / 60)
-    assert sim.legs[-1].start == pytest.approx(1.0 + PREPARE_S, abs=1e-12)
-    assert threads and all(name.startswith("sea-change") for name in threads), threads
-    sim.advance(10.0)
-    assert sim.ocean.components(sim.time).variance == pytest.approx(1.3**2 * Assembly(default).ocean.components().variance,
-                                                                    rel=1e-9)
-    sim.close()
-
-
-def test_a_sea_change_the_ocean_cannot_carry_is_refused_when_asked(underway, tmp_path):
-    """A regular wave's period change needs a tile the ocean does not have: the refusal must come
-    from change() (the viewer shows it), not half a second later from the frame loop."""
-    text = underway.path.read_text() + '\n[[sea]]\ntype = "regular"\nheight_m = 1.0\nperiod_s = 8.0\nfrom_deg = 90.0\n'
-    path = tmp_path / "regular.toml"
-    path.write_text(text)
-    sim = Simulation(load_scenario(path), wake=False)
-    with pytest.raises(ParameterError, match="cannot carry a regular wave of 8.4 s"):
-        sim.change(tp_factor=1.05, ramp_s=5.0)
-    sim.advance(1.0)  # nothing was left waiting
-    assert len(sim.legs) == 1 and sim.sea.tp == pytest.approx(load_scenario(path).sea.tp)
-    sim.change(hs_factor=1.1, ramp_s=5.0)  # heights can change
-    sim.advance(6.0)
-    assert len(sim.legs) == 2
-
-
-def test_bad_change_arguments_are_refused_when_asked(default):
-    """A sea change starts PREPARE_S later; its ramp time must still be refused by change(),
-    where the viewer shows the message, and not by a later frame, which would lose the change."""
-    sim = Simulation(default, wake=False)
-    for ramp_s in (0.0, -1.0, math.nan):
-        with pytest.raises(ParameterError, match="ramp time"):
-            sim.change(hs_factor=1.2, ramp_s=ramp_s)
-    sim.advance(2.0)
-    assert len(sim.legs) == 1 and sim.sea.hs == pytest.approx(default.sea.hs)
-    sim.change(speed_kn=6.0, ramp_s=0.0)  # a speed change may be instant
-    assert sim.speed_m_s / KNOT == pytest.approx(6.0) and len(sim.legs) == 2
-
-
-def test_a_long_session_of_changes_keeps_memory_flat_and_the_past_exact(default):
-    """Twenty sea and speed changes, as an instructor makes in a training session: memory stays
-    flat (each change used to keep its sea's amplitude grid and the ship's response to it, 10 MB
-    at the default 4 x 256^2), and motions at times of the first change, whose states were since
-    dropped, come back to the same bits."""
-    sim = Simulation(default, wake=False)
-    sim.advance(2.0)
-    sim.change(hs_factor=1.2, speed_kn=6.0, ramp_s=1.0)  # starts at 2.5 s (PREPARE_S), settled at 3.5 s
-    sim.advance(2.0)
-    times = np.array([3.0, 3.75])  # blending into the first change, then settled in it
-    past = sim.frame(times)
-    tracemalloc.start()
-    held = []
-    for i in range(20):
-        sim.advance(2.5)
-        sim.change(hs_factor=0.9 if i % 2 else 1.1, speed_kn=5.0 + i % 3, ramp_s=2.0)
-        held.append(tracemalloc.get_traced_memory()[0] / 2**20)
-    tracemalloc.stop()
-    assert held[-1] - held[4] < 5.0  # MB over 15 changes; kept, they were about 150
-    again = sim.frame(times)
-    for column, values in past.items():
-        np.testing.assert_array_equal(again[column], values, err_msg=column)
-    assert sim.sea.hs == pytest.approx(1.2 * 1.1**10 * 0.9**10 * default.sea.hs, rel=1e-9)
-
-
-def test_render_command_refuses_bad_sizes_and_writes_a_screenshot(tmp_path, capsys):
-    assert main(["render", str(DEFAULT), "--screenshot", str(tmp_path / "a.png"), "--size", "321x180"]) == 2
-    assert "--size" in capsys.readouterr().err
-    assert main(["render", str(DEFAULT), "--out", str(tmp_path / "a.avi")]) == 2
-    assert main(["render", str(DEFAULT), "--screenshot", str(tmp_path / "a.png"), "--time", "-1"]) == 2
-    assert main(["render", str(DEFAULT), "--out", str(tmp_path / "a.mp4"), "--seconds", "0"]) == 2
-    assert "--seconds" in capsys.readouterr().err
-    assert main(["render", str(DEFAULT), "--out", str(tmp_path / "a.mp4"), "--fps", "0"]) == 2
-    assert "--fps" in capsys.readouterr().err
-    both = ["--out", str(tmp_path / "a.mp4"), "--screenshot", str(tmp_path / "a.png")]
-    assert main(["render", str(DEFAULT), *both]) == 2
-    assert not list(tmp_path.iterdir()), "a refused command wrote something"
-    try:
-        code = main(["render", str(DEFAULT), "--screenshot", str(tmp_path / "shot.png"), "--size", "160x90",
-                     "--time", "5", "--camera", "bridge"])
-    except GraphicsError as error:
-        pytest.skip(str(error))
-    from PIL import Image
-
-    assert code == 0
-    assert Image.open(tmp_path / "shot.png").size == (160, 90)
 
 
 @pytest.fixture(scope="module")

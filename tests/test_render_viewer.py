@@ -15,13 +15,11 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from conftest import DEFAULT
 from marinesim.cli import main
 from marinesim.gl import GraphicsError
 from marinesim.render.controls import CHANGE_RAMP_S, HS_STEP, MAX_FRAME_S
 from marinesim.scenario import load_scenario
-
-DEFAULT = Path(__file__).resolve().parents[1] / "configs" / "default.toml"
-
 
 NO_WINDOW = 77
 

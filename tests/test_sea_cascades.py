@@ -16,12 +16,11 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from test_render import luminance, offscreen
 
+from conftest import DEFAULT, luminance, offscreen
 from marinesim.render.camera import FreeCamera
 from marinesim.scenario import load_scenario
 
-ROOT = Path(__file__).resolve().parents[1]
 SIZE = (640, 360)
 REPEATING_LIMIT = 0.6
 """Most of the picture's variance that may repeat with any one tile (one tile alone: 0.84)."""
@@ -103,7 +102,7 @@ def test_no_tile_period_shows_in_a_kilometre_of_sea(tmp_path, name):
     included."""
     path = {"chop": lambda: short_sea(tmp_path, tiles=4),
             "harbour chop at 512^2": lambda: short_sea(tmp_path, tiles=4, hs_m=0.8, tp_s=3.0, resolution=512),
-            "default": lambda: ROOT / "configs" / "default.toml"}[name]()
+            "default": lambda: DEFAULT}[name]()
     share = repeating_share(path)
     assert len(share) >= 2, f"fewer than two tiles fit the view: the test measures little ({share})"
     worst = max(share, key=share.get)

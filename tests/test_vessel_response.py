@@ -1,18 +1,19 @@
 """Vessel response: what the motions must be, from the RAOs, the waves and rigid-body kinematics."""
 
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
 
+from conftest import ROOT, raw_wamit, synthetic_table
 from marinesim.sea.build import wave_system
 from marinesim.sea.ocean import Ocean
 from marinesim.sea.seastate import SeaState
 from marinesim.vessel import DOFS, Response, Track, read_rao
 from marinesim.vessel.native import write_native
 
-from test_rao_readers import S175, TANKER, raw_wamit, synthetic_table
+TANKER = ROOT / "rao" / "tanker" / "tanker.4"
+S175 = ROOT / "rao" / "s175" / "input.re1"
 
 CSV_UNIT = np.array([1.0, 1.0, 1.0, math.pi / 180, math.pi / 180, math.pi / 180])  # CSV -> m, rad
 

@@ -10,7 +10,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import HealthCheck, given, settings, strategies as st
 
+from conftest import ROOT, raw_wamit, synthetic_table
 from marinesim.constants import KNOT
 from marinesim.errors import FileFormatError, MarinesimError, ParameterError
 from marinesim.vessel import read_rao
@@ -18,20 +20,10 @@ from marinesim.vessel.native import read_native, write_native
 from marinesim.vessel.rao import DOFS, make_table
 from marinesim.vessel.read import detect_format
 
-ROOT = Path(__file__).resolve().parent.parent
 TANKER = ROOT / "rao" / "tanker" / "tanker.4"
 SEMISUB = ROOT / "rao" / "semisub" / "semisub.4"
 S175 = ROOT / "rao" / "s175" / "input.re1"
 SUPPLY = ROOT / "rao" / "supply" / "input.re1"
-
-
-def raw_wamit(path: Path) -> dict[tuple[float, float], np.ndarray]:
-    """(period, beta_deg) -> six complex values (RE + i IM) straight from the file's columns."""
-    rows = np.loadtxt(path)
-    out: dict[tuple[float, float], np.ndarray] = {}
-    for per, beta, mode, _, _, re, im in rows:
-        out.setdefault((per, beta), np.zeros(6, complex))[int(mode) - 1] = re + 1j * im
-    return out
 
 
 @pytest.mark.parametrize("path", [TANKER, SEMISUB])
@@ -141,16 +133,6 @@ def test_veres_long_wave_limits_and_phases(path):
     assert np.angle(beam[3], deg=True) == pytest.approx(-90.0, abs=2.0)  # roll -i k sin(beta)
 
 
-def synthetic_table():
-    """A table whose Re/Im are bilinear in omega and beta (so interpolation is exact)."""
-    omega = np.linspace(0.2, 2.0, 10)
-    beta = np.radians(np.arange(0.0, 181.0, 15.0))
-    coefficient = np.array([0.3 + 0.1j, 0.2 - 0.4j, 1.0 + 0.2j, 0.02 - 0.01j, 0.03 + 0.02j, -0.01 + 0.005j])
-    values = (coefficient[None, None, :] * (1.5 - 0.5 * omega)[None, :, None]
-              * (1.0 + 0.3 * beta)[:, None, None])[None]
-    return make_table(omega, beta, [0.0], values, source="synthetic", source_format="synthetic"), coefficient
-
-
 def test_native_round_trip_keeps_every_value(tmp_path):
     table = read_rao(S175)
     path = tmp_path / "s175.csv"
@@ -258,9 +240,6 @@ def test_table_checks():
 
 
 # --- fuzz: whatever the bytes, a reader raises the project's error or returns a table ----------
-
-hypothesis = pytest.importorskip("hypothesis")
-from hypothesis import HealthCheck, given, settings, strategies as st  # noqa: E402
 
 
 def _fuzz(tmp_path_factory, source: Path, suffix: str, data) -> None:

@@ -6,14 +6,14 @@ k sin beta) and Capytaine's own ``post_pro.rao`` (in its exp(-i w t) convention:
 
 import math
 
+import capytaine
 import numpy as np
 import pytest
+import xarray
+from hypothesis import HealthCheck, given, settings, strategies as st
 
-capytaine = pytest.importorskip("capytaine")
-xarray = pytest.importorskip("xarray")
-
-from marinesim.errors import FileFormatError  # noqa: E402
-from marinesim.vessel import read_rao  # noqa: E402
+from marinesim.errors import FileFormatError, MarinesimError
+from marinesim.vessel import read_rao
 
 pytestmark = pytest.mark.slow
 
@@ -95,12 +95,6 @@ def test_dataset_without_coefficients_is_refused(barge, tmp_path):
     junk.write_bytes(b"CDF\x01 not really")
     with pytest.raises(FileFormatError, match="not a readable NetCDF dataset"):
         read_rao(junk)
-
-
-hypothesis = pytest.importorskip("hypothesis")
-from hypothesis import HealthCheck, given, settings, strategies as st  # noqa: E402
-
-from marinesim.errors import MarinesimError  # noqa: E402
 
 
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
