@@ -115,7 +115,7 @@ def test_sigterm_discards_the_new_pair_and_keeps_the_old_one(tmp_path, scenario)
 def test_a_second_writer_is_refused_while_the_first_runs(tmp_path, scenario):
     """Two exports to one file used to leave one's table beside the other's sidecar; now the second is refused
     with the first's process named, and the first's pair is whole."""
-    first = start_export(scenario, tmp_path, "--duration", "40000")
+    first = start_export(scenario, tmp_path, "--duration", "20000")
     second = export(scenario, tmp_path, "--out", "m.csv", "--seed", "2", "--duration", "10")
     assert second.returncode == 2 and f"another marinesim (process {first.pid}) is writing it" in second.stderr
     assert first.wait(timeout=600) == 0
