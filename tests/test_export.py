@@ -148,7 +148,7 @@ def test_cli_export_and_rao(tmp_path):
     (("speed_kn = 6.0", "speed_kn = 6.0\nroll_damping_pct = 150.0"), "vessel.roll_damping_pct: must be in 0..100"),
     (("speed_kn = 6.0", "speed_kn = 6.0\nroll_damping_pct = 5.0"), "vessel.rao: extra roll damping applies to "
                                                                   "Capytaine datasets only"),
-    (("speed_kn = 6.0", "speed_kn = 6.0\nulen_m = -2.0"), "vessel.ulen_m: must be > 0"),
+    (("speed_kn = 6.0", "speed_kn = 6.0\nulen_m = -2.0"), "vessel.ulen_m: must be in 0.01..1000 m"),
     (("bow = [120.0, 0.0, 12.0]", "bow = [120.0, 0.0, 12.0]\n\"bad name\" = [0.0, 0.0, 0.0]"),
      "vessel.points.bad name: a point name must be a plain identifier"),
     (("hull = ", "# hull = "), None),
