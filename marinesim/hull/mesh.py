@@ -179,6 +179,9 @@ def _check_length(vertices: np.ndarray, source: str, factor: float, what: str) -
     length = float(extent[0])
     low, high = LENGTH_LIMITS_M
     if low <= length <= high:
+        if extent.max() > high:
+            raise ParameterError(f"{source}: a {what} {extent.max():.4g} m along body {'xyz'[int(np.argmax(extent))]} "
+                                 f"is not a vessel (expected <= {high:g} m)")
         return
     hints = [f"units='{unit}' gives {length / factor * to_m:.4g} m" for unit, to_m in UNITS.items()
              if to_m != factor and MODEL_SCALE_BELOW_M <= length / factor * to_m <= 500.0]
