@@ -8,6 +8,7 @@ and exits with status 2; anything else is a bug and keeps its traceback.
 from __future__ import annotations
 
 import math
+import os
 
 
 class MarinesimError(Exception):
@@ -59,3 +60,30 @@ def require_at_least(name: str, value: float, minimum: float) -> float:
     if number < minimum:
         raise ParameterError(f"{name} must be >= {minimum:g}, got {value!r}")
     return number
+
+
+def require_within(name: str, value: float, low: float, high: float, unit: str = "") -> float:
+    """Return ``value`` as float, or raise naming ``name`` and the range unless ``low <= value <= high``."""
+    number = require_finite(name, value)
+    if not low <= number <= high:
+        unit = f" {unit}" if unit else ""
+        raise ParameterError(f"{name} must be in {low:g}..{high:g}{unit}, got {value!r}")
+    return number
+
+
+MEMORY_SHARE = 0.5
+"""The largest share of the machine's physical memory one allocation may plan to take."""
+
+
+def physical_memory() -> int:
+    """The machine's physical memory (bytes)."""
+    return os.sysconf("SC_PHYS_PAGES") * os.sysconf("SC_PAGE_SIZE")
+
+
+def require_memory(what: str, needed: float) -> None:
+    """Refuse, before allocating, ``what`` needing ``needed`` bytes beyond :data:`MEMORY_SHARE` of the
+    machine's physical memory; the message gives both numbers."""
+    available = MEMORY_SHARE * physical_memory()
+    if needed > available:
+        raise ParameterError(f"{what} would need {needed / 2**30:.3g} GiB of memory; this machine allows "
+                             f"{available / 2**30:.3g} GiB ({MEMORY_SHARE:.0%} of {physical_memory() / 2**30:.3g} GiB)")

@@ -14,6 +14,8 @@ in the file's own units and axes. A sniffer is ``sniffer(head: bytes) -> bool`` 
 from __future__ import annotations
 
 import importlib
+import os
+import stat
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
@@ -77,8 +79,10 @@ def detect(path: Path, kind: str, what: str | None = None) -> Format:
     """The format of the file ``path``: by its extension, else by the sniffers on its first bytes.
 
     :class:`FileFormatError` lists the supported formats when neither decides; ``what`` names the
-    file in that message (default: the kind's name, e.g. "RAO").
+    file in that message (default: the kind's name, e.g. "RAO"). A path that is not a regular file is
+    refused first (:func:`check_file`).
     """
+    check_file(path)
     candidates = formats(kind)
     suffix = path.suffix.lower()
     for fmt in candidates:
@@ -93,6 +97,22 @@ def detect(path: Path, kind: str, what: str | None = None) -> Format:
     tried = "" if sniffable else f" {path.suffix!r}"  # the extension alone decided: name it
     raise FileFormatError(path, None, f"unknown {what or KINDS[kind]} format{tried}; supported: "
                           + "; ".join(f"{f.name} ({f.description})" for f in candidates))
+
+
+def check_file(path: Path) -> None:
+    """Refuse (:class:`FileFormatError`) a path that is not a regular file (after symbolic links): a
+    missing file, a FIFO or device (reading it could block for ever), a folder, a symbolic-link loop, a
+    name with a NUL byte."""
+    try:
+        mode = os.stat(path).st_mode
+    except FileNotFoundError:
+        raise FileFormatError(path, None, "no such file") from None
+    except OSError as error:
+        raise FileFormatError(path, None, f"cannot read: {error.strerror}") from None
+    except ValueError:  # os.stat refuses a NUL byte in the name
+        raise FileFormatError(repr(str(path)), None, "a file name cannot contain a NUL byte") from None
+    if not stat.S_ISREG(mode):
+        raise FileFormatError(path, None, "not a regular file (a FIFO, device or folder): give a file")
 
 
 def reader(fmt: Format | str) -> Callable:

@@ -57,6 +57,11 @@ class Tokens:
             return self._items[self._next][0]
         return self._items[-1][0] if self._items else 1
 
+    @property
+    def remaining(self) -> int:
+        """How many tokens are left."""
+        return len(self._items) - self._next
+
     def at_end(self) -> bool:
         return self._next >= len(self._items)
 

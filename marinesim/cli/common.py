@@ -1,13 +1,31 @@
-"""What several commands share: progress bars, number lists, hull placement and view options."""
+"""What several commands share: strict JSON, progress bars, number lists, hull placement and view options."""
 
 from __future__ import annotations
 
 import argparse
+import json
+import math
 import sys
+from typing import Any
 
 from marinesim.errors import ParameterError, require_finite
 from marinesim.progress import Bar, Reporter
 from marinesim.render import CAMERAS
+
+
+def json_text(value: Any, indent: int | None = None) -> str:
+    """``value`` as strict JSON: a non-finite float (NaN, infinity) becomes null."""
+    return json.dumps(_finite(value), indent=indent, allow_nan=False)
+
+
+def _finite(value: Any) -> Any:
+    if isinstance(value, float):
+        return value if math.isfinite(value) else None
+    if isinstance(value, dict):
+        return {key: _finite(item) for key, item in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_finite(item) for item in value]
+    return value
 
 
 def bars(quiet: bool) -> Reporter | None:

@@ -3,10 +3,9 @@
 from __future__ import annotations
 
 import argparse
-import json
 from pathlib import Path
 
-from marinesim.cli.common import add_hull_options, hull_from_args
+from marinesim.cli.common import add_hull_options, hull_from_args, json_text
 from marinesim.formats import extensions
 
 
@@ -27,7 +26,7 @@ def handle(args: argparse.Namespace) -> int:
     hull = hull_from_args(args)
     statics = hydrostatics(hull)
     if args.json:
-        print(json.dumps(statics.as_dict() | {"triangles": len(hull.faces), "notes": list(hull.notes)}))
+        print(json_text(statics.as_dict() | {"triangles": len(hull.faces), "notes": list(hull.notes)}))
     else:
         print(f"{hull.source}: {len(hull.faces):,} triangles")
         print(format_hydrostatics(statics))

@@ -3,10 +3,9 @@
 from __future__ import annotations
 
 import argparse
-import json
 from pathlib import Path
 
-from marinesim.cli.common import number_list
+from marinesim.cli.common import json_text, number_list
 from marinesim.errors import require_finite
 from marinesim.formats import formats
 
@@ -39,7 +38,7 @@ def handle(args: argparse.Namespace) -> int:
     headings = number_list("--headings", args.headings, "degrees")
     table = read_rao(args.file, ulen=args.ulen, roll_damping=require_finite("roll damping", args.roll_damping_pct) / 100)
     report = rao_summary(table)
-    print(json.dumps(report) if args.json else format_rao_summary(report))
+    print(json_text(report) if args.json else format_rao_summary(report))
     if args.plot:
         with atomic_path(args.plot) as temp:
             plot_rao(table, temp, headings, require_finite("speed", args.speed_kn) * KNOT)

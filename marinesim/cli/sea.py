@@ -3,12 +3,15 @@
 from __future__ import annotations
 
 import argparse
-import json
 import math
 from pathlib import Path
 
-from marinesim.errors import ParameterError, require_finite
-from marinesim.sea.kinds import SPECTRUM_TYPES, SPREADING_TYPES
+from marinesim.cli.common import json_text
+from marinesim.errors import ParameterError
+from marinesim.sea.kinds import APPLIES_TO, SPECTRUM_TYPES, SPREADING_TYPES, refusal
+
+DEFAULTS = {"hs": 3.0, "tp": 9.0, "fetch_km": 100.0, "height": 2.0, "period": 10.0}
+"""The wave-system options' defaults, each given only to the kinds of wave system that take it."""
 
 
 def add(commands: argparse._SubParsersAction) -> None:
@@ -20,13 +23,13 @@ def add(commands: argparse._SubParsersAction) -> None:
     )
     g = p.add_argument_group("wave system")
     g.add_argument("--spectrum", choices=SPECTRUM_TYPES, default="jonswap", help="spectrum type (default jonswap)")
-    g.add_argument("--hs", type=float, default=3.0, help="significant wave height, m (default 3)")
-    g.add_argument("--tp", type=float, default=9.0, help="peak period, s (default 9)")
+    g.add_argument("--hs", type=float, help="significant wave height, m (default 3)")
+    g.add_argument("--tp", type=float, help="peak period, s (default 9)")
     g.add_argument("--gamma", type=float, help="JONSWAP peak enhancement (default: DNV from Hs, Tp)")
     g.add_argument("--u10", type=float, help="wind speed at 10 m, m/s: JONSWAP from wind and fetch")
-    g.add_argument("--fetch-km", type=float, default=100.0, help="fetch, km (with --u10; default 100)")
-    g.add_argument("--height", type=float, default=2.0, help="regular wave height, m (default 2)")
-    g.add_argument("--period", type=float, default=10.0, help="regular wave period, s (default 10)")
+    g.add_argument("--fetch-km", type=float, help="fetch, km (with --u10; default 100)")
+    g.add_argument("--height", type=float, help="regular wave height, m (default 2)")
+    g.add_argument("--period", type=float, help="regular wave period, s (default 10)")
     g.add_argument("--from-deg", type=float, default=0.0, help="compass direction waves come from (default 0)")
     g.add_argument("--spreading", choices=SPREADING_TYPES,
                    help="directional spreading (default cos2s with --spreading-s, else long-crested)")
@@ -59,11 +62,11 @@ def sea_from_args(args: argparse.Namespace):
     from marinesim.sea import SeaState
     from marinesim.sea.build import wave_system
 
-    systems = [wave_system(
-        args.spectrum, from_deg=args.from_deg, hs=args.hs, tp=args.tp, gamma=args.gamma, u10=args.u10,
-        fetch_km=args.fetch_km, height=args.height, period=args.period, spreading=args.spreading,
-        spreading_s=args.spreading_s, depth=args.depth,
-    )]
+    given = {name: getattr(args, name) for name in APPLIES_TO if getattr(args, name, None) is not None}
+    for name, value in DEFAULTS.items():
+        if name not in given and refusal(args.spectrum, name, given) is None:
+            given[name] = value
+    systems = [wave_system(args.spectrum, from_deg=args.from_deg, depth=args.depth, **given)]
     if args.swell_hs is not None:
         try:
             systems.append(wave_system("jonswap", from_deg=args.swell_from_deg, hs=args.swell_hs,
@@ -79,7 +82,6 @@ def handle(args: argparse.Namespace) -> int:
     from marinesim.sea import Ocean
     from marinesim.sea.summary import summary
 
-    require_finite("time", args.time)
     sea = sea_from_args(args)
     ocean = Ocean(sea, tile_count=args.tiles, resolution=args.resolution, seed=args.seed,
                   random_amplitudes=not args.deterministic_amplitudes, choppiness=args.choppiness)
@@ -92,7 +94,7 @@ def handle(args: argparse.Namespace) -> int:
         with atomic_path(args.plot) as temp:
             plot_sea(ocean, temp, args.time)
     if args.json:
-        print(json.dumps(report, indent=2))
+        print(json_text(report, indent=2))
     else:
         print(_format_summary(report))
     for label, path in (("spectrum", args.spectrum_csv), ("plot", args.plot)):

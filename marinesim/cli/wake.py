@@ -3,10 +3,9 @@
 from __future__ import annotations
 
 import argparse
-import json
 from pathlib import Path
 
-from marinesim.cli.common import add_hull_options, bars, hull_from_args, number_list
+from marinesim.cli.common import add_hull_options, bars, hull_from_args, json_text, number_list
 from marinesim.errors import ParameterError
 from marinesim.formats import extensions
 
@@ -80,7 +79,7 @@ def handle(args: argparse.Namespace) -> int:
         if not args.json:
             print(_format_wake(report, hull.notes if speed_kn == speeds[0] else ()))
     if args.json:
-        print(json.dumps(reports[0] if len(reports) == 1 else reports))
+        print(json_text(reports[0] if len(reports) == 1 else reports))
     return 0
 
 

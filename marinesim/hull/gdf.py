@@ -45,6 +45,9 @@ def read_gdf(path: str | Path) -> tuple[GdfHeader, np.ndarray, np.ndarray]:
     if count <= 0:
         raise FileFormatError(path, 4, f"NPAN must be > 0, got {count}")
     tokens = Tokens(path, lines, start=4)
+    if 12 * count > tokens.remaining:  # refused before the panels are allocated
+        raise FileFormatError(path, 4, f"file ends early: expected {12 * count} numbers for NPAN {count} panels "
+                                       f"(X Y Z of 4 vertices each), the file holds {tokens.remaining}")
     corners = np.empty((count, 4, 3))
     for p in range(count):
         for v in range(4):

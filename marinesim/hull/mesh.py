@@ -114,8 +114,6 @@ def load_mesh(path: str | Path, what: str) -> tuple[Path, trimesh.Trimesh]:
     file's own numbers and axes; :class:`FileFormatError` if there is no such file or its format is unknown
     (``what`` names the kind of mesh in the message)."""
     path = Path(path)
-    if not path.is_file():
-        raise FileFormatError(path, None, "no such file")
     return path, formats.reader(formats.detect(path, "mesh", what))(path)
 
 
@@ -141,6 +139,11 @@ def to_body_frame(vertices: np.ndarray, faces: np.ndarray, path: str | Path, *, 
     """
     if len(faces) == 0:
         raise FileFormatError(path, None, "the mesh has no faces")
+    if vertices.ndim != 2 or vertices.shape[1] != 3:
+        raise FileFormatError(path, None, f"expected vertices of 3 coordinates (x y z), got an array of shape "
+                                          f"{vertices.shape}")
+    if faces.ndim != 2 or faces.shape[1] != 3 or faces.min() < 0 or faces.max() >= len(vertices):
+        raise FileFormatError(path, None, f"expected triangles of 3 indices into the {len(vertices)} vertices")
     if not np.isfinite(vertices).all():
         bad = int(np.flatnonzero(~np.isfinite(vertices).all(axis=1))[0])
         raise FileFormatError(path, None, f"vertex {bad} is not finite: {vertices[bad].tolist()}")
@@ -176,6 +179,9 @@ def _check_length(vertices: np.ndarray, source: str, factor: float, what: str) -
     length = float(extent[0])
     low, high = LENGTH_LIMITS_M
     if low <= length <= high:
+        if extent.max() > high:
+            raise ParameterError(f"{source}: a {what} {extent.max():.4g} m along body {'xyz'[int(np.argmax(extent))]} "
+                                 f"is not a vessel (expected <= {high:g} m)")
         return
     hints = [f"units='{unit}' gives {length / factor * to_m:.4g} m" for unit, to_m in UNITS.items()
              if to_m != factor and MODEL_SCALE_BELOW_M <= length / factor * to_m <= 500.0]

@@ -17,12 +17,18 @@ from pydantic_core import PydanticCustomError, core_schema
 
 from marinesim.errors import ScenarioError
 from marinesim.hull.mesh import UNITS
-from marinesim.sea.build import SPECTRUM_TYPES, SPREADING_TYPES
+from marinesim.sea.kinds import (CHOPPINESS_RANGE, MAX_DEPTH_M, MAX_FETCH_KM, MAX_HS_M, MAX_RESOLUTION, MAX_U10_M_S,
+                                 MAX_WAVE_HEIGHT_M, PERIOD_RANGE_S, SPECTRUM_TYPES, SPREADING_TYPES, misplaced)
+from marinesim.vessel.wamit import ULEN_RANGE_M
 
 MAX_SPEED_KN = 40.0
 """The fastest a vessel goes in a scenario or in the viewer (kn)."""
 MAX_DURATION_S = 7 * 24 * 3600.0
 """The longest run (s): a week."""
+MIN_DT_S = 1e-3
+"""The shortest time step (s): a millisecond resolves any wave or ship motion many times over."""
+MAX_ROWS = 10**8
+"""The most time steps in one run (and rows in one export): some 30 GB of CSV."""
 
 
 @dataclass(frozen=True)
@@ -120,11 +126,13 @@ class Section(BaseModel):
 class OceanOptions(Section):
     """``[ocean]``: the FFT cascades that carry the sea."""
 
-    depth_m: Annotated[float | None, Quantity("m", gt=0.0)] = Field(None, description="water depth; absent: deep water")
+    depth_m: Annotated[float | None, Quantity("m", gt=0.0, le=MAX_DEPTH_M)] = Field(
+        None, description="water depth, deeper than the hull's draft; absent: deep water")
     tiles: Annotated[int, Quantity(ge=1, le=8)] = Field(4, description="FFT cascades (tiles)")
-    resolution: Annotated[int, Quantity(ge=16, what="a power of two", test=_power_of_two)] = Field(
+    resolution: Annotated[int, Quantity(ge=16, le=MAX_RESOLUTION, what="a power of two", test=_power_of_two)] = Field(
         256, description="samples per tile side")
-    choppiness: Annotated[float, Quantity()] = Field(1.0, description="horizontal displacement factor (0: none)")
+    choppiness: Annotated[float, Quantity(ge=CHOPPINESS_RANGE[0], le=CHOPPINESS_RANGE[1])] = Field(
+        1.0, description="horizontal displacement factor (0: none)")
 
 
 class SeaOptions(Section):
@@ -133,21 +141,39 @@ class SeaOptions(Section):
     type: Literal[SPECTRUM_TYPES] = Field(description="spectrum: jonswap, pm, tma, or a regular wave")
     from_deg: Annotated[float, Quantity("deg", ge=0.0, le=360.0, what="a compass direction")] = Field(
         description="compass direction the waves come from")
-    hs_m: Annotated[float | None, Quantity("m", gt=0.0)] = Field(
+    hs_m: Annotated[float | None, Quantity("m", gt=0.0, le=MAX_HS_M)] = Field(
         None, description="significant wave height (jonswap, pm, tma)")
-    tp_s: Annotated[float | None, Quantity("s", gt=0.0)] = Field(None, description="peak period (jonswap, pm, tma)")
+    tp_s: Annotated[float | None, Quantity("s", ge=PERIOD_RANGE_S[0], le=PERIOD_RANGE_S[1])] = Field(
+        None, description="peak period (jonswap, pm, tma)")
     gamma: Annotated[float | None, Quantity(ge=1.0, le=20.0)] = Field(
-        None, description="JONSWAP peak enhancement; absent: DNV's from hs_m, tp_s")
-    u10_m_s: Annotated[float | None, Quantity("m/s", gt=0.0)] = Field(
+        None, description="JONSWAP peak enhancement (jonswap, tma); absent: DNV's from hs_m, tp_s")
+    u10_m_s: Annotated[float | None, Quantity("m/s", gt=0.0, le=MAX_U10_M_S)] = Field(
         None, description="wind speed at 10 m: a JONSWAP from wind and fetch instead of hs_m, tp_s")
-    fetch_km: Annotated[float | None, Quantity("km", gt=0.0)] = Field(None, description="fetch, with u10_m_s")
+    fetch_km: Annotated[float | None, Quantity("km", gt=0.0, le=MAX_FETCH_KM)] = Field(
+        None, description="fetch, with u10_m_s")
     spreading: Literal[SPREADING_TYPES] | None = Field(
         None, description="directional spreading; absent: cos2s with spreading_s, else long-crested")
     spreading_s: Annotated[float | None, Quantity(gt=0.0, le=1000.0)] = Field(
         None, description="spreading exponent s (n for cos2n-halfplane)")
-    height_m: Annotated[float | None, Quantity("m", gt=0.0)] = Field(None, description="wave height (regular)")
-    period_s: Annotated[float | None, Quantity("s", gt=0.0)] = Field(None, description="wave period (regular)")
+    height_m: Annotated[float | None, Quantity("m", gt=0.0, le=MAX_WAVE_HEIGHT_M)] = Field(
+        None, description="wave height (regular)")
+    period_s: Annotated[float | None, Quantity("s", ge=PERIOD_RANGE_S[0], le=PERIOD_RANGE_S[1])] = Field(
+        None, description="wave period (regular)")
     phase_deg: Annotated[float, Quantity("deg")] = Field(0.0, description="phase at the origin (regular)")
+
+    @model_validator(mode="after")
+    def _keys_fit_the_type(self) -> SeaOptions:
+        given = {WAVE_PARAMETERS[key]: key for key in self.model_fields_set if key in WAVE_PARAMETERS}
+        wrong = misplaced(self.type, given)
+        if wrong is not None:
+            raise _refuse(given[wrong[0]], wrong[1].replace("u10", "u10_m_s"))
+        return self
+
+
+WAVE_PARAMETERS = {"hs_m": "hs", "tp_s": "tp", "gamma": "gamma", "u10_m_s": "u10", "fetch_km": "fetch_km",
+                   "spreading": "spreading", "spreading_s": "spreading_s", "height_m": "height",
+                   "period_s": "period", "phase_deg": "phase_deg"}
+"""``[[sea]]`` key -> the parameter of :func:`~marinesim.sea.build.wave_system` it gives."""
 
 
 class VesselOptions(Section):
@@ -158,7 +184,7 @@ class VesselOptions(Section):
         0.0, description="speed, within the RAO table's speeds if it has several")
     heading_deg: Annotated[float, Quantity("deg", ge=0.0, le=360.0, what="a compass heading")] = Field(
         0.0, description="compass heading the bow points to")
-    ulen_m: Annotated[float | None, Quantity("m", gt=0.0)] = Field(
+    ulen_m: Annotated[float | None, Quantity("m", ge=ULEN_RANGE_M[0], le=ULEN_RANGE_M[1])] = Field(
         None, description="WAMIT length scale ULEN; absent: from the .gdf beside the .4")
     roll_damping_pct: Annotated[float, Quantity("% of critical", ge=0.0, lt=100.0)] = Field(
         0.0, description="extra linear roll damping (Capytaine datasets)")
@@ -195,15 +221,23 @@ class RunOptions(Section):
     """``[run]``: how long, how fine, which seed."""
 
     duration_s: Annotated[float, Quantity("s", gt=0.0, le=MAX_DURATION_S)] = Field(600.0, description="run length")
-    dt_s: Annotated[float, Quantity("s", what="in (0, duration_s]", test=lambda dt: dt > 0.0)] = Field(
-        0.1, description="time step")
+    dt_s: Annotated[float, Quantity("s", ge=MIN_DT_S)] = Field(
+        0.1, description=f"time step, <= duration_s; at most {MAX_ROWS:.0e} steps per run")
     seed: Annotated[int, Quantity(ge=0)] = Field(0, description="random seed of the wave amplitudes")
 
     @model_validator(mode="after")
     def _step_within_run(self) -> RunOptions:
         if self.dt_s > self.duration_s:
             raise _refuse("dt_s", f"must be <= duration_s ({self.duration_s:g} s), got {self.dt_s!r}")
+        if self.steps > MAX_ROWS:
+            raise _refuse("dt_s", f"{self.duration_s:g} s at {self.dt_s!r} s is {self.steps:.3g} steps, more than "
+                                  f"{MAX_ROWS:.0e}: give a larger dt_s or a shorter duration_s")
         return self
+
+    @property
+    def steps(self) -> int:
+        """Time steps in the run, both ends included."""
+        return round(self.duration_s / self.dt_s) + 1
 
 
 def _at_least_one(systems: list[SeaOptions]) -> list[SeaOptions]:

@@ -11,11 +11,12 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from marinesim import formats
 from marinesim.constants import KNOT
-from marinesim.errors import MarinesimError, ScenarioError
+from marinesim.errors import FileFormatError, MarinesimError, ScenarioError
 from marinesim.hull import Hull, VisualMesh, load_hull, load_visual_mesh
-from marinesim.scenario.model import (HULL_OPTIONS, VISUAL_MESH_OPTIONS, OceanOptions, RunOptions, ScenarioFile,
-                                      VesselOptions, validate)
+from marinesim.scenario.model import (HULL_OPTIONS, VISUAL_MESH_OPTIONS, WAVE_PARAMETERS, OceanOptions, RunOptions,
+                                      ScenarioFile, VesselOptions, validate)
 from marinesim.sea.build import wave_system
 from marinesim.sea.seastate import SeaState
 from marinesim.vessel.rao import RaoTable
@@ -60,11 +61,14 @@ def load_scenario(path: str | Path) -> Scenario:
     """Read and validate ``path``; raise :class:`ScenarioError` naming the file and the key."""
     path = Path(path)
     try:
+        formats.check_file(path)
         data = tomllib.loads(path.read_text(encoding="utf-8"))
-    except FileNotFoundError:
-        raise ScenarioError(f"{path}: no such scenario file") from None
+    except FileFormatError as error:
+        raise ScenarioError(f"{error} (the scenario file)") from None
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as error:
         raise ScenarioError(f"{path}: not valid TOML: {error}") from None
+    except RecursionError:  # tomllib reads nested arrays and tables recursively
+        raise ScenarioError(f"{path}: not valid TOML: arrays or tables nested too deeply") from None
     try:
         return _build(path, validate(ScenarioFile, data))
     except ScenarioError as error:
@@ -82,16 +86,21 @@ def with_run(scenario: Scenario, duration: float | None = None, dt: float | None
 def _build(path: Path, file: ScenarioFile) -> Scenario:
     depth = math.inf if file.ocean.depth_m is None else file.ocean.depth_m
     systems = [_checked(f"sea[{i}]", lambda s=s: wave_system(
-        s.type, from_deg=s.from_deg, hs=s.hs_m, tp=s.tp_s, gamma=s.gamma, u10=s.u10_m_s, fetch_km=s.fetch_km,
-        height=s.height_m, period=s.period_s, phase_deg=s.phase_deg, spreading=s.spreading,
-        spreading_s=s.spreading_s, depth=depth)) for i, s in enumerate(file.sea)]
+        s.type, from_deg=s.from_deg, depth=depth,
+        **{WAVE_PARAMETERS[key]: getattr(s, key) for key in s.model_fields_set if key in WAVE_PARAMETERS}))
+        for i, s in enumerate(file.sea)]
     sea = _checked("ocean.depth_m", lambda: SeaState(tuple(systems), depth=depth))
     vessel = None if file.vessel is None else _vessel(path, file.vessel)
+    if vessel is not None and vessel.hull is not None:
+        draft = -float(vessel.hull.vertices[:, 2].min())
+        if depth <= draft:
+            raise ScenarioError(f"ocean.depth_m: {depth:g} m is not deeper than the hull's draft ({draft:.4g} m, "
+                                "vessel.hull): the keel would be on the sea bed")
     return Scenario(path.resolve(), sea, file.ocean, file.run, vessel)
 
 
 def _vessel(path: Path, options: VesselOptions) -> Vessel:
-    rao_path = (path.parent / options.rao).resolve()
+    rao_path = _checked("vessel.rao", lambda: _file(path, options.rao))
     rao = _checked("vessel.rao", lambda: read_rao(rao_path, ulen=options.ulen_m,
                                                    roll_damping=options.roll_damping_pct / 100.0))
     low, high = rao.speed_range
@@ -113,8 +122,16 @@ def _mesh(path: Path, options: VesselOptions, key: str, names: dict[str, str],
     (scenario key -> ``load`` option), or (None, None) without it."""
     if getattr(options, key) is None:
         return None, None
-    file = (path.parent / getattr(options, key)).resolve()
+    file = _checked(f"vessel.{key}", lambda: _file(path, getattr(options, key)))
     return file, _checked(f"vessel.{key}", lambda: load(file, **{names[n]: getattr(options, n) for n in names}))
+
+
+def _file(scenario: Path, name: str) -> Path:
+    """The file ``name`` (relative to the ``scenario`` file's folder), resolved once it is known to be a
+    regular file (:func:`~marinesim.formats.check_file`)."""
+    file = scenario.parent / name
+    formats.check_file(file)
+    return file.resolve()
 
 
 def _checked(where: str, build: Callable[[], Any]) -> Any:

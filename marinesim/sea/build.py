@@ -10,8 +10,8 @@ import math
 
 from marinesim.angles import wave_beta_from_compass
 from marinesim.constants import G
-from marinesim.errors import ParameterError, require_finite, require_positive
-from marinesim.sea.kinds import SPECTRUM_TYPES, SPREADING_TYPES
+from marinesim.errors import ParameterError, require_finite, require_positive, require_within
+from marinesim.sea.kinds import RANGES, SPECTRUM_TYPES, SPREADING_TYPES, misplaced
 from marinesim.sea.seastate import RegularWave, WaveSystem
 from marinesim.sea.spectra import Jonswap, JonswapFetch, PiersonMoskowitz, Tma
 from marinesim.sea.spreading import Cos2s, HalfPlaneCos2n, LongCrested, Mitsuyasu, Spreading
@@ -28,7 +28,7 @@ def wave_system(
     fetch_km: float | None = None,
     height: float | None = None,
     period: float | None = None,
-    phase_deg: float = 0.0,
+    phase_deg: float | None = None,
     spreading: str | None = None,
     spreading_s: float | None = None,
     depth: float = math.inf,
@@ -36,14 +36,25 @@ def wave_system(
     """One wave system. ``spreading`` defaults to cos2s when ``spreading_s`` is given, else none.
 
     ``u10`` (m/s, with ``fetch_km``) gives a JONSWAP spectrum from wind and fetch instead of
-    (hs, tp). ``depth`` (m) is needed by ``tma``.
+    (hs, tp). ``depth`` (m) is needed by ``tma``. A parameter the kind does not take
+    (:data:`~marinesim.sea.kinds.APPLIES_TO`) or outside its :data:`~marinesim.sea.kinds.RANGES` is refused.
     """
     if kind not in SPECTRUM_TYPES:
         raise ParameterError(f"wave type must be one of {', '.join(SPECTRUM_TYPES)}, got {kind!r}")
+    given = {name: value for name, value in (
+        ("hs", hs), ("tp", tp), ("gamma", gamma), ("u10", u10), ("fetch_km", fetch_km), ("height", height),
+        ("period", period), ("phase_deg", phase_deg), ("spreading", spreading), ("spreading_s", spreading_s))
+        if value is not None}
+    wrong = misplaced(kind, given)
+    if wrong is not None:
+        raise ParameterError(f"{wrong[0]} {wrong[1]}")
+    for name, value in given.items():
+        if name in RANGES:
+            require_within(name, value, *RANGES[name])
     beta = wave_beta_from_compass(require_finite("from_deg", from_deg))
     if kind == "regular":
         return RegularWave(_given("height", height), _given("period", period), beta,
-                           math.radians(require_finite("phase_deg", phase_deg)))
+                           math.radians(require_finite("phase_deg", phase_deg or 0.0)))
     if u10 is not None:
         if kind != "jonswap":
             raise ParameterError(f"wind speed u10 gives a JONSWAP spectrum, not {kind}")

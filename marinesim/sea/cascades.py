@@ -28,6 +28,7 @@ import numpy as np
 
 from marinesim.errors import ParameterError
 from marinesim.sea.dispersion import group_velocity, omega_from_k
+from marinesim.sea.kinds import MAX_RESOLUTION
 from marinesim.sea.seastate import RegularWave, SeaState, WaveSystem
 from marinesim.sea.spreading import LongCrested
 
@@ -97,8 +98,8 @@ def check_resolution(resolution: int) -> int:
     """Tiles need a power-of-two resolution of at least 16 (raises naming the value)."""
     if isinstance(resolution, bool) or not isinstance(resolution, (int, np.integer)):
         raise ParameterError(f"tile resolution N must be an integer power of two, got {resolution!r}")
-    if resolution < 16 or resolution & (resolution - 1):
-        raise ParameterError(f"tile resolution N must be a power of two >= 16, got {resolution}")
+    if resolution < 16 or resolution & (resolution - 1) or resolution > MAX_RESOLUTION:
+        raise ParameterError(f"tile resolution N must be a power of two in 16..{MAX_RESOLUTION}, got {resolution}")
     return int(resolution)
 
 

@@ -29,17 +29,23 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from marinesim.errors import ParameterError, require_at_least, require_finite, require_positive
+from marinesim.errors import (ParameterError, require_at_least, require_finite, require_memory, require_positive,
+                             require_within)
 from marinesim.recent import Recent
 from marinesim.sea.cascades import Tile, cell_variances, choose_tiles, regular_tile
 from marinesim.sea.dispersion import omega_from_k
 from marinesim.sea.fft import available_cpus
+from marinesim.sea.kinds import CHOPPINESS_RANGE
 from marinesim.sea.seastate import SeaState
 from marinesim.sea.synthesis import Lane, lane_workers
 
 FIELD_PAIRS = (("height", "displacement_xy"), ("displacement_x", "displacement_y"),
                ("slope_x", "slope_y"), ("1 + displacement_xx", "1 + displacement_yy"))
 """The real fields packed as (real, imaginary) parts of the four transforms per tile."""
+BYTES_PER_CELL = 160
+"""Memory per grid cell of every tile (bytes): noise and amplitudes (complex128, 32), the variance while it is
+computed (8), the per-cell states kept over ramps (32), the four packed complex64 transforms, their FFT work
+space and the Jacobian (~80), masks (~8)."""
 
 
 @dataclass(frozen=True)
@@ -146,6 +152,8 @@ class Ocean:
         if len(sizes) != 1:
             raise ParameterError(f"all tiles must share one resolution, got {sorted(sizes)}")
         self.resolution = sizes.pop()
+        require_memory(f"an ocean of {len(self.tiles)} tiles of {self.resolution}^2",
+                       BYTES_PER_CELL * len(self.tiles) * self.resolution**2)
         self._noise = np.stack([self._tile_noise(i, random_amplitudes) for i in range(len(self.tiles))])
         self._amplitude0, self.represented_m0 = self._amplitudes_for(sea)
         """Expected variance (m^2) the tiles carry of the initial sea: sum of cell variances."""
@@ -156,7 +164,7 @@ class Ocean:
         """Amplitudes of every cell after 0, 1, 2, ... ramps (the newest kept, older recomputed)."""
         self._used = self._amplitude0 != 0
         self._used |= _mirror(self._used)
-        self._choppiness = require_finite("choppiness", choppiness)
+        self._choppiness = require_within("choppiness", choppiness, *CHOPPINESS_RANGE)
         if threads is None:
             threads = len(available_cpus())
         if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)) or threads < 1:
@@ -268,7 +276,7 @@ class Ocean:
 
     @choppiness.setter
     def choppiness(self, value: float) -> None:
-        self._choppiness = require_finite("choppiness", value)
+        self._choppiness = require_within("choppiness", value, *CHOPPINESS_RANGE)
         self._multipliers = self._multipliers_for(self._qx, self._qy)
         for lane, (_, cells) in zip(self._lanes, self._lane_cells, strict=True):
             lane.set_multipliers(self._multipliers[:, cells])

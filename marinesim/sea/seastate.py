@@ -17,6 +17,7 @@ from scipy import optimize
 from marinesim.constants import G
 from marinesim.errors import ParameterError, require_finite, require_positive
 from marinesim.sea.dispersion import k_from_omega
+from marinesim.sea.kinds import MAX_DEPTH_M
 from marinesim.sea.spectra import Jonswap, JonswapFetch, Spectrum, spectral_moment
 from marinesim.sea.spreading import LongCrested, Spreading
 
@@ -77,7 +78,8 @@ class SeaState:
         object.__setattr__(self, "systems", tuple(self.systems))
         if not self.systems:
             raise ParameterError("a sea state needs at least one wave system")
-        require_positive("depth", self.depth, allow_infinite=True)
+        if require_positive("depth", self.depth, allow_infinite=True) > MAX_DEPTH_M and not math.isinf(self.depth):
+            raise ParameterError(f"depth must be <= {MAX_DEPTH_M:g} m (or infinite: deep water), got {self.depth!r}")
         for system in self.spectral_systems:
             spectrum_depth = getattr(system.spectrum, "depth", math.inf)
             if spectrum_depth != self.depth and not math.isinf(spectrum_depth):

@@ -14,7 +14,9 @@ import math
 import numpy as np
 
 from marinesim.angles import wave_compass_from_beta
+from marinesim.errors import require_within
 from marinesim.sea.dispersion import omega_from_k
+from marinesim.sea.kinds import MAX_TIME_S
 from marinesim.sea.ocean import Ocean
 
 TIME_STEP = 1e-3
@@ -33,7 +35,8 @@ def spectrum_summary(ocean: Ocean) -> dict:
 
 
 def surface_summary(ocean: Ocean, t: float = 0.0) -> dict:
-    """Hs, Tp, Tz and mean direction measured on the FFT fields at time ``t`` (s)."""
+    """Hs, Tp, Tz and mean direction measured on the FFT fields at time ``t`` (s, |t| <= :data:`MAX_TIME_S`)."""
+    require_within("time", t, -MAX_TIME_S, MAX_TIME_S, "s")
     before = [f.height.copy() for f in ocean.fields(t - TIME_STEP)]
     after = [f.height.copy() for f in ocean.fields(t + TIME_STEP)]
     fields = ocean.fields(t)

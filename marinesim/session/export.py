@@ -15,7 +15,8 @@ from typing import IO, Iterable
 
 import numpy as np
 
-from marinesim.errors import MarinesimError, ParameterError
+from marinesim.errors import MarinesimError, ParameterError, require_positive
+from marinesim.scenario.model import MAX_ROWS
 from marinesim.progress import Bar, task
 from marinesim.session.assembly import Assembly
 from marinesim.session.sidecar import run_sidecar, sha256, write_table
@@ -45,11 +46,16 @@ def export_motions(assembly: Assembly, out: Path, file_format: str | None = None
     dt to ``out`` (``file_format`` csv or parquet; default: from the extension, else csv), with its
     sidecar ``<out>.json``, as one unit."""
     out = Path(out)
+    if not out.name or out.name in (".", ".."):
+        raise ParameterError(f"the export needs a file name, got {str(out)!r}")
     file_format = table_format(out, file_format)
     scenario = assembly.scenario
     run = scenario.run
-    duration = run.duration_s if duration_s is None else duration_s
+    duration = run.duration_s if duration_s is None else require_positive("duration", duration_s)
     steps = int(round(duration / run.dt_s)) + 1
+    if steps > MAX_ROWS:
+        raise ParameterError(f"{duration:g} s at dt {run.dt_s:g} s is {steps:.3g} rows, more than {MAX_ROWS:.0e} "
+                             "per export")
 
     def write(temp: Path) -> None:
         blocks = assembly.response.frames(0.0, run.dt_s, steps)

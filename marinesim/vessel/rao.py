@@ -13,6 +13,8 @@ Outside the tabulated frequencies:
   limit ``L`` (:func:`long_wave_limit`) plus the table's deviation from it, fading as w^2;
 * above the highest, the last value tapered by ``cos^2`` to zero at 1.5 times that frequency.
 
+A table of one frequency (a regular-wave result) is extended the same way from that frequency.
+
 Speeds outside a multi-speed table are clamped to its ends (scenarios refuse them up front).
 """
 
@@ -34,6 +36,13 @@ TAPER_END = 1.5
 """Above the table, RAOs taper to zero at this multiple of the highest frequency."""
 MAX_HEADING_GAP = math.pi / 2
 """Largest gap between tabulated headings (after mirroring) that interpolation may bridge."""
+MAX_TRANSLATION_M_M = 50.0
+"""Largest |RAO| of surge, sway, heave (m/m): resonant heave peaks of floating bodies stay under 10."""
+MAX_ROTATION_RAD_M = 1.0
+"""Largest |RAO| of roll, pitch, yaw (rad/m) at full scale: 57 deg per metre of wave amplitude, beyond any
+ship's resonant roll; a model-scale table may reach :data:`MAX_ROTATION_SLOPES` times the wave slope k."""
+MAX_ROTATION_SLOPES = 50.0
+"""Largest rotation |RAO| as a multiple of the wave slope per amplitude, k = w^2 / g (rad/m)."""
 
 
 def long_wave_limit(omega: np.ndarray, beta: np.ndarray, g: float = G) -> np.ndarray:
@@ -115,12 +124,14 @@ class RaoTable:
 
 def _bilinear(omega_grid: np.ndarray, beta_grid: np.ndarray, table: np.ndarray,
               omega: np.ndarray, beta: np.ndarray) -> np.ndarray:
-    """Linear on Re/Im in frequency and heading; ``table`` is (len(beta_grid), len(omega_grid), 6)."""
+    """Linear on Re/Im in frequency and heading; ``table`` is (len(beta_grid), len(omega_grid), 6).
+    A one-frequency table holds its value at every frequency."""
     iw, fw = _locate(omega_grid, omega)
     ib, fb = _locate(beta_grid, beta)
+    iw1 = np.minimum(iw + 1, omega_grid.size - 1)
     fw, fb = fw[:, None], fb[:, None]
-    return ((1 - fb) * ((1 - fw) * table[ib, iw] + fw * table[ib, iw + 1])
-            + fb * ((1 - fw) * table[ib + 1, iw] + fw * table[ib + 1, iw + 1]))
+    return ((1 - fb) * ((1 - fw) * table[ib, iw] + fw * table[ib, iw1])
+            + fb * ((1 - fw) * table[ib + 1, iw] + fw * table[ib + 1, iw1]))
 
 
 def _locate(grid: np.ndarray, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -150,6 +161,7 @@ def make_table(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: n
     if not np.all(np.isfinite(values)):
         raise ParameterError("RAO values must be finite")
     _check_increasing("frequencies", omega, minimum=0.0)
+    _check_amplitudes(omega, beta, values, g)
     _check_increasing("speeds", speed, minimum=None)
     if beta.size == 0 or not np.all(np.isfinite(beta)):
         raise ParameterError("RAO headings must be finite and at least one")
@@ -177,6 +189,19 @@ def make_table(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: n
             f"{math.degrees(beta[at]):g} deg: give 0..180 (mirrored to port) or the whole circle")
     return RaoTable(omega, beta, speed, values, tuple(float(v) for v in reference_point), float(rho),
                     float(g), str(source), source_format, tuple(notes), mirrored)
+
+
+def _check_amplitudes(omega: np.ndarray, beta: np.ndarray, values: np.ndarray, g: float) -> None:
+    """Refuse an |RAO| no floating body has (:data:`MAX_TRANSLATION_M_M`, :data:`MAX_ROTATION_RAD_M`)."""
+    limit = np.full((omega.size, 6), MAX_TRANSLATION_M_M)
+    limit[:, list(ROTATIONS)] = np.maximum(MAX_ROTATION_RAD_M, MAX_ROTATION_SLOPES * omega**2 / g)[:, None]
+    over = np.abs(values) > limit
+    if over.any():
+        s, b, w, j = np.argwhere(over)[0]
+        unit = "rad/m" if j in ROTATIONS else "m/m"
+        raise ParameterError(f"RAO {DOFS[j]} amplitude {abs(values[s, b, w, j]):.3g} {unit} at {omega[w]:.4g} rad/s, "
+                             f"heading {math.degrees(beta[b]):g} deg is beyond any floating body's "
+                             f"(<= {limit[w, j]:.3g} {unit}): check the units")
 
 
 def _check_increasing(name: str, grid: np.ndarray, minimum: float | None) -> None:

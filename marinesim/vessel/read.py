@@ -26,6 +26,7 @@ def read_rao(path: str | Path, *, ulen: float | None = None, roll_damping: float
     not declare it.
     """
     path = Path(path)
+    formats.check_file(path)
     fmt = formats.get(file_format, "rao") if file_format else formats.detect(path, "rao")
     options: dict[str, float] = {}
     if ulen is not None:

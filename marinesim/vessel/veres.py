@@ -64,6 +64,10 @@ def read_veres(path: str | Path) -> RaoTable:
         raise FileFormatError(path, line - 1, f"expected NDOF = 6 (all rigid-body modes), got {ndof}")
     if rho <= 0 or g <= 0:
         raise FileFormatError(path, TITLE_LINES + 1, f"RHO and G must be > 0, got {rho:g} {g:g}")
+    needed = nvel * (5 + nhead * (1 + nfreq * (1 + 6 * 3)))
+    if needed > tokens.remaining:  # refused before the table is allocated
+        raise FileFormatError(path, line - 1, f"file ends early: expected {needed} numbers for NVEL NHEAD NFREQ NDOF "
+                                              f"{counts}, the file holds {tokens.remaining}")
     speeds, heads, freqs = [], None, None
     values = np.zeros((nvel, nhead, nfreq, 6), dtype=complex)
     reference = (0.0, 0.0, 0.0)

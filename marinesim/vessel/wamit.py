@@ -19,12 +19,14 @@ from pathlib import Path
 import numpy as np
 
 from marinesim.constants import G, RHO_SEAWATER
-from marinesim.errors import FileFormatError, ParameterError
+from marinesim.errors import FileFormatError, ParameterError, require_within
 from marinesim.hull.gdf import read_gdf_header
 from marinesim.vessel.rao import ROTATIONS, RaoTable, make_table
 from marinesim.tokens import parse_float, parse_int, read_text
 
 COLUMNS = "PER BETA I MOD PHA RE IM"
+ULEN_RANGE_M = (0.01, 1000.0)
+"""WAMIT's length scale (m): 1 or a body dimension, from a tank model's to the largest vessel's."""
 PERIOD_KINDS = {1: "period (s)", 2: "frequency (rad/s)", 3: "wavenumber K*ULEN (infinite depth)"}
 
 
@@ -39,8 +41,7 @@ def read_wamit(path: str | Path, *, ulen: float | None = None, period_kind: int 
             ulen = 1.0
             notes.append("ULEN not found (no .gdf beside the file): assumed 1 m; check the pitch "
                          "and roll long-wave limits")
-    if not (math.isfinite(ulen) and ulen > 0):
-        raise ParameterError(f"WAMIT ULEN must be > 0, got {ulen!r}")
+    require_within("WAMIT ULEN", ulen, *ULEN_RANGE_M, "m")
     if period_kind is None:
         period_kind = _iperio(path.with_suffix(".cfg"))
     if period_kind not in PERIOD_KINDS:

@@ -22,7 +22,8 @@ import numpy as np
 from marinesim import __version__
 from marinesim.atomic import atomic_path
 from marinesim.constants import G, KNOT, RHO_SEAWATER
-from marinesim.errors import FileFormatError, MarinesimError, ParameterError, require_at_least, require_positive
+from marinesim.errors import (FileFormatError, MarinesimError, ParameterError, require_at_least, require_memory,
+                              require_positive)
 from marinesim.hull import Hull, hydrostatics
 from marinesim.wake.amplitude import (hull_reach, resistance_from_amplitude, resistance_quadrature, tuck_amplitude,
                                       wavenumber)
@@ -34,6 +35,7 @@ AHEAD_CELLS = 8
 MIN_FROUDE = 0.03  # below: waves of a few cm, costly (nodes grow as 1 / Fn^2) and outside thin-ship theory
 QUALITATIVE_BELOW_FROUDE = 0.1  # thin-ship waves of blunt and transom hulls are far too large below
 PLOTTED_ANGLES = 400  # A(theta) samples kept in the result, for plots
+BYTES_PER_CELL = 48  # the field's half and whole (float64), the fade, the float32 copy, the measurements' work
 
 
 @dataclass(frozen=True)
@@ -104,6 +106,7 @@ def compute_wake(hull: Hull, speed_m_s: float, grid: WakeGrid = WakeGrid(), *, r
     surface = hull.wetted()
     bow, stern = float(surface.corners[:, 0].max()), float(surface.corners[:, 0].min())
     grid = grid.resolved(wavelength, statics.froude_length_m, bow)
+    require_memory(f"a wake grid of {grid.nx} x {grid.ny}", BYTES_PER_CELL * grid.nx * grid.ny)
     x, y = grid.axes()
 
     started = time.perf_counter()

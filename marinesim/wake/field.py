@@ -34,15 +34,17 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.interpolate import CubicSpline
 
-from marinesim.errors import ParameterError
+from marinesim.errors import ParameterError, require_memory
 from marinesim.hull import Surface
 from marinesim.progress import task
-from marinesim.wake.amplitude import hull_reach, phase_quadrature, tuck_amplitude
+from marinesim.wake.amplitude import PANEL_ORDER, PANEL_RADIANS, hull_reach, phase_quadrature, tuck_amplitude
 from marinesim.wake.nufft import NonuniformSum
 
 TAPER = 0.3  # fraction of the band (in wavenumber) over which the spectrum rolls off to zero
 SAMPLES_PER_PERIOD = 16  # exact A(theta) samples per oscillation period in sec(theta)
 ROWS_PER_CHUNK = 64
+BYTES_PER_NODE = 32 * ROWS_PER_CHUNK + 256
+"""Memory per quadrature node (bytes): its complex terms for a chunk of rows, and its dozen node arrays."""
 
 
 @dataclass(frozen=True)
@@ -89,9 +91,14 @@ def wake_spectrum(surface: Surface, k0: float, xi_max: float, eta_max: float, sp
                              f"{2 * math.pi / k0:.3g} m): it must be below {(1 - TAPER) * math.pi / k0:.3g} m")
     u_max = math.acosh(k_band / k0)
     reach = hull_reach(surface)
-    u, w = phase_quadrature(
-        lambda u: refinement * k0 * (xi_max * (np.cosh(u) - 1.0) + eta_max * np.sinh(u) * np.cosh(u)
-                                     + reach * (np.cosh(u) - 1.0)) + 8.0 * u, u_max)
+
+    def phase(u: np.ndarray) -> np.ndarray:
+        return (refinement * k0 * (xi_max * (np.cosh(u) - 1.0) + eta_max * np.sinh(u) * np.cosh(u)
+                                   + reach * (np.cosh(u) - 1.0)) + 8.0 * u)
+
+    nodes = PANEL_ORDER * math.ceil(float(phase(np.array(u_max))) / PANEL_RADIANS)
+    require_memory(f"the wake's quadrature ({nodes:.3g} nodes at {spacing:.3g} m spacing)", nodes * BYTES_PER_NODE)
+    u, w = phase_quadrature(phase, u_max)
     sec, tan = np.cosh(u), np.sinh(u)
     kx, ky = k0 * sec, k0 * sec * tan
     band = kx / k_band
