@@ -45,7 +45,7 @@ def test_export_writes_the_rows_and_sidecar_asked_for_and_refuses_a_bad_dt(tmp_p
     assert "41 rows" in result.stdout
     assert json.loads((tmp_path / "m.csv.json").read_text())["seed"] == 3
     refused = cli("export", str(scenario), "--out", "x.csv", "--dt", "0", cwd=tmp_path)
-    message = "run.dt_s: must be in (0"
+    message = "run.dt_s: must be in 0.001..duration_s, got 0.0"
     assert refused.returncode == 2 and message in refused.stderr and "Traceback" not in refused.stderr
     assert len(refused.stderr.strip().splitlines()) == 1 and not (tmp_path / "x.csv").exists()
 

@@ -221,8 +221,8 @@ class RunOptions(Section):
     """``[run]``: how long, how fine, which seed."""
 
     duration_s: Annotated[float, Quantity("s", gt=0.0, le=MAX_DURATION_S)] = Field(600.0, description="run length")
-    dt_s: Annotated[float, Quantity("s", ge=MIN_DT_S)] = Field(
-        0.1, description=f"time step, <= duration_s; at most {MAX_ROWS:.0e} steps per run")
+    dt_s: Annotated[float, Quantity("s", what=f"in {MIN_DT_S:g}..duration_s", test=lambda dt: dt >= MIN_DT_S)] = Field(
+        0.1, description=f"time step; at most {MAX_ROWS:.0e} steps per run")
     seed: Annotated[int, Quantity(ge=0)] = Field(0, description="random seed of the wave amplitudes")
 
     @model_validator(mode="after")
