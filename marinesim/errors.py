@@ -8,6 +8,7 @@ and exits with status 2; anything else is a bug and keeps its traceback.
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 
 class MarinesimError(Exception):
@@ -30,6 +31,11 @@ class FileFormatError(MarinesimError):
         self.path, self.line = path, line
         where = f"{path}, line {line}" if line is not None else f"{path}"
         super().__init__(f"{where}: {message}")
+
+
+def missing_file(path: str | Path) -> FileFormatError:
+    """The error for a ``path`` that is no file to read: a folder (said so), or nothing at all."""
+    return FileFormatError(path, None, "is a folder, not a file" if Path(path).is_dir() else "no such file")
 
 
 def require_finite(name: str, value: float) -> float:

@@ -18,7 +18,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-from marinesim.errors import FileFormatError, ParameterError
+from marinesim.errors import FileFormatError, ParameterError, missing_file
 
 KINDS = {"rao": "RAO", "mesh": "mesh"}  # kind -> what the messages call a file of that kind
 HEAD_BYTES = 4096
@@ -111,8 +111,8 @@ def _head(path: Path) -> bytes:
     try:
         with path.open("rb") as handle:
             return handle.read(HEAD_BYTES)
-    except FileNotFoundError:
-        raise FileFormatError(path, None, "no such file") from None
+    except (FileNotFoundError, IsADirectoryError):
+        raise missing_file(path) from None
     except OSError as error:
         raise FileFormatError(path, None, f"cannot read: {error.strerror}") from None
 
