@@ -5,6 +5,8 @@ An interrupted run never leaves a half-written file behind, an existing file is 
 a complete one, and every output gets the same permissions (0666 less the umask, as ``open``
 would give; ``mkstemp`` alone makes 0600). Only a regular file (or nothing) is ever replaced: a
 device, a FIFO, a directory or a symbolic link at the target is refused before anything is written.
+A failed write (a full disk, a read-only folder) is reported as a :class:`MarinesimError` naming the
+target, never its temporary name.
 
 Files that belong together (a table and the sidecar that describes it) are committed by
 :func:`commit_together`: SIGINT and SIGTERM wait until the last is in place, and if a rename fails
@@ -28,15 +30,20 @@ from marinesim.errors import MarinesimError
 
 
 class AtomicFile:
-    """A file of ``path`` being written under the temporary name :attr:`temp` until :meth:`commit`."""
+    """A file of ``path`` being written under the temporary name :attr:`temp` until :meth:`commit`;
+    errors name :attr:`named`: ``named`` if given (the output a lock file is for), else ``path``."""
 
-    def __init__(self, path: str | os.PathLike) -> None:
+    def __init__(self, path: str | os.PathLike, named: str | os.PathLike | None = None) -> None:
         self.path = Path(path)
+        self.named = self.path if named is None else Path(named)
         if not self.path.parent.is_dir():
-            raise MarinesimError(f"cannot write {self.path}: folder {self.path.parent} does not exist")
+            raise MarinesimError(f"cannot write {self.named}: folder {self.path.parent} does not exist")
         check_replaceable(self.path)
-        fd, temp = tempfile.mkstemp(prefix=f".{self.path.stem}.", suffix=f".part{self.path.suffix}",
-                                    dir=self.path.parent)
+        try:
+            fd, temp = tempfile.mkstemp(prefix=f".{self.path.stem}.", suffix=f".part{self.path.suffix}",
+                                        dir=self.path.parent)
+        except OSError as error:
+            raise MarinesimError(f"cannot write {self.named}: {error.strerror or error}") from None
         os.close(fd)
         self.temp = Path(temp)
 
@@ -71,11 +78,31 @@ def check_replaceable(path: Path) -> None:
 def atomic_path(path: str | os.PathLike) -> Iterator[Path]:
     """Yield a temporary path to write; on success it is renamed to ``path``, else removed."""
     file = AtomicFile(path)
-    try:
+    with writing(file):
         yield file.temp
         file.commit()
+
+
+@contextlib.contextmanager
+def writing(*files: AtomicFile) -> Iterator[None]:
+    """Discard the temporary ``files`` if the block fails. A file-system error about one of them (or
+    about no file, as a full disk's) is raised as a :class:`MarinesimError` naming the user's file."""
+    try:
+        yield
+    except OSError as error:
+        for file in files:
+            file.discard()
+        named = next((file.named for file in files if error.filename in (str(file.temp), file.temp)), None)
+        if named is None and error.filename is not None:
+            raise  # about another file: the message already names it
+        text = str(error)
+        for file in files:
+            text = text.replace(str(file.temp), str(file.named))
+        reason = error.strerror or text.partition("\n")[0] or type(error).__name__
+        raise MarinesimError(f"cannot write {named or files[0].named}: {reason}") from None
     except BaseException:
-        file.discard()
+        for file in files:
+            file.discard()
         raise
 
 
@@ -137,8 +164,9 @@ def output_lock(path: Path) -> Iterator[None]:
     """Hold ``<path>.lock`` (it names this process) while ``path`` is written; a second writer is refused
     while the first runs, and a lock left by a process that no longer runs is taken over."""
     lock = path.with_name(path.name + ".lock")
-    mine = AtomicFile(lock)
-    mine.temp.write_text(f"{os.getpid()}\n")
+    mine = AtomicFile(lock, named=path)
+    with writing(mine):
+        mine.temp.write_text(f"{os.getpid()}\n")
     try:
         for _ in range(2):
             try:

@@ -99,20 +99,22 @@ def detect(path: Path, kind: str, what: str | None = None) -> Format:
                           + "; ".join(f"{f.name} ({f.description})" for f in candidates))
 
 
-def check_file(path: Path) -> None:
-    """Refuse (:class:`FileFormatError`) a path that is not a regular file (after symbolic links): a
-    missing file, a FIFO or device (reading it could block for ever), a folder, a symbolic-link loop, a
-    name with a NUL byte."""
+def check_file(path: Path, what: str = "file") -> None:
+    """Refuse (:class:`FileFormatError`, ``what`` naming the kind of file) a path that is not a regular file
+    (after symbolic links): a missing file, a folder, a FIFO or device (reading it could block for ever), a
+    symbolic-link loop, a name with a NUL byte."""
     try:
         mode = os.stat(path).st_mode
     except FileNotFoundError:
-        raise FileFormatError(path, None, "no such file") from None
+        raise FileFormatError(path, None, f"no such {what}") from None
     except OSError as error:
         raise FileFormatError(path, None, f"cannot read: {error.strerror}") from None
     except ValueError:  # os.stat refuses a NUL byte in the name
         raise FileFormatError(repr(str(path)), None, "a file name cannot contain a NUL byte") from None
+    if stat.S_ISDIR(mode):
+        raise FileFormatError(path, None, f"is a folder, not a {what}")
     if not stat.S_ISREG(mode):
-        raise FileFormatError(path, None, "not a regular file (a FIFO, device or folder): give a file")
+        raise FileFormatError(path, None, f"not a regular file (a FIFO or device): give a {what}")
 
 
 def reader(fmt: Format | str) -> Callable:
@@ -131,8 +133,6 @@ def _head(path: Path) -> bytes:
     try:
         with path.open("rb") as handle:
             return handle.read(HEAD_BYTES)
-    except FileNotFoundError:
-        raise FileFormatError(path, None, "no such file") from None
     except OSError as error:
         raise FileFormatError(path, None, f"cannot read: {error.strerror}") from None
 

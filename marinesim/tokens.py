@@ -9,14 +9,14 @@ import math
 from pathlib import Path
 
 from marinesim.errors import FileFormatError
+from marinesim.formats import check_file
 
 
 def read_text(path: Path) -> str:
     """The file's text; unreadable or non-text files are refused as a format error."""
+    check_file(path)
     try:
         return path.read_text(encoding="utf-8", errors="strict")
-    except FileNotFoundError:
-        raise FileFormatError(path, None, "no such file") from None
     except UnicodeDecodeError as error:
         raise FileFormatError(path, None, f"not a text file ({error.reason} at byte {error.start})") from None
     except OSError as error:

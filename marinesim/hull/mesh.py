@@ -13,10 +13,14 @@ placing it in the body frame (:func:`to_body_frame`) are shared with the visual 
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
+import logging
 import math
+import warnings
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Iterator
 
 import numpy as np
 import trimesh
@@ -121,12 +125,30 @@ def read_mesh(path: Path) -> trimesh.Trimesh:
     """The triangles of a file in a format trimesh reads (STL, OBJ, PLY, glTF, OFF) as one mesh, in the file's own
     numbers and axes, with its colours or materials (``visual``); scene transforms applied, nothing merged."""
     try:
-        mesh = trimesh.load(path, force="mesh", process=False)
+        with _trimesh_quiet():
+            mesh = trimesh.load(path, force="mesh", process=False)
     except Exception as error:  # trimesh raises many types for unreadable files
         raise FileFormatError(path, None, f"cannot read the mesh: {error}") from None
     if not isinstance(mesh, trimesh.Trimesh):
         raise FileFormatError(path, None, "the file holds no triangle mesh")
     return mesh
+
+
+@contextlib.contextmanager
+def _trimesh_quiet() -> Iterator[None]:
+    """trimesh's log records and warnings held back while it reads a file (it logs tracebacks of what it
+    tries and gives up on): a file it cannot read is said once, by the error raised."""
+    logger = logging.getLogger("trimesh")
+    held = logging.NullHandler()
+    logger.addHandler(held)
+    propagate, logger.propagate = logger.propagate, False
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            yield
+    finally:
+        logger.propagate = propagate
+        logger.removeHandler(held)
 
 
 def to_body_frame(vertices: np.ndarray, faces: np.ndarray, path: str | Path, *, units: str = "m",

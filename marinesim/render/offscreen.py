@@ -1,9 +1,11 @@
 """Headless renders through EGL: a video of a scenario (with its motion CSV beside it) or a screenshot.
 
 Frames are drawn by the same :class:`~marinesim.render.scene.Scene` the window uses, into an
-offscreen framebuffer, at fixed simulated times ``k / fps``: the same scenario and seed give the
-same frames. Videos are H.264 MP4 through the ffmpeg that ``imageio-ffmpeg`` ships, written to a
-temporary file and renamed when complete. The CSV beside a video is ``marinesim export`` of the
+offscreen framebuffer, at fixed simulated times ``k / fps``, with the ocean transformed by numpy.fft
+(:class:`~marinesim.render.renderer.RenderOptions` ``reproducible``) and no measured times in the
+HUD: the same scenario and seed give the same frames, whatever the FFTW plans in the cache. Videos
+are H.264 MP4 through the ffmpeg that ``imageio-ffmpeg`` ships, written to a temporary file and
+renamed when complete. The CSV beside a video is ``marinesim export`` of the
 scenario over the video's length (same columns, same rows, same numbers).
 """
 
@@ -114,7 +116,7 @@ def screenshot(scenario: Scenario, out: Path, at_s: float = 0.0, size: tuple[int
 
     if not 0.0 <= at_s <= scenario.run.duration_s:
         raise ParameterError(f"--time must be within the run, 0..{scenario.run.duration_s:g} s, got {at_s!r}")
-    with Offscreen(scenario, size, camera, solver, options) as view:
+    with Offscreen(scenario, size, camera, solver, replace(options, reproducible=True)) as view:
         view.go_to(at_s)
         image = view.frame()
     with atomic_path(out) as temp:
@@ -135,7 +137,8 @@ def render_video(scenario: Scenario, out: Path, seconds: float = 20.0, size: tup
         raise ParameterError(f"--fps must be within 1..240, got {fps!r}")
     frames = int(round(seconds * fps))
     table = None
-    with Offscreen(scenario, size, camera, solver, options) as view, atomic_path(out) as temp:
+    with Offscreen(scenario, size, camera, solver, replace(options, reproducible=True)) as view, \
+            atomic_path(out) as temp:
         writer = imageio_ffmpeg.write_frames(str(temp), size, fps=fps, codec="libx264", quality=7,
                                              macro_block_size=2, ffmpeg_log_level="error")
         writer.send(None)

@@ -60,7 +60,9 @@ class Scene:
         self.camera_name = camera
         self.history = StripHistory([name for name, _, _ in CHARTED])
         self._next_sample = 0.0
-        self.frame_seconds = 0.0
+        self.frame_seconds: float | None = None
+        """The window's last frame time (s), shown with the renderer's timings; None (a headless render):
+        no clock time in the picture, so that the same scenario gives the same pixels."""
         self.status: list[str] = []
 
     @property
@@ -113,11 +115,12 @@ class Scene:
             lines.append(f"surge {m[0]:+6.2f}  sway {m[1]:+6.2f}  heave {m[2]:+6.2f} m")
             lines.append(f"roll {math.degrees(m[3]):+6.2f}  pitch {math.degrees(m[4]):+6.2f}  "
                          f"yaw {math.degrees(m[5]):+6.2f} deg")
-        times = self.renderer.times
-        lines.append(f"camera {self.camera_name}   frame {1000 * self.frame_seconds:5.1f} ms "
-                     f"(sim {1000 * times.simulation:4.1f}, upload {1000 * times.upload:4.1f}, "
-                     f"draw {1000 * times.draw:4.1f})")
-        return lines + self.status
+        line = f"camera {self.camera_name}"
+        if self.frame_seconds is not None:
+            times = self.renderer.times
+            line += (f"   frame {1000 * self.frame_seconds:5.1f} ms (sim {1000 * times.simulation:4.1f}, "
+                     f"upload {1000 * times.upload:4.1f}, draw {1000 * times.draw:4.1f})")
+        return lines + [line] + self.status
 
     def release(self) -> None:
         self.sim.close()

@@ -61,10 +61,10 @@ def load_scenario(path: str | Path) -> Scenario:
     """Read and validate ``path``; raise :class:`ScenarioError` naming the file and the key."""
     path = Path(path)
     try:
-        formats.check_file(path)
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
+        formats.check_file(path, "scenario file")
+        data = tomllib.loads(path.read_text(encoding="utf-8-sig"))  # a byte-order mark is no TOML error
     except FileFormatError as error:
-        raise ScenarioError(f"{error} (the scenario file)") from None
+        raise ScenarioError(str(error)) from None
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as error:
         raise ScenarioError(f"{path}: not valid TOML: {error}") from None
     except RecursionError:  # tomllib reads nested arrays and tables recursively

@@ -6,7 +6,10 @@ so a spectrum of complex amplitudes gives the field directly.
 FFTW_MEASURE picks its algorithm by timing candidates, so two runs could pick different ones
 and round differently. The plans are therefore kept as FFTW wisdom in
 ``fftw-wisdom.json`` under :func:`~marinesim.cache.cache_root`: every run after the first
-plans exactly as the first did, and the same scenario and seed give the same bits.
+plans exactly as the first did, and the same scenario and seed give the same bits. Where the
+cache cannot be written, the plans are made afresh in every run (warned about once).
+:meth:`InverseFFT2.reproducible` is the same transform by numpy.fft: the same bits whatever the saved plans
+and the number of threads, for what is written to files.
 """
 
 from __future__ import annotations
@@ -19,8 +22,8 @@ from pathlib import Path
 import numpy as np
 
 from marinesim.atomic import atomic_path
-from marinesim.cache import cache_root
-from marinesim.errors import MarinesimError, ParameterError
+from marinesim.cache import cache_root, store
+from marinesim.errors import ParameterError
 
 try:
     import pyfftw
@@ -48,16 +51,17 @@ def _read_wisdom() -> None:
 
 
 def _save_wisdom() -> None:
-    """Store the plans made so far if they differ from the saved ones (atomically; skipped if unwritable)."""
+    """Store the plans made so far if they differ from the saved ones (atomically; warned about if unwritable)."""
     wisdom = {kind: blob.decode("ascii") for kind, blob in zip(_WISDOM_KINDS, pyfftw.export_wisdom(), strict=True)}
     path = _wisdom_file()
     with contextlib.suppress(OSError, ValueError):
         if json.loads(path.read_text()) == wisdom:
             return
-    with contextlib.suppress(OSError, MarinesimError):
-        path.parent.mkdir(parents=True, exist_ok=True)
+
+    def save(path: Path) -> None:
         with atomic_path(path) as temp:
             temp.write_text(json.dumps(wisdom))
+    store(path, save)
 
 
 def available_cpus() -> list[int]:
@@ -79,7 +83,7 @@ class InverseFFT2:
         if backend == "pyfftw" and pyfftw is None:
             raise ParameterError("fft backend 'pyfftw' requested but pyfftw is not installed")
         self.backend = "numpy" if backend == "numpy" or pyfftw is None else "pyfftw"
-        axes = (len(shape) - 2, len(shape) - 1)
+        axes = self._axes = (len(shape) - 2, len(shape) - 1)
         if self.backend == "pyfftw":
             self.input = pyfftw.empty_aligned(shape, dtype=np.complex64)
             self.output = pyfftw.empty_aligned(shape, dtype=np.complex64)
@@ -92,12 +96,15 @@ class InverseFFT2:
         else:
             self.input = np.empty(shape, dtype=np.complex64)
             self.output = np.empty(shape, dtype=np.complex64)
-            self._axes = axes
         self.input[...] = 0  # after planning: FFTW_MEASURE overwrites the input
 
     def __call__(self) -> np.ndarray:
         if self.backend == "pyfftw":
             self._plan.execute()  # raw FFTW: no 1/N^2 normalisation
-        else:
-            np.fft.ifftn(self.input, axes=self._axes, norm="forward", out=self.output)
+            return self.output
+        return self.reproducible()
+
+    def reproducible(self) -> np.ndarray:
+        """The transform by numpy.fft, into ``.output``: the same bits on every run, slower than FFTW."""
+        np.fft.ifftn(self.input, axes=self._axes, norm="forward", out=self.output)
         return self.output

@@ -347,20 +347,24 @@ class Ocean:
 
     # -- fields per frame -----------------------------------------------------------------
 
-    def fields(self, t: float) -> list[TileFields]:
-        """All fields of every tile at time ``t`` (s): 4 inverse FFTs per tile, the lanes in parallel."""
+    def fields(self, t: float, reproducible: bool = False) -> list[TileFields]:
+        """All fields of every tile at time ``t`` (s): 4 inverse FFTs per tile, the lanes in parallel.
+
+        ``reproducible``: by numpy.fft instead of the planned FFTW (4-5x slower: for reports and
+        plots, not frames), the same bits whatever the saved plans, the cache and the CPU count.
+        """
         if self._settled(t):
             even, odd = self._settled_amplitudes
         else:
             even, odd = self._half_amplitudes(self.amplitudes(t)[self._cell])
         rows = [r for r, _ in self._lane_cells]
         if self._workers:
-            running = [worker.submit(lane.run, t, even[r], odd[r])
+            running = [worker.submit(lane.run, t, even[r], odd[r], reproducible)
                        for worker, lane, r in zip(self._workers, self._lanes, rows, strict=True)]
             wait(running)  # every lane done before a result is read (or its error raised)
             outputs = [future.result() for future in running]
         else:
-            outputs = [self._lanes[0].run(t, even[rows[0]], odd[rows[0]])]
+            outputs = [self._lanes[0].run(t, even[rows[0]], odd[rows[0]], reproducible)]
         return [
             TileFields(self.tiles[lane.first + i], out[i, 0].real, out[i, 1].real, out[i, 1].imag,
                        out[i, 2].real, out[i, 2].imag, jacobian[i])

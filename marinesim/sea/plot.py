@@ -54,7 +54,7 @@ def plot_sea(ocean: Ocean, path: Path, t: float = 0.0, extent_m: float | None = 
     extent = extent_m or min(ocean.tiles[0].size, 8.0 * 2.0 * math.pi / float(sea.wavenumber(wp)))
     coords = np.linspace(0.0, extent, 400)
     x, y = np.meshgrid(coords, coords)
-    height = height_on_grid(ocean.fields(t), x, y)
+    height = height_on_grid(ocean.fields(t, reproducible=True), x, y)
     limit = float(np.abs(height).max())
     image = ax_h.imshow(height, origin="lower", extent=(0, extent, 0, extent), cmap="RdBu_r",
                         vmin=-limit, vmax=limit)

@@ -35,11 +35,12 @@ def spectrum_summary(ocean: Ocean) -> dict:
 
 
 def surface_summary(ocean: Ocean, t: float = 0.0) -> dict:
-    """Hs, Tp, Tz and mean direction measured on the FFT fields at time ``t`` (s, |t| <= :data:`MAX_TIME_S`)."""
+    """Hs, Tp, Tz and mean direction measured on the FFT fields at time ``t`` (s, |t| <= :data:`MAX_TIME_S`), by
+    numpy.fft: the same bits whatever the FFTW plans saved in the cache."""
     require_within("time", t, -MAX_TIME_S, MAX_TIME_S, "s")
-    before = [f.height.copy() for f in ocean.fields(t - TIME_STEP)]
-    after = [f.height.copy() for f in ocean.fields(t + TIME_STEP)]
-    fields = ocean.fields(t)
+    before = [f.height.copy() for f in ocean.fields(t - TIME_STEP, reproducible=True)]
+    after = [f.height.copy() for f in ocean.fields(t + TIME_STEP, reproducible=True)]
+    fields = ocean.fields(t, reproducible=True)
     var_eta = var_rate = 0.0
     flux = np.zeros(2)
     omega_all, power_all = [], []

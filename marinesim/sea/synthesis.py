@@ -103,18 +103,20 @@ class Lane:
             raise ValueError(f"expected packing multipliers of shape (4, {cells}), got {multipliers.shape}")
         self._multipliers = np.ascontiguousarray(multipliers, dtype=np.complex64)  # one compiled layout
 
-    def run(self, t: float, even: np.ndarray, odd: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    def run(self, t: float, even: np.ndarray, odd: np.ndarray,
+            reproducible: bool = False) -> tuple[np.ndarray, np.ndarray]:
         """The FFT outputs ``(count, 4, N, N)`` and Jacobians ``(count, N, N)`` at ``t`` (s).
 
         ``even`` and ``odd`` are ``(a[-q] + conj(a[q])) / 2`` and ``i (a[-q] - conj(a[q])) / 2`` of
-        the lane's cells, so that ``C[q] = even cos(wt) + odd sin(wt)``.
+        the lane's cells, so that ``C[q] = even cos(wt) + odd sin(wt)``. ``reproducible``: by
+        numpy.fft (:meth:`InverseFFT2.reproducible`), the same bits whatever the cache and the CPUs.
         """
         phase = np.multiply(self._omega, t, out=self._phase)
         phase -= np.floor(phase * (0.5 / math.pi)) * (2.0 * math.pi)  # keeps float32 trig exact
         phase32 = phase.astype(np.float32)
         _pack_cells(even, odd, np.cos(phase32, out=self._cos), np.sin(phase32, out=self._sin), self._multipliers,
                     self._index, self._n**2, self._flat_input)
-        out = self._fft()
+        out = self._fft.reproducible() if reproducible else self._fft()
         _jacobian(out, self._jacobian)
         return out, self._jacobian
 

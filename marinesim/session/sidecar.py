@@ -16,7 +16,7 @@ from typing import Callable
 import numpy as np
 
 from marinesim import __version__
-from marinesim.atomic import AtomicFile, commit_together, json_text, output_lock
+from marinesim.atomic import AtomicFile, commit_together, json_text, output_lock, writing
 from marinesim.sea.ocean import Components
 from marinesim.sea.summary import summary
 from marinesim.session.assembly import VARIANCE_FRACTION, Assembly
@@ -42,15 +42,11 @@ def write_table(path: Path, write: Callable[[Path], None], describe: Callable[[]
     path = Path(path)
     with output_lock(path):
         table, sidecar = AtomicFile(path), AtomicFile(sidecar_path(path))
-        try:
+        with writing(table, sidecar):
             write(table.temp)
             metadata = {"file": path.name, "data_sha256": sha256(table.temp)} | describe()
             sidecar.temp.write_text(json_text(metadata), encoding="utf-8")
             commit_together([sidecar, table])
-        except BaseException:
-            table.discard()
-            sidecar.discard()
-            raise
     return sidecar.path
 
 

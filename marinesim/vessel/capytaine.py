@@ -18,12 +18,17 @@ The reference point is the dataset's ``rotation_center``. Needs ``xarray`` with 
 
 from __future__ import annotations
 
+import contextlib
+import gc
 import math
+import sys
 from pathlib import Path
+from typing import Iterator
 
 import numpy as np
 
 from marinesim.errors import FileFormatError, MarinesimError, ParameterError
+from marinesim.formats import check_file
 from marinesim.vessel.rao import DOFS, RaoTable, make_table
 
 NEEDED = ("added_mass", "radiation_damping", "inertia_matrix", "hydrostatic_stiffness")
@@ -113,12 +118,26 @@ def _open(path: Path):
     except ImportError:
         raise FileFormatError(path, None, "reading Capytaine NetCDF needs xarray and a NetCDF engine: "
                                           "pip install 'marinesim[capytaine]'") from None
-    if not path.is_file():
-        raise FileFormatError(path, None, "no such file")
+    check_file(path)
+    with _unraisable_ignored():
+        try:
+            return xarray.open_dataset(path).load()
+        except Exception as error:  # xarray raises many kinds for unreadable files
+            reason = f"{type(error).__name__}: {error}"
+        gc.collect()  # the half-opened file objects go now, while their complaints are ignored
+    raise FileFormatError(path, None, f"not a readable NetCDF dataset ({reason})")
+
+
+@contextlib.contextmanager
+def _unraisable_ignored() -> Iterator[None]:
+    """Exceptions raised where Python cannot raise them (``__del__``) ignored: h5netcdf's file object of
+    a damaged file fails to close when collected and would print an "Exception ignored" traceback."""
+    hook = sys.unraisablehook
+    sys.unraisablehook = lambda unraisable: None
     try:
-        return xarray.open_dataset(path).load()
-    except Exception as error:  # xarray raises many kinds for unreadable files
-        raise FileFormatError(path, None, f"not a readable NetCDF dataset ({type(error).__name__}: {error})") from None
+        yield
+    finally:
+        sys.unraisablehook = hook
 
 
 def _complex(array):

@@ -2,9 +2,11 @@
 
 The key is a sha256 of everything the field depends on: the hull geometry in the body frame
 (so units, axes, draft and trim are in it), the speed, the grid, rho, g, the angular refinement
-and CACHE_FORMAT (bumped whenever the numerics change). The folder is ``wake`` in
-:func:`~marinesim.cache.cache_root`. Entries are written atomically; an unreadable entry is
-recomputed and replaced.
+and WAKE_FORMAT (bumped whenever the numerics change). The folder is ``wake`` in
+:func:`~marinesim.cache.cache_root`. Entries are written atomically. An entry is used only if it
+is the wake its key names (format, hull, speed, rho, g, refinement, grid, array shapes and axes):
+an unreadable or mismatched one is recomputed and replaced. A cache that cannot be written is
+warned about once and done without (:func:`~marinesim.cache.store`).
 """
 
 from __future__ import annotations
@@ -14,15 +16,14 @@ import json
 from pathlib import Path
 from typing import Iterable
 
+import numpy as np
 
-from marinesim.cache import cache_root
+from marinesim.cache import cache_root, store
 from marinesim.constants import RHO_SEAWATER, G
 from marinesim.errors import FileFormatError
 from marinesim.hull import Hull
 from marinesim.progress import task
-from marinesim.wake.compute import Wake, WakeGrid, compute_wake
-
-CACHE_FORMAT = 2
+from marinesim.wake.compute import WAKE_FORMAT, Wake, WakeGrid, compute_wake
 
 
 def cache_dir() -> Path:
@@ -30,7 +31,7 @@ def cache_dir() -> Path:
 
 
 def cache_key(hull: Hull, speed_m_s: float, grid: WakeGrid, rho: float, g: float, refinement: float) -> str:
-    parts = {"format": CACHE_FORMAT, "hull": hull.content_hash(), "speed_m_s": float(speed_m_s),
+    parts = {"format": WAKE_FORMAT, "hull": hull.content_hash(), "speed_m_s": float(speed_m_s),
              "grid": [grid.nx, grid.ny, grid.spacing_m, grid.front_m], "rho": float(rho), "g": float(g),
              "refinement": float(refinement)}
     return hashlib.sha256(json.dumps(parts, sort_keys=True).encode()).hexdigest()
@@ -43,14 +44,35 @@ def cached_wake(hull: Hull, speed_m_s: float, grid: WakeGrid = WakeGrid(), *, rh
     if path.is_file():
         try:
             wake = Wake.load(path)
+        except FileFormatError:
+            wake = None  # a damaged entry: recomputed below
+        if wake is not None and _is_entry_of(wake, hull, speed_m_s, grid, rho, g, refinement):
             wake.info["hull_source"] = hull.source  # the same geometry may come from another file
             return wake, True
-        except FileFormatError:
-            pass  # a damaged entry: recompute it below
     wake = compute_wake(hull, speed_m_s, grid, rho=rho, g=g, refinement=refinement)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    wake.save(path)
+    store(path, wake.save)
     return wake, False
+
+
+def _is_entry_of(wake: Wake, hull: Hull, speed_m_s: float, grid: WakeGrid, rho: float, g: float,
+                 refinement: float) -> bool:
+    """Whether a loaded entry is the wake of its key: not a damaged file, nor one of another format or input."""
+    info = wake.info
+    try:
+        stored = WakeGrid(**info["grid"])
+        if not (info["wake_format"] == WAKE_FORMAT and info["hull_sha256"] == hull.content_hash()
+                and info["speed_m_s"] == float(speed_m_s) and info["rho_kg_m3"] == float(rho)
+                and info["g_m_s2"] == float(g) and info["refinement"] == float(refinement)
+                and (stored.nx, stored.ny) == (int(grid.nx), int(grid.ny))
+                and grid.spacing_m in (None, stored.spacing_m) and grid.front_m in (None, stored.front_m)):
+            return False
+        x, y = stored.axes()
+    except (KeyError, TypeError, ValueError):
+        return False
+    return (wake.elevation.shape == (stored.ny, stored.nx) and wake.elevation.dtype == np.float32
+            and np.array_equal(wake.x, x) and np.array_equal(wake.y, y)
+            and wake.sec.ndim == 1 and wake.sec.shape == wake.amplitude.shape
+            and bool(np.isfinite(wake.elevation).all()))
 
 
 def precompute_wakes(hull: Hull, speeds_m_s: Iterable[float], grid: WakeGrid = WakeGrid(), *,

@@ -13,7 +13,6 @@ from __future__ import annotations
 import json
 import math
 import time
-import zipfile
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 
@@ -36,6 +35,8 @@ MIN_FROUDE = 0.03  # below: waves of a few cm, costly (nodes grow as 1 / Fn^2) a
 QUALITATIVE_BELOW_FROUDE = 0.1  # thin-ship waves of blunt and transom hulls are far too large below
 PLOTTED_ANGLES = 400  # A(theta) samples kept in the result, for plots
 BYTES_PER_CELL = 48  # the field's half and whole (float64), the fade, the float32 copy, the measurements' work
+WAKE_FORMAT = 3
+"""Version of the wake's numerics and of its file (``info["wake_format"]``): bumped whenever either changes."""
 
 
 @dataclass(frozen=True)
@@ -74,9 +75,11 @@ class Wake:
     sec: np.ndarray  # sec(theta) samples of A, for plots
     amplitude: np.ndarray  # A(theta) there, complex, m
     info: dict = field(default_factory=dict)  # speed_m_s, froude, wave_resistance_N, ... (JSON-able)
+    timings: dict = field(default_factory=dict)  # s per stage ("amplitude", "field") when computed; never saved
 
     def save(self, path: str | Path) -> None:
-        """Write an ``.npz`` atomically: the arrays plus every entry of ``info``."""
+        """Write an ``.npz`` atomically: the arrays plus every entry of ``info`` (no timings: the same wake
+        gives the same bytes)."""
         with atomic_path(path) as temp:
             with open(temp, "wb") as handle:
                 np.savez_compressed(handle, elevation_m=self.elevation, x_m=self.x, y_m=self.y, sec_theta=self.sec,
@@ -88,7 +91,7 @@ class Wake:
             with np.load(path) as data:
                 return cls(data["elevation_m"], data["x_m"], data["y_m"], data["sec_theta"], data["amplitude_m"],
                            json.loads(str(data["info_json"])))
-        except (OSError, KeyError, ValueError, EOFError, zipfile.BadZipFile) as error:
+        except Exception as error:  # numpy, zipfile and zlib raise many kinds (even SyntaxError) for damaged files
             raise FileFormatError(path, None, f"not a marinesim wake file: {error}") from None
 
 
@@ -131,8 +134,7 @@ def compute_wake(hull: Hull, speed_m_s: float, grid: WakeGrid = WakeGrid(), *, r
         "grid": {"nx": grid.nx, "ny": grid.ny, "spacing_m": grid.spacing_m, "front_m": grid.front_m},
         "bow_x_m": bow, "stern_x_m": stern,
         "quadrature_nodes": len(spectrum.kx), "refinement": refinement, "hull_source": hull.source,
-        "hull_sha256": hull.content_hash(), "seconds_amplitude": amplitude_seconds, "seconds_field": field_seconds,
-        "marinesim_version": __version__,
+        "hull_sha256": hull.content_hash(), "wake_format": WAKE_FORMAT, "marinesim_version": __version__,
     }
     for key, measure in (("kelvin_half_angle_deg", lambda: kelvin_half_angle_deg(
                              elevation, x, y, wavelength, statics.froude_length_m, bow)),
@@ -148,7 +150,8 @@ def compute_wake(hull: Hull, speed_m_s: float, grid: WakeGrid = WakeGrid(), *, r
     if x.min() > stern:
         info["grid_note"] = "the grid ends before the stern: give more columns (nx) or a larger spacing"
     kept = slice(None, None, max(1, len(sec) // PLOTTED_ANGLES))
-    return Wake(elevation.astype(np.float32), x, y, sec[kept], a[kept], info)
+    return Wake(elevation.astype(np.float32), x, y, sec[kept], a[kept], info,
+                {"amplitude": amplitude_seconds, "field": field_seconds})
 
 
 def _bow_fade(x: np.ndarray, bow: float, stern: float) -> np.ndarray:
