@@ -297,10 +297,13 @@ def test_an_empty_out_is_refused(tmp_path):
 
 
 def test_format_check_refuses_what_is_not_a_regular_file(tmp_path):
-    """The one check every reader's path goes through: a folder is no RAO table."""
+    """The one check every reader's path goes through: a folder and a FIFO are no RAO table."""
     from marinesim.formats import check_file
 
-    with pytest.raises(FileFormatError, match="not a regular file"):
+    with pytest.raises(FileFormatError, match="is a folder, not a file"):
         check_file(tmp_path)
+    os.mkfifo(tmp_path / "pipe.4")
+    with pytest.raises(FileFormatError, match="not a regular file"):
+        check_file(tmp_path / "pipe.4")
     with pytest.raises(FileFormatError, match="NUL"):
         check_file(Path("a\x00b"))
