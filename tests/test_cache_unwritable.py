@@ -54,6 +54,7 @@ def test_wake_command_goes_on_without_the_cache(unwritable_cache, tmp_path):
     assert (tmp_path / "w.npz").read_bytes() == (tmp_path / "ref.npz").read_bytes()
 
 
+@pytest.mark.slow
 def test_headless_run_goes_on_without_the_cache(unwritable_cache, tmp_path):
     """If this fails, ``marinesim run --headless`` stops when neither the FFTW wisdom nor the wake can be
     cached, leaving only some of its outputs behind."""

@@ -89,6 +89,7 @@ def test_a_mesh_trimesh_struggles_with_gives_one_line(tmp_path):
     assert len(lines) == 1 and lines[0].startswith("marinesim hull: error: "), lines
 
 
+@pytest.mark.slow
 def test_a_damaged_netcdf_gives_one_line(tmp_path):
     """If this fails, h5netcdf's half-opened file of a damaged NetCDF prints an "Exception ignored in:
     <function File.close>" traceback when it is collected, besides marinesim's error."""

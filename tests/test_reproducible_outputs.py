@@ -36,6 +36,7 @@ def test_wake_file_is_the_same_bytes_computed_cached_or_uncached(tmp_path, monke
     assert not [key for key in Wake.load(outputs[0]).info if key.startswith("seconds")]
 
 
+@pytest.mark.slow
 def test_export_is_the_same_bytes_whatever_the_cache(tmp_path):
     """If this fails, the sidecar's sea figures measured on the surface depend on the FFTW plans: a fresh
     cache (plans measured afresh) and a warm one (plans from the saved wisdom) give sidecars that differ
@@ -51,6 +52,7 @@ def test_export_is_the_same_bytes_whatever_the_cache(tmp_path):
     assert b'"hs_surface_m"' in (tmp_path / "warm" / "m.csv.json").read_bytes()
 
 
+@pytest.mark.slow
 def test_screenshots_are_the_same_bytes_whatever_the_cache(tmp_path):
     """If this fails, two ``render --screenshot`` runs of the same scenario and time give different PNGs:
     the HUD printed measured frame, upload and draw times into the picture, or the ocean's FFTW plans

@@ -112,6 +112,7 @@ def test_sigterm_discards_the_new_pair_and_keeps_the_old_one(tmp_path, scenario)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["long.toml", "m.csv", "m.csv.json"]
 
 
+@pytest.mark.slow
 def test_a_second_writer_is_refused_while_the_first_runs(tmp_path, scenario):
     """Two exports to one file used to leave one's table beside the other's sidecar; now the second is refused
     with the first's process named, and the first's pair is whole."""

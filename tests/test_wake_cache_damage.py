@@ -44,6 +44,7 @@ def _damaged(wake: Wake) -> dict[str, Wake]:
     }
 
 
+@pytest.mark.slow
 def test_a_loadable_but_wrong_entry_is_recomputed_and_replaced(tmp_path, wigley):
     """If this fails, a cache entry that loads but is not the wake of its key (another grid, speed, hull or
     format, a cut axis, NaNs) is served as if it were: wrong fields drawn, plotted and written."""
