@@ -520,3 +520,13 @@ def test_height_on_grid_is_the_summed_surface(north_sea):
     assert np.sqrt(np.mean((mapped - direct) ** 2)) < 0.05 * sigma  # bilinear on 2x oversampled tiles
     at_origin = height_on_grid(ocean.fields(4.0), np.array(0.0), np.array(0.0))
     assert at_origin == pytest.approx(ocean.sample(np.array([0.0]), np.array([0.0]), 4.0).elevation[0], abs=1e-4)
+
+
+def test_the_fft_order_mirror_is_minus_k():
+    """``mirrored`` (the ocean's cell pairing and the solver's conj Z(-k)) is the field at index -i mod n on
+    both axes, for one field and a stack of them; an off-by-one would pair every wave with a wrong partner."""
+    from marinesim.sea.fft import mirrored
+
+    field = np.random.default_rng(1).normal(size=(3, 8, 6))
+    expected = np.array([[[field[t, -i % 8, -j % 6] for j in range(6)] for i in range(8)] for t in range(3)])
+    assert np.array_equal(mirrored(field), expected) and np.array_equal(mirrored(field[1]), expected[1])

@@ -108,3 +108,8 @@ class InverseFFT2:
         """The transform by numpy.fft, into ``.output``: the same bits on every run, slower than FFTW."""
         np.fft.ifftn(self.input, axes=self._axes, norm="forward", out=self.output)
         return self.output
+
+
+def mirrored(field: np.ndarray) -> np.ndarray:
+    """``field(-k)`` for fields in FFT index order on their last two axes (index ``-i`` is ``(n - i) % n``)."""
+    return np.roll(np.flip(field, axis=(-2, -1)), 1, axis=(-2, -1))

@@ -34,7 +34,7 @@ from marinesim.errors import (ParameterError, require_at_least, require_finite, 
 from marinesim.recent import Recent
 from marinesim.sea.cascades import Tile, cell_variances, choose_tiles, regular_tile
 from marinesim.sea.dispersion import omega_from_k
-from marinesim.sea.fft import available_cpus
+from marinesim.sea.fft import available_cpus, mirrored
 from marinesim.sea.kinds import CHOPPINESS_RANGE
 from marinesim.sea.seastate import SeaState
 from marinesim.sea.synthesis import Lane, lane_workers
@@ -163,7 +163,7 @@ class Ocean:
         self._states = Recent(self._state)
         """Amplitudes of every cell after 0, 1, 2, ... ramps (the newest kept, older recomputed)."""
         self._used = self._amplitude0 != 0
-        self._used |= _mirror(self._used)
+        self._used |= mirrored(self._used)
         self._choppiness = require_within("choppiness", choppiness, *CHOPPINESS_RANGE)
         if threads is None:
             threads = len(available_cpus())
@@ -314,7 +314,7 @@ class Ocean:
         self._ramps.append(_Ramp(start, duration, prepared.sea))
         self._states.put(len(self._ramps), prepared.amplitudes)
         used = prepared.amplitudes != 0
-        used |= _mirror(used)
+        used |= mirrored(used)
         if np.any(used & ~self._used):  # new cells: every per-cell array grows
             self._used |= used
             self._index_cells()
@@ -420,9 +420,3 @@ class Ocean:
 def smoothstep(s: float | np.ndarray) -> float | np.ndarray:
     """The weight ``3 s^2 - 2 s^3`` of the new state at fraction ``s`` of a ramp (0 to 1, flat at both ends)."""
     return 3.0 * s * s - 2.0 * s**3
-
-
-def _mirror(used: np.ndarray) -> np.ndarray:
-    """``used[t, -iy, -ix]`` (FFT index order)."""
-    return np.roll(used[:, ::-1, ::-1], 1, axis=(1, 2))
-

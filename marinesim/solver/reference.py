@@ -9,13 +9,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from marinesim.sea.fft import mirrored
 from marinesim.solver.footprint import Triangles, displaced_depth
 from marinesim.solver.local import LocalSolver
-
-
-def mirrored(field: np.ndarray) -> np.ndarray:
-    """``field(-k)`` for a field in FFT order."""
-    return np.roll(field[::-1, ::-1], 1, axis=(0, 1))
 
 
 class ReferenceSolver(LocalSolver):
