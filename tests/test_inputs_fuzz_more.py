@@ -58,8 +58,7 @@ def outcome(read: Callable[[Path], object], valid: type, path: Path) -> None:
 
 # --- Capytaine NetCDF ------------------------------------------------------------------------------------
 
-@pytest.fixture(scope="module")
-def capytaine_dataset():
+def small_capytaine_dataset():
     """A 20 x 6 m barge (draft 2 m) solved by Capytaine at 4 frequencies and 3 directions."""
     import capytaine
     import xarray
@@ -72,6 +71,11 @@ def capytaine_dataset():
     problems = xarray.Dataset(coords={"omega": [0.3, 0.7, 1.1, 1.6], "wave_direction": [0.0, math.pi / 2, math.pi],
                                       "radiating_dof": list(body.dofs), "water_depth": [np.inf], "rho": [1025.0]})
     return capytaine.BEMSolver().fill_dataset(problems, body)
+
+
+@pytest.fixture(scope="module")
+def capytaine_dataset():
+    return small_capytaine_dataset()
 
 
 @pytest.fixture(scope="module")
