@@ -114,7 +114,7 @@ def json_text(data: dict) -> str:
 def commit_together(files: Sequence[AtomicFile]) -> None:
     """Rename every file into place in order, as one unit (see the module's docstring)."""
     backups: list[tuple[AtomicFile, Path | None]] = []
-    with _signals_held():
+    with signals_held():
         try:
             for file in files:
                 backups.append((file, _backup(file.path)))
@@ -146,7 +146,7 @@ def _backup(path: Path) -> Path | None:
 
 
 @contextlib.contextmanager
-def _signals_held() -> Iterator[None]:
+def signals_held() -> Iterator[None]:
     """SIGINT and SIGTERM are delivered only when the block ends (main thread; elsewhere a no-op)."""
     if threading.current_thread() is not threading.main_thread():
         yield

@@ -10,6 +10,7 @@ from __future__ import annotations
 import argparse
 import signal
 import sys
+from typing import NoReturn
 
 from marinesim import __version__
 from marinesim.cli import export, hull, rao, render, run, sea, wake
@@ -53,9 +54,17 @@ def _terminate(signum: int, frame: object) -> None:
     raise Terminated
 
 
+class Parser(argparse.ArgumentParser):
+    """argparse whose usage errors are one line (the usage itself is what ``--help`` prints); the commands'
+    parsers are of this class too (``add_subparsers`` makes them of their parent's)."""
+
+    def error(self, message: str) -> NoReturn:
+        self.exit(2, f"{self.prog}: error: {' '.join(message.split())} (see {self.prog} --help)\n")
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The whole command line: every command's options."""
-    parser = argparse.ArgumentParser(
+    parser = Parser(
         prog="marinesim",
         description="Ship motion and wake simulator: waves on FFT cascades, RAO response, Kelvin wake.",
     )

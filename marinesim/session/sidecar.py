@@ -8,6 +8,7 @@ sidecar holds no clock time: the same scenario, seed and inputs give the same by
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import platform
 from pathlib import Path
@@ -16,7 +17,7 @@ from typing import Callable
 import numpy as np
 
 from marinesim import __version__
-from marinesim.atomic import AtomicFile, commit_together, json_text, output_lock, writing
+from marinesim.atomic import AtomicFile, commit_together, json_text, output_lock, signals_held, writing
 from marinesim.sea.ocean import Components
 from marinesim.sea.summary import summary
 from marinesim.session.assembly import VARIANCE_FRACTION, Assembly
@@ -40,8 +41,12 @@ def write_table(path: Path, write: Callable[[Path], None], describe: Callable[[]
     """Write a table with ``write(temporary path)`` and its sidecar (``describe()`` after the table's name
     and ``data_sha256``) as one unit, the output locked against a second writer; returns the sidecar's path."""
     path = Path(path)
-    with output_lock(path):
-        table, sidecar = AtomicFile(path), AtomicFile(sidecar_path(path))
+    with output_lock(path), contextlib.ExitStack() as temporaries:
+        with signals_held():  # each temporary file's removal is registered before a signal can end the process
+            table = AtomicFile(path)
+            temporaries.callback(table.discard)
+            sidecar = AtomicFile(sidecar_path(path))
+            temporaries.callback(sidecar.discard)
         with writing(table, sidecar):
             write(table.temp)
             metadata = {"file": path.name, "data_sha256": sha256(table.temp)} | describe()

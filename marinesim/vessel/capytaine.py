@@ -123,7 +123,8 @@ def _open(path: Path):
         try:
             return xarray.open_dataset(path).load()
         except Exception as error:  # xarray raises many kinds for unreadable files
-            reason = f"{type(error).__name__}: {error}"
+            # its first line: xarray's "no IO backend" message goes on with lines of links
+            reason = f"{type(error).__name__}: {(str(error).strip().splitlines() or [''])[0]}"
         gc.collect()  # the half-opened file objects go now, while their complaints are ignored
     raise FileFormatError(path, None, f"not a readable NetCDF dataset ({reason})")
 
