@@ -7,12 +7,14 @@ from __future__ import annotations
 
 import subprocess
 import sys
+from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 from marinesim.angles import wave_beta_from_compass
+from marinesim.errors import MarinesimError
 from marinesim.sea import Cos2s, Jonswap, SeaState, WaveSystem
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -185,3 +187,13 @@ def wake_cache(tmp_path_factory):
         del os.environ["MARINESIM_CACHE_DIR"]
     else:
         os.environ["MARINESIM_CACHE_DIR"] = previous
+
+
+def outcome(read: Callable[[Path], object], valid: type, path: Path) -> None:
+    """Read ``path``: a ``valid`` object or a one-line :class:`MarinesimError`; anything else fails."""
+    try:
+        result = read(path)
+    except MarinesimError as error:
+        assert "\n" not in str(error) and str(error), repr(str(error))
+    else:
+        assert isinstance(result, valid)

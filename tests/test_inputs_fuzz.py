@@ -21,7 +21,7 @@ import trimesh
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from marinesim.errors import MarinesimError
+from conftest import outcome
 from marinesim.hull import Hull, load_hull
 from marinesim.scenario import load_scenario
 from marinesim.vessel.native import write_native
@@ -73,12 +73,7 @@ def check_reader(read: Callable[[Path], object], valid: type, lines: list[str], 
     with tempfile.TemporaryDirectory() as folder:
         path = Path(folder) / name
         path.write_text("\n".join(mutate(lines, edits)) + "\n")
-        try:
-            result = read(path)
-        except MarinesimError as error:
-            assert "\n" not in str(error) and str(error), repr(str(error))
-        else:
-            assert isinstance(result, valid)
+        outcome(read, valid, path)
 
 
 def native_lines() -> list[str]:

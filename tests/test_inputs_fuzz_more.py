@@ -24,6 +24,7 @@ import trimesh
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from conftest import outcome
 from marinesim.errors import MarinesimError
 from marinesim.hull import Hull, load_hull
 from marinesim.hull.visual import VisualMesh, load_visual_mesh
@@ -44,16 +45,6 @@ HOSTILE_TOKENS = st.one_of(
     st.floats(allow_nan=True, allow_infinity=True).map(repr),
     st.integers(min_value=-10**12, max_value=10**12).map(str),
 )
-
-
-def outcome(read: Callable[[Path], object], valid: type, path: Path) -> None:
-    """Read ``path``: a ``valid`` object or a one-line :class:`MarinesimError`; anything else fails."""
-    try:
-        result = read(path)
-    except MarinesimError as error:
-        assert "\n" not in str(error) and str(error), repr(str(error))
-    else:
-        assert isinstance(result, valid)
 
 
 # --- Capytaine NetCDF ------------------------------------------------------------------------------------
