@@ -16,6 +16,7 @@ from pydantic import AfterValidator, BaseModel, ConfigDict, Field, ValidationErr
 from pydantic_core import PydanticCustomError, core_schema
 
 from marinesim.errors import ScenarioError
+from marinesim.formats import extensions, formats
 from marinesim.hull.mesh import UNITS
 from marinesim.sea.kinds import (CHOPPINESS_RANGE, MAX_DEPTH_M, MAX_FETCH_KM, MAX_HS_M, MAX_RESOLUTION, MAX_U10_M_S,
                                  MAX_WAVE_HEIGHT_M, PERIOD_RANGE_S, SPECTRUM_TYPES, SPREADING_TYPES, misplaced)
@@ -179,7 +180,8 @@ WAVE_PARAMETERS = {"hs_m": "hs", "tp_s": "tp", "gamma": "gamma", "u10_m_s": "u10
 class VesselOptions(Section):
     """``[vessel]``: the RAO table, hull and visual mesh (paths relative to the scenario), course, points."""
 
-    rao: str = Field(description="RAO file (WAMIT .4, VERES .re1, Capytaine .nc, marinesim .csv)")
+    rao: str = Field(description="RAO file (" + ", ".join(f"{f.name} {' '.join(f.extensions)}" for f in formats("rao"))
+                     + ")")
     speed_kn: Annotated[float, Quantity("kn", ge=0.0, le=MAX_SPEED_KN)] = Field(
         0.0, description="speed, within the RAO table's speeds if it has several")
     heading_deg: Annotated[float, Quantity("deg", ge=0.0, le=360.0, what="a compass heading")] = Field(
@@ -188,7 +190,7 @@ class VesselOptions(Section):
         None, description="WAMIT length scale ULEN; absent: from the .gdf beside the .4")
     roll_damping_pct: Annotated[float, Quantity("% of critical", ge=0.0, lt=100.0)] = Field(
         0.0, description="extra linear roll damping (Capytaine datasets)")
-    hull: str | None = Field(None, description="hull mesh (.gdf, .stl, .obj, .ply, .glb, .off): the wake")
+    hull: str | None = Field(None, description=f"hull mesh ({', '.join(extensions('mesh'))}): the wake")
     hull_units: Literal[tuple(UNITS)] = Field("m", description="the hull mesh's length units")
     hull_scale: Annotated[float, Quantity(gt=0.0)] = Field(1.0, description="geometric scale (50 for a 1:50 model)")
     hull_axes: str = Field("x,y,z", description='mesh axes that become body x, y, z (e.g. "x,-z,y")')
