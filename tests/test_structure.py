@@ -1,7 +1,7 @@
 """The tree reads as the data flow: every import points down the layers, and no modules import each other.
 
 Layers, lowest first: the shared base (errors, constants, the pose, atomic writes, ...), the physics
-packages (sea, hull, vessel, wake, solver, in that order), the scenario model, the session layer,
+packages (sea, hull, vessel, wake, solver, in that order), the motion criteria, the scenario model, the session layer,
 the renderer, the command line. A module may import its own layer and those below it; an import
 the other way (the renderer's timeline being imported by the export, as it once was) fails here.
 """
@@ -19,7 +19,7 @@ PACKAGE = ROOT / "marinesim"
 LAYERS = (
     {"__init__", "errors", "constants", "angles", "atomic", "cache", "tokens", "recent", "progress",
      "resources", "formats", "pose", "gl"},
-    {"sea"}, {"hull"}, {"vessel"}, {"wake"}, {"solver"},
+    {"sea"}, {"hull"}, {"vessel"}, {"wake"}, {"solver"}, {"criteria"},
     {"scenario"}, {"session"}, {"render"}, {"cli", "__main__"},
 )
 
