@@ -8,15 +8,16 @@ line and exit with 130 and 143.
 from __future__ import annotations
 
 import argparse
+import importlib
 import signal
 import sys
 from typing import NoReturn
 
 from marinesim import __version__
-from marinesim.cli import export, hull, rao, render, run, sea, wake
+from marinesim.cli import assess, export, hull, rao, render, run, sea, wake
 from marinesim.errors import MarinesimError
 
-COMMANDS = (run, render, export, rao, hull, wake, sea)
+COMMANDS = (run, render, export, assess, rao, hull, wake, sea)
 """The command modules, in the order ``--help`` lists them."""
 
 
@@ -33,6 +34,7 @@ def main(argv: list[str] | None = None) -> int:
         return 0
     previous = signal.signal(signal.SIGTERM, _terminate)
     try:
+        _load(sys.modules[args.handler.__module__].NEEDS)
         return args.handler(args)
     except MarinesimError as error:
         print(f"marinesim {args.command}: error: {error}", file=sys.stderr)
@@ -52,6 +54,22 @@ def main(argv: list[str] | None = None) -> int:
 
 def _terminate(signum: int, frame: object) -> None:
     raise Terminated
+
+
+def _load(modules: tuple[str, ...]) -> None:
+    """Import ``modules`` with SIGINT and SIGTERM noted, not raised, and delivered once they are in: an
+    interrupt inside an import (scipy's, for one) can leave the import broken and end in a traceback."""
+    noted: list[int] = []
+    held = (signal.SIGINT, signal.SIGTERM)
+    previous = {number: signal.signal(number, lambda number, frame: noted.append(number)) for number in held}
+    try:
+        for name in modules:
+            importlib.import_module(name)
+    finally:
+        for number, handler in previous.items():
+            signal.signal(number, handler)
+    if noted:
+        signal.raise_signal(noted[0])
 
 
 class Parser(argparse.ArgumentParser):

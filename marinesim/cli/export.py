@@ -8,6 +8,9 @@ from pathlib import Path
 from marinesim.cli.common import bars
 
 
+NEEDS = ("marinesim.scenario", "marinesim.session.assembly", "marinesim.session.export")
+"""The modules the command loads before it starts (Ctrl-C is held until they are in)."""
+
 def add(commands: argparse._SubParsersAction) -> None:
     p = commands.add_parser(
         "export", help="write the vessel's motion time series (CSV + JSON sidecar)",

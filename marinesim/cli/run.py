@@ -12,9 +12,13 @@ HEADLESS_VIDEO = {"seconds": 10.0, "size": (640, 360), "fps": 25.0}
 DESCRIBED = {"sea_plot": "the sea state picture", "motions": "the vessel's 6-DOF motions",
              "sidecar": "their metadata", "motions_plot": "a plot of the motions", "rao_plot": "the RAOs",
              "elevation": "the wave elevation at (0, 0)", "elevation_plot": "a plot of it",
-             "wake_plot": "the Kelvin wake", "video": "a video of the first seconds"}
+             "wake_plot": "the Kelvin wake", "video": "a video of the first seconds",
+             "assessment": "the exercise's criteria and events"}
 """What each file of a headless run is, as the closing lines say."""
 
+
+NEEDS = ("marinesim.scenario", "marinesim.session.assembly", "marinesim.session.headless")
+"""The modules the command loads before it starts (Ctrl-C is held until they are in)."""
 
 def add(commands: argparse._SubParsersAction) -> None:
     p = commands.add_parser(
@@ -63,7 +67,7 @@ def handle(args: argparse.Namespace) -> int:
             return 0
     out_dir = args.out or Path("out") / scenario.name
     with reporting(bars(args.quiet)):
-        headless = run_headless(Assembly(scenario), out_dir)
+        headless = run_headless(Assembly(scenario), out_dir, log=print)
         for note in headless.notes:
             print(note)
         files = headless.files | _video(scenario, out_dir, args)

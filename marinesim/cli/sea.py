@@ -14,6 +14,9 @@ DEFAULTS = {"hs": 3.0, "tp": 9.0, "fetch_km": 100.0, "height": 2.0, "period": 10
 """The wave-system options' defaults, each given only to the kinds of wave system that take it."""
 
 
+NEEDS = ("marinesim.sea", "marinesim.sea.build", "marinesim.sea.summary")
+"""The modules the command loads before it starts (Ctrl-C is held until they are in)."""
+
 def add(commands: argparse._SubParsersAction) -> None:
     p = commands.add_parser(
         "sea", help="synthesise a sea state and report it",

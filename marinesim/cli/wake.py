@@ -10,6 +10,9 @@ from marinesim.errors import ParameterError
 from marinesim.formats import extensions
 
 
+NEEDS = ("marinesim.wake.cache", "marinesim.wake.compute", "marinesim.wake.plot")
+"""The modules the command loads before it starts (Ctrl-C is held until they are in)."""
+
 def add(commands: argparse._SubParsersAction) -> None:
     p = commands.add_parser(
         "wake", help="compute the Kelvin wake and wave resistance of a hull",

@@ -1,4 +1,5 @@
-"""The viewer's heads-up display: a text block, strip charts of the motions and a help panel.
+"""The viewer's heads-up display: a text block, strip charts of the motions, the exercise's criteria and
+messages, and a help panel.
 
 Everything is laid out in pixels with the origin at the top-left of the target; the shaders
 (``shaders/hud_text.*``, ``shaders/hud_line.*``) turn pixels into clip space with a ``viewport``
@@ -40,6 +41,10 @@ PANEL_COLOR = (0.0, 0.0, 0.0, 0.55)
 HELP_PANEL_COLOR = (0.0, 0.0, 0.0, 0.82)
 ZERO_LINE_COLOR = (0.55, 0.55, 0.55, 0.9)
 TRACE_COLOR = (0.35, 1.0, 0.45, 1.0)
+MESSAGE_COLOR = (1.0, 0.86, 0.45, 1.0)
+LEVEL_COLORS = {"settling": DIM_TEXT_COLOR, "ok": (0.45, 0.92, 0.5, 1.0), "caution": (1.0, 0.75, 0.2, 1.0),
+                "exceeded": (1.0, 0.35, 0.32, 1.0)}
+"""A criterion's text colour by level: grey while settling, green, amber, red."""
 
 Color = tuple[float, float, float, float]
 
@@ -177,13 +182,15 @@ class Hud:
         self._lookup[FIRST_CHAR:LAST_CHAR + 1] = np.arange(count)
 
     def draw(self, size: tuple[int, int], lines: Sequence[str], charts: Sequence[StripChart] = (),
-             help_lines: Sequence[str] | None = None) -> None:
+             help_lines: Sequence[str] | None = None, panel: Sequence[tuple[str, str]] = (),
+             messages: Sequence[str] = ()) -> None:
         """Draw onto the currently bound framebuffer of `size` (w, h) pixels, alpha-blended, depth test off:
         `lines` as a text block at the top-left on a translucent dark panel; `charts` stacked at the bottom-left
         (each: a panel about 360x70 px with its title, unit, current value, the min/max of the y axis as labels,
         a zero line, and the trace as a line strip, y range symmetric about zero and rounded up to a 1-2-5 step,
         never below a small floor so a flat signal is not magnified noise); `help_lines`, when given, centred on a
-        darker panel.
+        darker panel; ``panel`` (text, level) rows at the top-right, each coloured by its level
+        (:data:`LEVEL_COLORS`); ``messages`` at the top-centre in amber.
 
         The bound framebuffer, its viewport and the enable flags (blend, depth test, face culling) are
         restored afterwards; the blend function is left at ``moderngl.DEFAULT_BLENDING`` and texture
@@ -194,6 +201,14 @@ class Hud:
             self._text_block(base, MARGIN, MARGIN, lines, PAD, PANEL_COLOR)
         for index, chart in enumerate(charts):
             self._chart(base, chart, *self.chart_plot_rect(size, index, len(charts)))
+        if panel:
+            rows = [(text, LEVEL_COLORS[level]) for text, level in panel]
+            box_w = self._text_size([text for text, _ in rows], PAD)[0]
+            self._text_block(base, width - MARGIN - box_w, MARGIN, rows, PAD, PANEL_COLOR)
+        if messages:
+            box_w = self._text_size(messages, PAD)[0]
+            self._text_block(base, (width - box_w) // 2, MARGIN, [(m, MESSAGE_COLOR) for m in messages], PAD,
+                             PANEL_COLOR)
         layers = [base]
         if help_lines:
             box_w, box_h = self._text_size(help_lines, 2 * PAD)
@@ -238,10 +253,13 @@ class Hud:
         """A text block's panel size, px."""
         return (max(len(line) for line in lines) * self.advance + 2 * pad, len(lines) * self.line_height + 2 * pad)
 
-    def _text_block(self, layer: _Layer, x: int, y: int, lines: Sequence[str], pad: int, panel: Color) -> None:
-        layer.rect(x, y, *self._text_size(lines, pad), panel)
-        for row, line in enumerate(lines):
-            self._text(layer, x + pad, y + pad + row * self.line_height, line, TEXT_COLOR)
+    def _text_block(self, layer: _Layer, x: int, y: int, lines: Sequence[str | tuple[str, Color]], pad: int,
+                    panel: Color) -> None:
+        """Lines (text, or (text, colour)) on a panel with its top-left corner at (x, y), px."""
+        rows = [line if isinstance(line, tuple) else (line, TEXT_COLOR) for line in lines]
+        layer.rect(x, y, *self._text_size([text for text, _ in rows], pad), panel)
+        for row, (line, color) in enumerate(rows):
+            self._text(layer, x + pad, y + pad + row * self.line_height, line, color)
 
     def _text(self, layer: _Layer, x: float, y: float, text: str, color: Color) -> None:
         """One line of text with its first cell's top-left corner at (x, y), px."""

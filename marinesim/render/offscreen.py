@@ -91,7 +91,7 @@ class Offscreen:
         sim = self.scene.sim
         warm_from = max(t - 3.0 * FOAM_TAU_S, sim.time)
         if warm_from > sim.time:
-            sim.seek(warm_from)
+            self.scene.exercise.seek(warm_from)
         self.scene.prefill_history()
         self.scene.renderer.update()
         while sim.time < t - 1e-9:

@@ -9,6 +9,7 @@ the scene makes it and hands it to the simulation, which steps it.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 
 import moderngl
 import numpy as np
@@ -20,6 +21,7 @@ from marinesim.render.camera import BridgeCamera, FreeCamera, OrbitCamera
 from marinesim.render.hud import Hud, StripHistory
 from marinesim.render.renderer import Renderer, RenderOptions
 from marinesim.scenario import Scenario
+from marinesim.session.exercise import Exercise, quiet
 from marinesim.session.timeline import Simulation
 
 CHARTED = (("heave", "heave_m", "m"), ("roll", "roll_deg", "deg"), ("pitch", "pitch_deg", "deg"))
@@ -40,9 +42,11 @@ class Scene:
     sits on the scenario's point named ``bridge`` (else 10 m above the reference point)."""
 
     def __init__(self, ctx: moderngl.Context, scenario: Scenario, camera: str = "orbit",
-                 options: RenderOptions = RenderOptions()) -> None:
+                 options: RenderOptions = RenderOptions(), log: Callable[[str], None] = quiet) -> None:
         self.ctx = ctx
         self.sim = Simulation(scenario, wake=options.wake)
+        self.exercise = Exercise(self.sim, log=log)
+        """The scenario's events and criteria, moved on with the clock (``log``: each event as it happens)."""
         vessel = scenario.vessel
         if options.solver and vessel is not None and vessel.hull is not None:
             from marinesim.solver.gpu import GpuSolver
@@ -81,7 +85,7 @@ class Scene:
 
     def step(self, dt: float) -> None:
         """Advance the simulation ``dt`` s, sample the strip charts, bring the GPU up to date."""
-        self.sim.advance(dt)
+        self.exercise.advance(dt)
         self._sample_history()
         self.renderer.update()
 
@@ -105,7 +109,18 @@ class Scene:
         self.renderer.draw(self.camera.eye(self.sim.pose()), size)
         if hud:
             charts = [self.history.chart(name, unit) for name, _, unit in CHARTED] if self.sim.vessel else []
-            self.hud.draw(size, self.hud_lines(), charts, help_lines)
+            self.hud.draw(size, self.hud_lines(), charts, help_lines, self.criteria_panel(), self.exercise.messages())
+
+    def criteria_panel(self) -> list[tuple[str, str]]:
+        """(text, level) rows of the criteria panel: name, latest value / limit and unit, level."""
+        rows = []
+        readings = self.exercise.readings()
+        width = max((len(c.label) for c, _, _ in readings), default=0)
+        for criterion, value, level in readings:
+            shown = "   --  " if value is None else f"{value:7.3g}"
+            rows.append((f"{criterion.label:<{width}}  {shown} / {criterion.limit:<6.3g}"
+                         f"{criterion.measure.unit:<8}{level}", level))
+        return rows
 
     def hud_lines(self) -> list[str]:
         lines = self.sim.describe()

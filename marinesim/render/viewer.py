@@ -59,7 +59,7 @@ class Viewer:
             self.window.close()
             raise GraphicsError(f"the window has no OpenGL {GL_VERSION / 100:.1f} context ({error})") from None
         options = replace(options, solver=solver_wanted(self.ctx, solver))
-        self.scene = Scene(self.ctx, scenario, camera, options)
+        self.scene = Scene(self.ctx, scenario, camera, options, log=print)
         self.controls = Controls(self.scene)
         self.held: set[str] = set()
         self._last = time.perf_counter()

@@ -15,7 +15,11 @@ from typing import Annotated, Any, Literal, TypeVar, get_args, get_origin
 from pydantic import AfterValidator, BaseModel, ConfigDict, Field, ValidationError, WrapValidator, model_validator
 from pydantic_core import PydanticCustomError, core_schema
 
-from marinesim.errors import ScenarioError
+from marinesim.criteria.monitor import (CAUTION, MAX_WINDOW_ROWS, Criterion, check_point, default_name,
+                                       parse_condition, watched)
+from marinesim.criteria.quantities import QUANTITIES
+from marinesim.criteria.sickness import MAX_WF_DT_S
+from marinesim.errors import ParameterError, ScenarioError
 from marinesim.formats import extensions, formats
 from marinesim.hull.mesh import UNITS
 from marinesim.sea.kinds import (CHOPPINESS_RANGE, MAX_DEPTH_M, MAX_FETCH_KM, MAX_HS_M, MAX_RESOLUTION, MAX_U10_M_S,
@@ -30,6 +34,14 @@ MIN_DT_S = 1e-3
 """The shortest time step (s): a millisecond resolves any wave or ship motion many times over."""
 MAX_ROWS = 10**8
 """The most time steps in one run (and rows in one export): some 30 GB of CSV."""
+CHANGE_RAMP_S = 10.0
+"""Time over which a change blends in unless told otherwise (s): an event's default, the viewer's keys."""
+MAX_RAMP_S = 3600.0
+"""The longest blend of a change (s)."""
+MAX_EVENTS = 1000
+MAX_CRITERIA = 64
+MAX_MESSAGE = 500
+"""The most characters in an event's message."""
 
 
 @dataclass(frozen=True)
@@ -248,6 +260,75 @@ def _at_least_one(systems: list[SeaOptions]) -> list[SeaOptions]:
     return systems
 
 
+def _condition(text: str) -> str:
+    try:
+        parse_condition(text)
+    except ParameterError as error:
+        raise PydanticCustomError("condition", str(error)) from None
+    return text
+
+
+class EventOptions(Section):
+    """``[[events]]``: a change of sea, speed or heading, and/or a message, at a time or on a condition."""
+
+    at_s: Annotated[float | None, Quantity("s", ge=0.0, le=MAX_DURATION_S)] = Field(
+        None, description="when it happens; events with at_s come in time order")
+    when: Annotated[str | None, AfterValidator(lambda t: t if t is None else _condition(t))] = Field(
+        None, description='instead of at_s: the first evaluation at which a criterion\'s value (or a '
+                          '"[point.]quantity") meets a comparison, e.g. "bridge.vertical_acc_rms_m_s2 > 1.0"')
+    ramp_s: Annotated[float, Quantity("s", ge=0.0, le=MAX_RAMP_S)] = Field(
+        CHANGE_RAMP_S, description="how long the change blends in (> 0 for a sea change)")
+    sea: list[SeaOptions] | None = Field(None, description="wave systems that replace the sea (as [[sea]])")
+    speed_kn: Annotated[float | None, Quantity("kn", ge=0.0, le=MAX_SPEED_KN)] = Field(None, description="new speed")
+    heading_deg: Annotated[float | None, Quantity("deg", ge=0.0, le=360.0, what="a compass heading")] = Field(
+        None, description="new compass heading")
+    message: Annotated[str | None, Field(max_length=MAX_MESSAGE)] = Field(
+        None, description="shown in the viewer and the log when the event happens")
+
+    @model_validator(mode="after")
+    def _one_trigger_and_an_action(self) -> EventOptions:
+        if (self.at_s is None) == (self.when is None):
+            raise _refuse("at_s", "give exactly one of at_s and when")
+        if self.sea is not None:
+            if not self.sea:
+                raise _refuse("sea", "an empty list: give at least one wave system, or leave sea out")
+            if self.ramp_s == 0.0:
+                raise _refuse("ramp_s", "a sea change blends in over ramp_s > 0 s, got 0")
+        if all(getattr(self, key) is None for key in ("sea", "speed_kn", "heading_deg", "message")):
+            raise _refuse("message", "an event needs something to do: sea, speed_kn, heading_deg or message")
+        return self
+
+
+class CriterionOptions(Section):
+    """``[[criteria]]``: a quantity of the motions, at a point or of the vessel, against a limit."""
+
+    name: Annotated[str | None, Field(min_length=1, max_length=80)] = Field(
+        None, description="what the panel and the report call it; absent: point.quantity")
+    point: str | None = Field(None, description="a [vessel.points] name; absent for the vessel's own motions")
+    quantity: Literal[tuple(QUANTITIES)] = Field(description="what is measured (README: How the criteria are computed)")
+    limit: Annotated[float, Quantity(gt=0.0)] = Field(description="upper limit, in the quantity's unit")
+    window_s: Annotated[float | None, Quantity("s", ge=10.0, le=MAX_DURATION_S)] = Field(
+        None, description="running window; absent: 600 s, helideck quantities 1200 s")
+    caution: Annotated[float, Quantity(gt=0.0, le=1.0)] = Field(
+        CAUTION, description="fraction of the limit that raises a caution")
+    threshold_m: Annotated[float | None, Quantity("m", gt=0.0)] = Field(
+        None, description="relative_motion_exceedance: freeboard (green water) or draft (slamming)")
+    tipping_coefficient: Annotated[float | None, Quantity(gt=0.0, le=2.0)] = Field(
+        None, description="mii_per_min: l/h of a standing person; absent: 0.25")
+
+    @model_validator(mode="after")
+    def _options_fit_the_quantity(self) -> CriterionOptions:
+        if self.name is not None and any(op in self.name for op in "<>"):
+            raise _refuse("name", "a criterion's name cannot hold < or > (conditions compare names)")
+        takes = QUANTITIES[self.quantity].options
+        for key in ("threshold_m", "tipping_coefficient"):
+            if getattr(self, key) is not None and key not in takes:
+                raise _refuse(key, f"{self.quantity} takes no {key}")
+        if "threshold_m" in takes and self.threshold_m is None:
+            raise _refuse("threshold_m", f"required by {self.quantity}")
+        return self
+
+
 class ScenarioFile(Section):
     """A whole scenario file."""
 
@@ -256,6 +337,56 @@ class ScenarioFile(Section):
         default_factory=list, validate_default=True, description="one or more wave systems")
     vessel: VesselOptions | None = Field(None, description="the vessel; absent: a sea only")
     run: RunOptions = Field(default_factory=RunOptions, description="the run")
+    events: Annotated[list[EventOptions], Field(max_length=MAX_EVENTS)] = Field(
+        default_factory=list, description="the exercise's timeline")
+    criteria: Annotated[list[CriterionOptions], Field(max_length=MAX_CRITERIA)] = Field(
+        default_factory=list, description="motion limits evaluated live and by marinesim assess")
+
+    @model_validator(mode="after")
+    def _criteria_and_events_fit(self) -> ScenarioFile:
+        points = self.vessel.points if self.vessel is not None else {}
+        names: set[str] = set()
+        for i, criterion in enumerate(self.criteria):
+            where = f"criteria[{i}]"
+            if self.vessel is None:
+                raise _refuse(where, "criteria need a [vessel]")
+            try:
+                check_point(criterion.quantity, criterion.point, points)
+            except ParameterError as error:
+                raise _refuse(f"{where}.point", str(error)) from None
+            name = criterion.name or default_name(criterion.quantity, criterion.point)
+            if name in names:
+                raise _refuse(f"{where}.name", f"{name!r} names two criteria")
+            names.add(name)
+            window = criterion.window_s or QUANTITIES[criterion.quantity].window_s
+            if window / self.run.dt_s > MAX_WINDOW_ROWS:
+                raise _refuse(f"{where}.window_s", f"{window:g} s at run.dt_s {self.run.dt_s:g} s is more than "
+                                                   f"{MAX_WINDOW_ROWS} rows")
+            if QUANTITIES[criterion.quantity].dose is not None and self.run.dt_s > MAX_WF_DT_S:
+                raise _refuse(where, f"{criterion.quantity} filters the acceleration up to 0.63 Hz: it needs "
+                                     f"run.dt_s <= {MAX_WF_DT_S:g} s, got {self.run.dt_s:g}")
+        previous = 0.0
+        for i, event in enumerate(self.events):
+            where = f"events[{i}]"
+            if event.at_s is not None:
+                if event.at_s < previous:
+                    raise _refuse(f"{where}.at_s", f"{event.at_s:g} s comes before the event before it "
+                                                   f"({previous:g} s): give events in time order")
+                if event.at_s > self.run.duration_s:
+                    raise _refuse(f"{where}.at_s", f"{event.at_s:g} s is after the run's end "
+                                                   f"(run.duration_s {self.run.duration_s:g} s)")
+                previous = event.at_s
+            if self.vessel is None and (event.speed_kn is not None or event.heading_deg is not None):
+                raise _refuse(where, "speed_kn and heading_deg need a [vessel]")
+            if event.when is not None:
+                if self.vessel is None:
+                    raise _refuse(f"{where}.when", "a condition watches the vessel's motions: it needs a [vessel]")
+                try:
+                    watched(parse_condition(event.when), [Criterion(c.quantity, point=c.point, name=c.name)
+                                                          for c in self.criteria], points)
+                except ParameterError as error:
+                    raise _refuse(f"{where}.when", str(error)) from None
+        return self
 
 
 M = TypeVar("M", bound=BaseModel)
@@ -345,11 +476,14 @@ def _type_name(annotation: Any) -> tuple[str, str]:
     if origin is Literal:
         return "str", ", ".join(args)
     if origin is list:
-        return f"list of {_type_name(args[0])[0]}", ""
+        inner = _type_name(args[0])[0]
+        return "list of " + ("tables" if inner == "table" else inner), ""
     if origin is dict:
         return _type_name(args[1])[0], ""
     if args:
         return _type_name(args[0])
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        return "table", ""
     return annotation.__name__, ""
 
 

@@ -13,10 +13,14 @@ from typing import Any
 
 from marinesim import formats
 from marinesim.constants import KNOT
+from marinesim.criteria.interruptions import DEFAULT_TIPPING_COEFFICIENT
+from marinesim.criteria.monitor import Condition, Criterion, parse_condition
+from marinesim.criteria.quantities import Options
 from marinesim.errors import FileFormatError, MarinesimError, ScenarioError
 from marinesim.hull import Hull, VisualMesh, load_hull, load_visual_mesh
-from marinesim.scenario.model import (HULL_OPTIONS, VISUAL_MESH_OPTIONS, WAVE_PARAMETERS, OceanOptions, RunOptions,
-                                      ScenarioFile, VesselOptions, validate)
+from marinesim.scenario.model import (HULL_OPTIONS, VISUAL_MESH_OPTIONS, WAVE_PARAMETERS, CriterionOptions,
+                                      EventOptions, OceanOptions, RunOptions, ScenarioFile, SeaOptions, VesselOptions,
+                                      validate)
 from marinesim.sea.build import wave_system
 from marinesim.sea.seastate import SeaState
 from marinesim.vessel.rao import RaoTable
@@ -43,14 +47,48 @@ class Vessel:
 
 
 @dataclass(frozen=True)
+class Event:
+    """A scripted change and/or message: at ``at_s`` (s) or when ``condition`` first holds. A change
+    (``None`` keeps that quantity) blends in over ``ramp_s`` (s)."""
+
+    at_s: float | None
+    condition: Condition | None
+    ramp_s: float
+    sea: SeaState | None = None
+    speed_m_s: float | None = None
+    heading_deg: float | None = None      # compass, where the bow points
+    message: str | None = None
+
+    @property
+    def changes(self) -> bool:
+        return self.sea is not None or self.speed_m_s is not None or self.heading_deg is not None
+
+    def describe(self) -> str:
+        """The event in a few words, e.g. ``at 300 s: sea Hs 4.00 m Tp 9.0 s over 30 s``."""
+        parts = []
+        if self.sea is not None:
+            parts.append(f"sea Hs {self.sea.hs:.2f} m Tp {self.sea.tp:.1f} s")
+        if self.speed_m_s is not None:
+            parts.append(f"speed {self.speed_m_s / KNOT:.3g} kn")
+        if self.heading_deg is not None:
+            parts.append(f"heading {self.heading_deg:g} deg")
+        change = " ".join(parts) + (f" over {self.ramp_s:g} s" if parts else "")
+        trigger = f"at {self.at_s:g} s" if self.at_s is not None else f"when {self.condition}"
+        return f"{trigger}: " + "; ".join(p for p in (change, self.message and repr(self.message)) if p)
+
+
+@dataclass(frozen=True)
 class Scenario:
-    """A validated scenario: the sea state, the ocean's options, the vessel (if any), the run."""
+    """A validated scenario: the sea state, the ocean's options, the vessel (if any), the run, the
+    exercise's events (in file order) and criteria."""
 
     path: Path
     sea: SeaState
     ocean: OceanOptions
     run: RunOptions
     vessel: Vessel | None = None
+    events: tuple[Event, ...] = ()
+    criteria: tuple[Criterion, ...] = ()
 
     @property
     def name(self) -> str:
@@ -85,29 +123,58 @@ def with_run(scenario: Scenario, duration: float | None = None, dt: float | None
 
 def _build(path: Path, file: ScenarioFile) -> Scenario:
     depth = math.inf if file.ocean.depth_m is None else file.ocean.depth_m
-    systems = [_checked(f"sea[{i}]", lambda s=s: wave_system(
-        s.type, from_deg=s.from_deg, depth=depth,
-        **{WAVE_PARAMETERS[key]: getattr(s, key) for key in s.model_fields_set if key in WAVE_PARAMETERS}))
-        for i, s in enumerate(file.sea)]
-    sea = _checked("ocean.depth_m", lambda: SeaState(tuple(systems), depth=depth))
+    sea = _sea("sea", file.sea, depth, "ocean.depth_m")
     vessel = None if file.vessel is None else _vessel(path, file.vessel)
+    events = tuple(_event(f"events[{i}]", e, depth, vessel) for i, e in enumerate(file.events))
+    criteria = tuple(_criterion(c) for c in file.criteria)
     if vessel is not None and vessel.hull is not None:
         draft = -float(vessel.hull.vertices[:, 2].min())
         if depth <= draft:
             raise ScenarioError(f"ocean.depth_m: {depth:g} m is not deeper than the hull's draft ({draft:.4g} m, "
                                 "vessel.hull): the keel would be on the sea bed")
-    return Scenario(path.resolve(), sea, file.ocean, file.run, vessel)
+    return Scenario(path.resolve(), sea, file.ocean, file.run, vessel, events, criteria)
+
+
+def _sea(where: str, options: list[SeaOptions], depth: float, whole: str) -> SeaState:
+    """The sea state of the wave systems ``options`` (``where`` in the file) in water ``depth`` (m);
+    an error of the systems together is reported at ``whole``."""
+    systems = [_checked(f"{where}[{i}]", lambda s=s: wave_system(
+        s.type, from_deg=s.from_deg, depth=depth,
+        **{WAVE_PARAMETERS[key]: getattr(s, key) for key in s.model_fields_set if key in WAVE_PARAMETERS}))
+        for i, s in enumerate(options)]
+    return _checked(whole, lambda: SeaState(tuple(systems), depth=depth))
+
+
+def _event(where: str, options: EventOptions, depth: float, vessel: Vessel | None) -> Event:
+    sea = None if options.sea is None else _sea(f"{where}.sea", options.sea, depth, f"{where}.sea")
+    speed = None if options.speed_kn is None else options.speed_kn * KNOT
+    if speed is not None:
+        _check_speed(f"{where}.speed_kn", vessel.rao, options.speed_kn)
+    condition = None if options.when is None else parse_condition(options.when)
+    return Event(options.at_s, condition, options.ramp_s, sea, speed, options.heading_deg, options.message)
+
+
+def _criterion(options: CriterionOptions) -> Criterion:
+    tipping = options.tipping_coefficient or DEFAULT_TIPPING_COEFFICIENT
+    return Criterion(options.quantity, options.limit, options.point, options.name, options.window_s, options.caution,
+                     Options(options.threshold_m, tipping))
+
+
+def _check_speed(where: str, rao: RaoTable, speed_kn: float) -> None:
+    """Refuse a speed outside the RAO table's speeds (a table of one speed serves any)."""
+    low, high = rao.speed_range
+    speed = speed_kn * KNOT
+    if rao.speed.size > 1 and not low - 1e-6 <= speed <= high + 1e-6:
+        raise ScenarioError(f"{where}: {speed_kn:g} kn is outside the RAO table's speeds "
+                            f"{low / KNOT:.3g}..{high / KNOT:.3g} kn")
 
 
 def _vessel(path: Path, options: VesselOptions) -> Vessel:
     rao_path = _checked("vessel.rao", lambda: _file(path, options.rao))
     rao = _checked("vessel.rao", lambda: read_rao(rao_path, ulen=options.ulen_m,
                                                    roll_damping=options.roll_damping_pct / 100.0))
-    low, high = rao.speed_range
+    _check_speed("vessel.speed_kn", rao, options.speed_kn)
     speed = options.speed_kn * KNOT
-    if rao.speed.size > 1 and not low - 1e-6 <= speed <= high + 1e-6:
-        raise ScenarioError(f"vessel.speed_kn: {options.speed_kn:g} kn is outside the RAO table's speeds "
-                            f"{low / KNOT:.3g}..{high / KNOT:.3g} kn")
     hull_path, hull = _mesh(path, options, "hull", HULL_OPTIONS, load_hull)
     _, visual = _mesh(path, options, "visual_mesh", VISUAL_MESH_OPTIONS, load_visual_mesh)
     speeds_kn = ([options.speed_kn] if options.speed_kn > 0 else []) + options.wake_speeds_kn

@@ -1,5 +1,8 @@
 """The vessel's motions over a run, exported: CSV (or Parquet) plus a JSON sidecar.
 
+The rows come from the run as an exercise (:class:`~marinesim.session.exercise.Exercise`): the
+scenario's events change the sea, speed and heading as they do in the viewer and in ``assess``.
+
 Columns and sidecar as docs/CONVENTIONS.md ("Time series and files"). The table streams to
 disk in blocks, so memory stays flat with duration; it and its sidecar are written to temporary
 files renamed into place together at the end (:func:`~marinesim.session.sidecar.write_table`), so
@@ -9,6 +12,7 @@ Same scenario and seed: byte-identical files (the sidecar holds no clock time).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from typing import IO, Iterable
@@ -19,7 +23,9 @@ from marinesim.errors import MarinesimError, ParameterError, require_positive
 from marinesim.scenario.model import MAX_ROWS
 from marinesim.progress import Bar, task
 from marinesim.session.assembly import Assembly
+from marinesim.session.exercise import Exercise, last_row, quiet
 from marinesim.session.sidecar import run_sidecar, sha256, write_table
+from marinesim.session.timeline import Simulation
 
 FORMATS = ("csv", "parquet")
 EXTENSIONS = {".csv": "csv", ".parquet": "parquet", ".pq": "parquet"}
@@ -38,13 +44,15 @@ class Export:
     sidecar: Path
     rows: int
     columns: list[str]
+    exercise: Exercise
 
 
 def export_motions(assembly: Assembly, out: Path, file_format: str | None = None,
-                   duration_s: float | None = None) -> Export:
+                   duration_s: float | None = None, log: Callable[[str], None] = quiet) -> Export:
     """Write the motions of the assembled scenario over ``[0, duration_s]`` (default: its run) at the run's
     dt to ``out`` (``file_format`` csv or parquet; default: from the extension, else csv), with its
-    sidecar ``<out>.json``, as one unit."""
+    sidecar ``<out>.json``, as one unit. Each event that happens is passed to ``log``; the returned
+    :class:`Export` holds the exercise run (its events and criteria)."""
     out = Path(out)
     if not out.name or out.name in (".", ".."):
         raise ParameterError(f"the export needs a file name, got {str(out)!r}")
@@ -52,13 +60,16 @@ def export_motions(assembly: Assembly, out: Path, file_format: str | None = None
     scenario = assembly.scenario
     run = scenario.run
     duration = run.duration_s if duration_s is None else require_positive("duration", duration_s)
-    steps = int(round(duration / run.dt_s)) + 1
+    steps = last_row(duration, run.dt_s) + 1
     if steps > MAX_ROWS:
         raise ParameterError(f"{duration:g} s at dt {run.dt_s:g} s is {steps:.3g} rows, more than {MAX_ROWS:.0e} "
                              "per export")
+    columns = assembly.response.columns  # refuses a scenario without a vessel
+    simulation = Simulation(scenario, wake=False, assembly=assembly)
+    exercise = Exercise(simulation, duration, log)
 
     def write(temp: Path) -> None:
-        blocks = assembly.response.frames(0.0, run.dt_s, steps)
+        blocks = exercise.blocks()
         with task(f"export {out.name}", steps) as bar:
             (_write_csv if file_format == "csv" else _write_parquet)(temp, blocks, bar)
 
@@ -67,7 +78,7 @@ def export_motions(assembly: Assembly, out: Path, file_format: str | None = None
         return {
             "format": file_format,
             "rows": steps,
-            "columns": response.columns,
+            "columns": columns,
             "conventions": CONVENTIONS,
             **run_sidecar(assembly, duration, run.dt_s, response.components),
             "vessel": {
@@ -82,10 +93,14 @@ def export_motions(assembly: Assembly, out: Path, file_format: str | None = None
                 "heading_deg": vessel.heading_deg,
                 "points_m": {name: list(p) for name, p in vessel.points.items()},
             },
+            "events": [{"index": h.index, "time_s": h.time_s, "what": h.event.describe()} for h in exercise.happened],
         }
 
-    sidecar = write_table(out, write, describe)
-    return Export(out, sidecar, steps, assembly.response.columns)
+    try:
+        sidecar = write_table(out, write, describe)
+    finally:
+        simulation.close()
+    return Export(out, sidecar, steps, columns, exercise)
 
 
 def table_format(path: Path, file_format: str | None) -> str:

@@ -4,22 +4,25 @@ Into one folder: ``sea.png`` (spectrum and surface); with a vessel, ``motions.cs
 sidecar ``motions.csv.json`` (as ``marinesim export``), ``motions.png`` and ``rao.png``, and with a hull and a speed
 ``wake.png`` (the Kelvin wake, precomputed into the cache for every scenario speed); without one,
 ``wave_elevation.csv`` (elevation at the origin), its sidecar ``wave_elevation.csv.json`` and
-``wave_elevation.png``.
+``wave_elevation.png``. A scenario with criteria also gets ``assessment.json``, what ``marinesim
+assess --json`` prints; its events change the run as in the viewer.
 Same scenario and seed: bit-identical tables. The ocean is built once, for all of them.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 
-from marinesim.atomic import atomic_path
+from marinesim.atomic import atomic_path, json_text
 from marinesim.constants import KNOT
 from marinesim.progress import task
 from marinesim.sea.plot import plot_sea, plot_series
 from marinesim.session.assembly import Assembly
+from marinesim.session.exercise import last_row, quiet
 from marinesim.session.export import export_motions
 from marinesim.session.sidecar import run_sidecar, write_table
 from marinesim.vessel.plot import plot_motions, plot_rao
@@ -36,8 +39,9 @@ class Headless:
     notes: list[str] = field(default_factory=list)
 
 
-def run_headless(assembly: Assembly, out_dir: Path) -> Headless:
-    """Run the assembled scenario without a display into ``out_dir`` (made if missing)."""
+def run_headless(assembly: Assembly, out_dir: Path, log: Callable[[str], None] = quiet) -> Headless:
+    """Run the assembled scenario without a display into ``out_dir`` (made if missing); each event that
+    happens is passed to ``log``."""
     out_dir.mkdir(parents=True, exist_ok=True)
     scenario = assembly.scenario
     result = Headless({"sea_plot": out_dir / "sea.png"})
@@ -48,9 +52,13 @@ def run_headless(assembly: Assembly, out_dir: Path) -> Headless:
         return result
     import pandas as pd
 
-    export = export_motions(assembly, out_dir / "motions.csv")
+    export = export_motions(assembly, out_dir / "motions.csv", log=log)
     result.files |= {"motions": export.table, "sidecar": export.sidecar, "motions_plot": out_dir / "motions.png",
                      "rao_plot": out_dir / "rao.png"}
+    if scenario.criteria:
+        result.files["assessment"] = out_dir / "assessment.json"
+        with atomic_path(result.files["assessment"]) as temp:
+            temp.write_text(json_text(export.exercise.assessment()), encoding="utf-8")
     vessel = scenario.vessel
     with atomic_path(result.files["motions_plot"]) as temp:
         plot_motions(pd.read_csv(export.table), temp,
@@ -93,7 +101,7 @@ def _wave_elevation(assembly: Assembly, out_dir: Path) -> dict[str, Path]:
 
     files = {"elevation": out_dir / "wave_elevation.csv", "elevation_plot": out_dir / "wave_elevation.png"}
     scenario, run = assembly.scenario, assembly.scenario.run
-    steps = int(round(run.duration_s / run.dt_s)) + 1
+    steps = last_row(run.duration_s, run.dt_s) + 1
     times = np.arange(steps) * run.dt_s
     components = assembly.components()
     elevation = np.empty(steps)

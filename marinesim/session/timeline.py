@@ -29,7 +29,7 @@ from marinesim.errors import ParameterError, require_at_least, require_positive
 from marinesim.pose import Pose
 from marinesim.recent import Recent
 from marinesim.scenario import Scenario
-from marinesim.scenario.model import MAX_SPEED_KN
+from marinesim.scenario.model import CHANGE_RAMP_S, MAX_SPEED_KN
 from marinesim.sea.ocean import smoothstep
 from marinesim.sea.seastate import SeaState, scaled_sea
 from marinesim.session.assembly import Assembly
@@ -38,8 +38,6 @@ from marinesim.vessel.response import Response, Track
 from marinesim.wake.cache import cached_wake
 from marinesim.wake.compute import QUALITATIVE_BELOW_FROUDE, Wake, WakeGrid
 
-CHANGE_RAMP_S = 10.0
-"""Time over which a live change blends in unless told otherwise (s): the viewer's keys use it."""
 PREPARE_S = 0.5
 """A sea change starts this long (s) after it is asked for, or when the blend before it ends if
 later: meanwhile a worker thread computes its amplitudes (:meth:`Ocean.prepare`, 0.1-0.2 s at
@@ -84,9 +82,10 @@ class Leg:
 class Simulation:
     """The scenario's ocean, vessel and wake, advanced by :meth:`advance` and queried at any time."""
 
-    def __init__(self, scenario: Scenario, *, wake: bool = True, wake_grid: WakeGrid = WAKE_GRID) -> None:
+    def __init__(self, scenario: Scenario, *, wake: bool = True, wake_grid: WakeGrid = WAKE_GRID,
+                 assembly: Assembly | None = None) -> None:
         self.scenario = scenario
-        self.assembly = Assembly(scenario)
+        self.assembly = Assembly(scenario) if assembly is None else assembly
         self.ocean = self.assembly.ocean
         self.time = 0.0
         self.vessel = scenario.vessel
@@ -110,6 +109,8 @@ class Simulation:
 
     def _respond(self, index: int) -> Response:
         """The response on leg ``index``: to the sea it blends into, along its track."""
+        if index == 0:
+            return self.assembly.response
         leg = self.legs[index]
         components = self.assembly.components(t=leg.start + leg.ramp_s)
         return Response(self.vessel.rao, components, leg.track, self.vessel.points)
@@ -118,10 +119,11 @@ class Simulation:
         """The vessel's response on leg ``index`` (the scenario must have a vessel)."""
         return self._responses.get(index, len(self.legs) - 1)
 
-    def advance(self, dt: float) -> None:
-        """Move the clock on by ``dt`` (s), start the changes waiting for a blend to end, step the solver."""
+    def advance(self, dt: float, step_solver: bool = True) -> None:
+        """Move the clock on by ``dt`` (s), start the changes waiting for a blend to end, step the solver
+        (unless told not to: a seek places it once at the end)."""
         self._move_clock(dt)
-        if self.solver is not None and dt > 0:
+        if self.solver is not None and dt > 0 and step_solver:
             self.solver.step(dt, self.pose())
 
     def seek(self, t: float) -> None:
@@ -171,20 +173,26 @@ class Simulation:
         return math_to_compass(self.legs[-1].track.heading if requested is None else requested)
 
     def change(self, *, hs_factor: float = 1.0, tp_factor: float = 1.0, turn_waves_deg: float = 0.0,
-               speed_kn: float | None = None, heading_deg: float | None = None,
-               ramp_s: float = CHANGE_RAMP_S) -> None:
+               sea: SeaState | None = None, speed_kn: float | None = None, heading_deg: float | None = None,
+               ramp_s: float = CHANGE_RAMP_S, at: float | None = None) -> None:
         """Ask for a change: all wave heights times ``hs_factor``, periods times ``tp_factor``,
-        directions turned by ``turn_waves_deg`` (compass, clockwise), a new speed or compass heading."""
+        directions turned by ``turn_waves_deg`` (compass, clockwise), or a new ``sea``; a new speed or
+        compass heading. It starts at ``at`` (s; default now, a sea change :data:`PREPARE_S` later),
+        or when the blend before it ends if later."""
         if speed_kn is not None and not 0.0 <= speed_kn <= MAX_SPEED_KN:
             raise ParameterError(f"speed must be within 0..{MAX_SPEED_KN:g} kn, got {speed_kn!r}")
         speed = None if speed_kn is None else speed_kn * KNOT
         heading = None if heading_deg is None else compass_to_math(heading_deg % 360.0)
-        change = _Change(None, speed, heading, require_at_least("ramp time (s)", ramp_s, 0.0), self.time)
+        start = self.time if at is None else require_at_least("start of a change (s)", at, 0.0)
+        change = _Change(None, speed, heading, require_at_least("ramp time (s)", ramp_s, 0.0), start)
         if (hs_factor, tp_factor, turn_waves_deg) != (1.0, 1.0, 0.0):
+            if sea is not None:
+                raise ParameterError("give a new sea or factors of the present one, not both")
             sea = scaled_sea(self.sea, hs_factor, tp_factor, turn_waves_deg)
+        if sea is not None:
             require_positive("ramp time of a sea change (s)", ramp_s)  # refused now, not when it starts
             self.ocean.check(sea)
-            change = dataclasses.replace(change, sea=sea, ready_at=self.time + PREPARE_S,
+            change = dataclasses.replace(change, sea=sea, ready_at=start + (PREPARE_S if at is None else 0.0),
                                          prepared=self._preparing.submit(self.ocean.prepare, sea))
         self._pending.append(change)
         self.advance(0.0)
@@ -236,6 +244,21 @@ class Simulation:
         if self.vessel is None:
             raise ParameterError("the scenario has no vessel: no motions to record")
         return self.response(len(self.legs) - 1).frame(times, self._linear(times))
+
+    def frame_steps(self, start: float, dt: float, steps: int) -> dict[str, np.ndarray]:
+        """:meth:`frame` at ``start + dt * arange(steps)``: within one leg's steady part through the
+        response's block product (:meth:`Response.linear_steps`), across a blend leg by leg."""
+        times = start + dt * np.arange(steps)
+        index = len(self.legs) - 1
+        while index > 0 and self.legs[index].start > times[0]:
+            index -= 1
+        leg = self.legs[index]
+        after = self.legs[index + 1].start if index + 1 < len(self.legs) else math.inf
+        if times[0] >= leg.start + leg.ramp_s and times[-1] < after:
+            linear = np.concatenate([out for _, out in self.response(index).linear_steps(start, dt, steps)])
+        else:
+            linear = self._linear(times)
+        return self.response(len(self.legs) - 1).frame(times, linear)
 
     def _linear(self, times: np.ndarray) -> np.ndarray:
         """The responses' linear outputs (:meth:`Response.linear`) at ``times``, blended across legs;

@@ -1,0 +1,63 @@
+"""``marinesim assess``: run a scenario headless, events included, and report its motion criteria."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from marinesim.cli.common import bars, json_text
+
+
+NEEDS = ("marinesim.scenario", "marinesim.session.exercise", "marinesim.session.timeline")
+"""The modules the command loads before it starts (Ctrl-C is held until they are in)."""
+
+def add(commands: argparse._SubParsersAction) -> None:
+    p = commands.add_parser(
+        "assess", help="run a scenario's exercise headless and report its criteria",
+        description="Run the scenario headless over its duration, its events included, evaluate each "
+                    "[[criteria]] entry over its running window, and report the worst value of each, the "
+                    "time spent above its limit and when it first went above, the events and a verdict.")
+    p.add_argument("scenario", type=Path, help="scenario TOML file with [[criteria]]")
+    p.add_argument("--json", action="store_true", help="print the assessment as JSON")
+    p.add_argument("--duration", type=float, help="run length, s (default: the scenario's)")
+    p.add_argument("--seed", type=int, help="random seed (default: the scenario's)")
+    p.add_argument("--quiet", action="store_true", help="no progress bar")
+    p.set_defaults(handler=handle)
+
+
+def handle(args: argparse.Namespace) -> int:
+    from marinesim.errors import ScenarioError
+    from marinesim.progress import reporting
+    from marinesim.scenario import load_scenario, with_run
+    from marinesim.session.exercise import Exercise
+    from marinesim.session.timeline import Simulation
+
+    scenario = with_run(load_scenario(args.scenario), args.duration, seed=args.seed)
+    if not scenario.criteria:
+        raise ScenarioError(f"{scenario.path}: no [[criteria]]: nothing to assess")
+    log = (lambda line: print(line, file=sys.stderr)) if args.json else print
+    simulation = Simulation(scenario, wake=False)
+    try:
+        exercise = Exercise(simulation, log=log)
+        with reporting(bars(args.quiet)):
+            exercise.run()
+    finally:
+        simulation.close()
+    result = exercise.assessment()
+    print(json_text(result, indent=2) if args.json else "\n".join(table(result)))
+    return 0
+
+
+def table(result: dict) -> list[str]:
+    """The assessment as text lines: one per criterion, then the verdict."""
+    rows = [("criterion", "worst", "limit", "unit", "level", "above limit", "first above")]
+    for c in result["criteria"]:
+        worst = "settling" if c["value"] is None else f"{c['value']:.3g}"
+        first = "-" if c["first_exceeded_s"] is None else f"{c['first_exceeded_s']:.0f} s"
+        rows.append((c["name"], worst, f"{c['limit']:.3g}", c["unit"] or "-", c["level"],
+                     f"{c['time_exceeded_s']:.0f} s", first))
+    widths = [max(len(row[i]) for row in rows) for i in range(len(rows[0]))]
+    lines = [f"{result['scenario']}: {result['duration_s']:g} s at dt {result['dt_s']:g} s, seed {result['seed']}"]
+    lines += ["  ".join(cell.ljust(width) for cell, width in zip(row, widths)).rstrip() for row in rows]
+    return lines + [f"verdict: {result['verdict']}"]

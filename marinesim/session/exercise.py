@@ -1,0 +1,223 @@
+"""A scenario run as an exercise: its timeline with the scripted events, the motion record on the
+run's time grid, and the criteria evaluated over it as it grows.
+
+The viewer moves it on frame by frame (:meth:`Exercise.advance`); ``marinesim assess``, the export
+and the headless run take its record block by block (:meth:`Exercise.blocks`). Both compute the rows
+at the grid times ``t_k = k dt`` and evaluate the criteria at the same rows (every
+:data:`~marinesim.criteria.monitor.EVALUATE_S`), with the clock stopped at each evaluation, so what
+the viewer shows at ``t`` is what ``assess`` reports at ``t``.
+
+Events happen in time: one with ``at_s`` is asked of the timeline ahead of time and starts at
+``at_s``; one with ``when`` is checked at every evaluation and happens the first time its condition
+holds, its change starting then (a sea change :data:`~marinesim.session.timeline.PREPARE_S` later, while
+its amplitudes are prepared). A change asked while another blends waits for that blend to end.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
+
+import numpy as np
+
+from marinesim.constants import KNOT
+from marinesim.criteria.monitor import Criterion, Monitor, watched
+from marinesim.progress import task
+from marinesim.scenario import Scenario
+from marinesim.scenario.schema import Event
+from marinesim.session.timeline import PREPARE_S, Simulation
+
+BLOCK = 512
+"""Rows computed at once when no evaluation falls between."""
+
+
+@dataclass(frozen=True)
+class Happened:
+    """Event ``index`` of the scenario happened at ``time_s`` (s)."""
+
+    index: int
+    time_s: float
+    event: Event
+
+    def line(self) -> str:
+        """One log line: the time, the event, its message."""
+        return f"t {self.time_s:7.1f} s  event {self.index}: {self.event.describe()}"
+
+
+def quiet(line: str) -> None:
+    """Log nothing."""
+
+
+def last_row(t: float, dt: float) -> int:
+    """The last row of the run's time grid ``k dt`` at or before ``t`` (s)."""
+    return math.floor(t / dt + 1e-9)
+
+
+class Exercise:
+    """``simulation``'s scenario as an exercise over ``duration_s`` (default: the run's); each event
+    that happens is passed to ``log`` as one line."""
+
+    def __init__(self, simulation: Simulation, duration_s: float | None = None,
+                 log: Callable[[str], None] = quiet) -> None:
+        self.sim = simulation
+        scenario: Scenario = simulation.scenario
+        self.scenario = scenario
+        self.dt = scenario.run.dt_s
+        self.duration_s = scenario.run.duration_s if duration_s is None else duration_s
+        self.log = log
+        self.events = scenario.events
+        for event in self.events:
+            if event.sea is not None:
+                simulation.ocean.check(event.sea)  # refused before anything runs
+        vessel = scenario.vessel
+        criteria = list(scenario.criteria)
+        self._watching: dict[int, int] = {}
+        """Conditional event -> the monitor's criterion its condition reads."""
+        for i, event in enumerate(self.events):
+            if event.condition is not None:
+                criterion = watched(event.condition, criteria, vessel.points)
+                if criterion not in criteria:
+                    criteria.append(criterion)
+                self._watching[i] = criteria.index(criterion)
+        self.criteria: tuple[Criterion, ...] = scenario.criteria
+        """The scenario's criteria: the monitor's first; the others it holds are watched for conditions."""
+        self.monitor = Monitor(criteria, vessel.points, self.dt, self.duration_s) if vessel and criteria else None
+        self.happened: list[Happened] = []
+        self._timed = [i for i, event in enumerate(self.events) if event.at_s is not None]
+        self._asked = 0      # timed events asked of the timeline
+        self._announced = 0  # timed events that have happened
+        self._conditional = list(self._watching)
+        self.row = 0
+        """The next grid row to record."""
+
+    # -- moving on ----------------------------------------------------------------------------
+
+    def advance(self, dt: float) -> None:
+        """Move the clock on by ``dt`` (s), stopping at each evaluation on the way (the viewer's frame)."""
+        for _ in self._steps(self.sim.time + dt, rows=False):
+            pass
+
+    def seek(self, t: float) -> None:
+        """Jump forward to ``t`` (s), recording and evaluating on the way; the solver restarts there."""
+        for _ in self._steps(t, rows=False, step_solver=False):
+            pass
+        self.sim.seek(t)
+
+    def run(self, until: float | None = None) -> None:
+        """Go on to ``until`` (s; default the run's end), as ``assess`` does: events happen, criteria are evaluated."""
+        until = self.duration_s if until is None else until
+        with task("exercise", max(self._last_row(until) + 1 - self.row, 0)) as bar:
+            for block in self._steps(until, rows=True):
+                bar.update(block["time_s"].size)
+
+    def blocks(self) -> Iterator[dict[str, np.ndarray]]:
+        """Go through the whole run, yielding its record (the vessel's motion columns) in blocks of rows."""
+        return self._steps(self.duration_s, rows=True)
+
+    def _steps(self, target: float, rows: bool, step_solver: bool = True) -> Iterator[dict[str, np.ndarray]]:
+        """Move the clock to ``target`` (s): record the rows up to it if the monitor needs them (and
+        yield them if ``rows``), stopping the clock at each evaluation to evaluate and let events happen."""
+        last = self._last_row(target)
+        recording = rows or self.monitor is not None
+        while recording and self.row <= last:
+            stop_row = last
+            if self.monitor is not None:
+                stride = self.monitor.stride
+                stop_row = min(last, -(-self.row // stride) * stride)  # the next evaluation
+            stop = stop_row * self.dt
+            self._ask_timed(stop)
+            self._move_clock(stop, step_solver)
+            for lo in range(self.row, stop_row + 1, BLOCK):
+                block = self.sim.frame_steps(lo * self.dt, self.dt, min(BLOCK, stop_row + 1 - lo))
+                if self.monitor is not None:
+                    self.monitor.append(block)
+                if rows:
+                    yield block
+            self.row = stop_row + 1
+            self._announce_timed(stop)
+            if self.monitor is not None and self.monitor.due(stop_row):
+                self.monitor.evaluate()
+                self._check_conditions(stop)
+        self._ask_timed(target)
+        self._move_clock(target, step_solver)
+        self._announce_timed(target)
+
+    def _last_row(self, t: float) -> int:
+        return last_row(t, self.dt) if self.sim.vessel is not None else -1
+
+    def _move_clock(self, t: float, step_solver: bool) -> None:
+        if t > self.sim.time:
+            self.sim.advance(t - self.sim.time, step_solver=step_solver)
+
+    # -- events -------------------------------------------------------------------------------
+
+    def _ask_timed(self, t: float) -> None:
+        """Ask the timeline for the timed changes that start by ``t`` or are due for preparing."""
+        while self._asked < len(self._timed) and self.events[self._timed[self._asked]].at_s - PREPARE_S <= t:
+            event = self.events[self._timed[self._asked]]
+            if event.changes:
+                self._change(event, event.at_s)
+            self._asked += 1
+
+    def _announce_timed(self, t: float) -> None:
+        while self._announced < len(self._timed) and self.events[self._timed[self._announced]].at_s <= t + 1e-9:
+            index = self._timed[self._announced]
+            self._happen(index, self.events[index].at_s)
+            self._announced += 1
+
+    def _check_conditions(self, t: float) -> None:
+        for index in list(self._conditional):
+            event = self.events[index]
+            if event.condition.holds(self.monitor.tallies[self._watching[index]].value):
+                self._conditional.remove(index)
+                if event.changes:
+                    self._change(event, t + (PREPARE_S if event.sea is not None else 0.0))
+                self._happen(index, t)
+
+    def _change(self, event: Event, at: float) -> None:
+        self.sim.change(sea=event.sea, speed_kn=None if event.speed_m_s is None else event.speed_m_s / KNOT,
+                        heading_deg=event.heading_deg, ramp_s=event.ramp_s, at=at)
+
+    def _happen(self, index: int, t: float) -> None:
+        happened = Happened(index, t, self.events[index])
+        self.happened.append(happened)
+        self.log(happened.line())
+
+    # -- what it shows ------------------------------------------------------------------------
+
+    def messages(self, t: float | None = None, span_s: float = 30.0) -> list[str]:
+        """The messages of the events that happened within ``span_s`` before ``t`` (default now), newest last."""
+        t = self.sim.time if t is None else t
+        return [f"t {h.time_s:6.0f} s  {h.event.message}" for h in self.happened
+                if h.event.message and t - span_s <= h.time_s <= t]
+
+    def readings(self) -> list[tuple[Criterion, float | None, str]]:
+        """(criterion, latest value or None while settling, level) of the scenario's criteria."""
+        if self.monitor is None:
+            return []
+        return [(c, tally.value, c.level(tally.value))
+                for c, tally in zip(self.criteria, self.monitor.tallies)]
+
+    def assessment(self) -> dict:
+        """The criteria and events of the run so far, as ``marinesim assess`` prints them."""
+        criteria = []
+        tallies = self.monitor.tallies if self.monitor is not None else []
+        for criterion, tally in zip(self.criteria, tallies):
+            criteria.append({
+                "name": criterion.label, "point": criterion.point, "quantity": criterion.quantity,
+                "unit": criterion.measure.unit, "window_s": criterion.window, "value": tally.worst,
+                "value_at_s": tally.worst_s, "limit": criterion.limit, "caution": criterion.caution,
+                "exceeded": tally.first_exceeded_s is not None, "time_exceeded_s": tally.time_exceeded_s,
+                "first_exceeded_s": tally.first_exceeded_s,
+                "level": criterion.level(tally.worst)})
+        happened = {h.index: h.time_s for h in self.happened}
+        events = [{"index": i, "trigger": (f"at {e.at_s:g} s" if e.at_s is not None else f"when {e.condition}"),
+                   "happened_s": happened.get(i), "what": e.describe().partition(": ")[2], "message": e.message}
+                  for i, e in enumerate(self.events)]
+        levels = {c["level"] for c in criteria}
+        verdict = ("exceeded" if "exceeded" in levels else "caution" if "caution" in levels
+                   else "no value" if levels == {"settling"} else "within limits")
+        return {"scenario": str(self.scenario.path), "seed": self.scenario.run.seed,
+                "duration_s": self.sim.time, "dt_s": self.dt, "criteria": criteria, "events": events,
+                "verdict": verdict}

@@ -1,0 +1,144 @@
+"""The exercise engine: scripted events change the run as the scenario says, at their times or on
+their conditions, and the criteria the viewer shows at t are the ones ``assess`` reports at t."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from scipy.integrate import trapezoid
+
+from conftest import ROOT, VESSEL_SCENARIO, offscreen, write
+from marinesim.constants import KNOT
+from marinesim.scenario import load_scenario
+from marinesim.session.exercise import Exercise
+from marinesim.session.timeline import Simulation
+
+RAMP = """
+[ocean]
+resolution = 64
+tiles = 3
+
+[[sea]]
+type = "jonswap"
+hs_m = 2.0
+tp_s = 8.0
+from_deg = 0.0
+
+[vessel]
+rao = "{rao}"
+
+[vessel.points]
+bridge = [-100.0, 0.0, 30.0]
+
+[run]
+duration_s = 1800.0
+dt_s = 0.25
+seed = {seed}
+
+[[events]]
+at_s = 900.0
+ramp_s = 60.0
+sea = [{{ type = "jonswap", hs_m = 4.0, tp_s = 8.0, from_deg = 0.0 }}]
+message = "the sea builds"
+"""
+
+
+def _record(scenario) -> dict[str, np.ndarray]:
+    simulation = Simulation(scenario, wake=False)
+    blocks = list(Exercise(simulation).blocks())
+    simulation.close()
+    return {name: np.concatenate([b[name] for b in blocks]) for name in blocks[0]}
+
+
+def _hs_tolerance(sea, seconds: float) -> float:
+    """Three standard errors of 4 std(elevation) from a record of ``seconds``: the sample variance of a
+    Gaussian record of length T has variance (2 pi / T) int S(w)^2 dw (one-sided S)."""
+    omega = np.linspace(0.05, 4.0, 4000)
+    density = sea.density(omega)
+    m0 = trapezoid(density, omega)
+    var_m0 = 2.0 * np.pi / seconds * trapezoid(density ** 2, omega)
+    return 3.0 * 4.0 * np.sqrt(m0) * 0.5 * np.sqrt(var_m0) / m0
+
+
+@pytest.mark.parametrize("seed", [1, 2])
+def test_an_event_ramps_the_sea_from_2_to_4_m(tmp_path, seed):
+    """Hs 2 m before the event at 900 s and 4 m after its 60 s ramp, measured as 4 std of the recorded
+    elevation: the scripted sea change reaches the vessel's record (not only the picture)."""
+    scenario = load_scenario(write(tmp_path, RAMP.format(rao=ROOT / "rao" / "tanker" / "tanker.4", seed=seed)))
+    record = _record(scenario)
+    t, eta = record["time_s"], record["wave_elevation_m"]
+    before, after = eta[t < 900.0], eta[t >= 960.0]
+    assert 4.0 * before.std() == pytest.approx(2.0, abs=_hs_tolerance(scenario.sea, 900.0))
+    assert 4.0 * after.std() == pytest.approx(4.0, abs=_hs_tolerance(scenario.events[0].sea, 840.0))
+
+
+CONDITIONAL = VESSEL_SCENARIO.replace("duration_s = 120.0", "duration_s = 400.0") + """
+[[criteria]]
+name = "bridge acceleration"
+point = "bridge"
+quantity = "vertical_acc_rms_m_s2"
+limit = 0.5
+window_s = 120.0
+
+[[events]]
+when = "bridge acceleration > {threshold}"
+speed_kn = 2.0
+heading_deg = 90.0
+message = "slow down and turn"
+
+[[events]]
+at_s = 200.0
+message = "two hundred seconds"
+"""
+
+
+def test_a_condition_fires_once_at_its_first_evaluation_that_holds(tmp_path):
+    """The event happens at the first whole-second evaluation where the criterion's value passes the
+    threshold, its speed and heading change start then, and it does not happen again."""
+    scenario = load_scenario(write(tmp_path, CONDITIONAL.format(threshold=0.0)))
+    lines: list[str] = []
+    simulation = Simulation(scenario, wake=False)
+    exercise = Exercise(simulation, log=lines.append)
+    exercise.run()
+    fired = [h for h in exercise.happened if h.index == 0]
+    assert len(fired) == 1
+    assert fired[0].time_s == pytest.approx(30.0)  # settled at a quarter of the 120 s window
+    leg = simulation.legs[1]
+    assert leg.start == pytest.approx(30.0) and leg.track.speed == pytest.approx(2.0 * KNOT)
+    assert [h.index for h in exercise.happened] == [0, 1]
+    assert lines[1].startswith("t   200.0 s  event 1: at 200 s: 'two hundred seconds'")
+    assert exercise.messages(t=210.0) == ["t    200 s  two hundred seconds"]
+    simulation.close()
+
+
+def test_a_condition_that_never_holds_changes_nothing(tmp_path):
+    scenario = load_scenario(write(tmp_path, CONDITIONAL.format(threshold=100.0)))
+    simulation = Simulation(scenario, wake=False)
+    exercise = Exercise(simulation)
+    exercise.run()
+    assert [h.index for h in exercise.happened] == [1] and len(simulation.legs) == 1
+    result = exercise.assessment()
+    assert result["events"][0]["happened_s"] is None and result["events"][1]["happened_s"] == 200.0
+    simulation.close()
+
+
+def test_the_viewer_shows_what_assess_reports(tmp_path):
+    """A scene stepped frame by frame (the viewer's session) and the exercise run in blocks (``assess``)
+    give the same criteria at the same times to 1e-9, the conditional event included."""
+    scenario = load_scenario(write(tmp_path, CONDITIONAL.format(threshold=0.3)))
+    simulation = Simulation(scenario, wake=False)
+    reference = Exercise(simulation)
+    seen = {}
+    for t in (60.0, 150.0, 300.0):
+        reference.run(until=t)
+        seen[t] = ([tally.value for tally in reference.monitor.tallies], [h.time_s for h in reference.happened])
+    simulation.close()
+    with offscreen(scenario, wake=False) as view:
+        rng = np.random.default_rng(5)
+        for t, (values, happened) in seen.items():
+            while view.scene.sim.time < t - 1e-9:
+                view.scene.step(min(rng.uniform(0.01, 0.7), t - view.scene.sim.time))
+            live = [tally.value for tally in view.scene.exercise.monitor.tallies]
+            assert live == pytest.approx(values, rel=1e-9, abs=1e-12)
+            assert [h.time_s for h in view.scene.exercise.happened] == happened
+        assert view.scene.criteria_panel()[0][0].startswith("bridge acceleration")
