@@ -142,3 +142,30 @@ def test_the_viewer_shows_what_assess_reports(tmp_path):
             assert live == pytest.approx(values, rel=1e-9, abs=1e-12)
             assert [h.time_s for h in view.scene.exercise.happened] == happened
         assert view.scene.criteria_panel()[0][0].startswith("bridge acceleration")
+
+
+def _coloured(image: np.ndarray, colour: tuple[float, ...]) -> int:
+    """Pixels within 40 levels of ``colour`` (RGB in 0..1) in each channel."""
+    target = np.array(colour[:3]) * 255.0
+    return int(np.count_nonzero(np.all(np.abs(image.astype(float) - target) < 40.0, axis=-1)))
+
+
+def test_the_picture_shows_the_criteria_and_the_message(tmp_path):
+    """Rendered, the criteria panel sits at the top right in its level's colour and the event's
+    message in amber, while the same scene without criteria or events has neither colour up there."""
+    from marinesim.render.hud import LEVEL_COLORS, MESSAGE_COLOR
+
+    scenario = load_scenario(write(tmp_path, CONDITIONAL.format(threshold=100.0)))
+    with offscreen(scenario, size=(640, 360), wake=False) as view:
+        view.go_to(205.0)
+        image = view.frame()
+        level = view.scene.exercise.readings()[0][2]
+    plain = load_scenario(write(tmp_path, VESSEL_SCENARIO, "plain.toml"))
+    with offscreen(plain, size=(640, 360), wake=False) as view:
+        view.go_to(205.0)
+        bare = view.frame()
+    top_right = (slice(0, 60), slice(320, 640))
+    assert level in ("ok", "caution", "exceeded")
+    assert _coloured(image[top_right], LEVEL_COLORS[level]) > 50
+    assert _coloured(bare[top_right], LEVEL_COLORS[level]) < 5
+    assert _coloured(image[:200], MESSAGE_COLOR) > 50 and _coloured(bare[:200], MESSAGE_COLOR) < 5

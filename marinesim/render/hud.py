@@ -189,8 +189,9 @@ class Hud:
         (each: a panel about 360x70 px with its title, unit, current value, the min/max of the y axis as labels,
         a zero line, and the trace as a line strip, y range symmetric about zero and rounded up to a 1-2-5 step,
         never below a small floor so a flat signal is not magnified noise); `help_lines`, when given, centred on a
-        darker panel; ``panel`` (text, level) rows at the top-right, each coloured by its level
-        (:data:`LEVEL_COLORS`); ``messages`` at the top-centre in amber.
+        darker panel; ``panel`` (text, level) rows at the top-right (below the text block if the two
+        would overlap), each coloured by its level (:data:`LEVEL_COLORS`); ``messages`` in amber at
+        the top-centre, below the top panels if they leave no room between them.
 
         The bound framebuffer, its viewport and the enable flags (blend, depth test, face culling) are
         restored afterwards; the blend function is left at ``moderngl.DEFAULT_BLENDING`` and texture
@@ -201,14 +202,20 @@ class Hud:
             self._text_block(base, MARGIN, MARGIN, lines, PAD, PANEL_COLOR)
         for index, chart in enumerate(charts):
             self._chart(base, chart, *self.chart_plot_rect(size, index, len(charts)))
+        left = self._text_size(lines, PAD) if lines else (0, 0)
+        right, right_y = (0, 0), MARGIN
         if panel:
             rows = [(text, LEVEL_COLORS[level]) for text, level in panel]
-            box_w = self._text_size([text for text, _ in rows], PAD)[0]
-            self._text_block(base, width - MARGIN - box_w, MARGIN, rows, PAD, PANEL_COLOR)
+            right = self._text_size([text for text, _ in rows], PAD)
+            if width - MARGIN - right[0] < 2 * MARGIN + left[0]:
+                right_y = 2 * MARGIN + left[1]  # no room beside the text block: below it
+            self._text_block(base, width - MARGIN - right[0], right_y, rows, PAD, PANEL_COLOR)
         if messages:
             box_w = self._text_size(messages, PAD)[0]
-            self._text_block(base, (width - box_w) // 2, MARGIN, [(m, MESSAGE_COLOR) for m in messages], PAD,
-                             PANEL_COLOR)
+            x, y = (width - box_w) // 2, MARGIN
+            if right_y > MARGIN or x < 2 * MARGIN + left[0] or x + box_w > width - 2 * MARGIN - right[0]:
+                y = MARGIN + max(left[1], right_y - MARGIN + right[1]) + MARGIN  # below the top panels
+            self._text_block(base, max(x, MARGIN), y, [(m, MESSAGE_COLOR) for m in messages], PAD, PANEL_COLOR)
         layers = [base]
         if help_lines:
             box_w, box_h = self._text_size(help_lines, 2 * PAD)

@@ -117,7 +117,7 @@ class Scene:
         readings = self.exercise.readings()
         width = max((len(c.label) for c, _, _ in readings), default=0)
         for criterion, value, level in readings:
-            shown = "   --  " if value is None else f"{value:7.3g}"
+            shown = "      --" if value is None else f"{value:8.3g}"
             rows.append((f"{criterion.label:<{width}}  {shown} / {criterion.limit:<6.3g}"
                          f"{criterion.measure.unit:<8}{level}", level))
         return rows

@@ -29,7 +29,10 @@ from marinesim.scenario.schema import Event
 from marinesim.session.timeline import PREPARE_S, Simulation
 
 BLOCK = 512
-"""Rows computed at once when no evaluation falls between."""
+"""The fewest rows :meth:`Exercise.blocks` yields at once (the last block excepted)."""
+AHEAD = 8192
+"""Rows of the record computed at once by ``assess``, the export and the headless run (the viewer
+computes only the rows up to its clock, a few a frame)."""
 
 
 @dataclass(frozen=True)
@@ -90,6 +93,8 @@ class Exercise:
         self._conditional = list(self._watching)
         self.row = 0
         """The next grid row to record."""
+        self._ahead: tuple[int, int, int, dict[str, np.ndarray]] | None = None
+        """(first row, legs of the timeline then, rows, their columns) computed ahead."""
 
     # -- moving on ----------------------------------------------------------------------------
 
@@ -117,9 +122,13 @@ class Exercise:
 
     def _steps(self, target: float, rows: bool, step_solver: bool = True) -> Iterator[dict[str, np.ndarray]]:
         """Move the clock to ``target`` (s): record the rows up to it if the monitor needs them (and
-        yield them if ``rows``), stopping the clock at each evaluation to evaluate and let events happen."""
+        yield them, :data:`BLOCK` rows or more at a time, if ``rows``), stopping the clock at each
+        evaluation to evaluate and let events happen. With ``rows`` the record is computed
+        :data:`AHEAD` rows at a time (the response's fast path); a change of the timeline drops what
+        was computed ahead."""
         last = self._last_row(target)
         recording = rows or self.monitor is not None
+        out: list[dict[str, np.ndarray]] = []
         while recording and self.row <= last:
             stop_row = last
             if self.monitor is not None:
@@ -128,20 +137,33 @@ class Exercise:
             stop = stop_row * self.dt
             self._ask_timed(stop)
             self._move_clock(stop, step_solver)
-            for lo in range(self.row, stop_row + 1, BLOCK):
-                block = self.sim.frame_steps(lo * self.dt, self.dt, min(BLOCK, stop_row + 1 - lo))
-                if self.monitor is not None:
-                    self.monitor.append(block)
-                if rows:
-                    yield block
+            block = self._record(self.row, stop_row, last if rows else stop_row)
+            if self.monitor is not None:
+                self.monitor.append(block)
             self.row = stop_row + 1
             self._announce_timed(stop)
             if self.monitor is not None and self.monitor.due(stop_row):
                 self.monitor.evaluate()
                 self._check_conditions(stop)
+            if rows:
+                out.append(block)
+                if sum(b["time_s"].size for b in out) >= BLOCK or self.row > last:
+                    yield {name: np.concatenate([b[name] for b in out]) for name in out[0]}
+                    out = []
         self._ask_timed(target)
         self._move_clock(target, step_solver)
         self._announce_timed(target)
+
+    def _record(self, first: int, last: int, ahead_to: int) -> dict[str, np.ndarray]:
+        """Rows ``first..last`` of the record: from what was computed ahead while the timeline has not
+        changed since, else computed now with up to :data:`AHEAD` rows (not beyond ``ahead_to``) ahead."""
+        ahead = self._ahead
+        if ahead is None or ahead[1] != len(self.sim.legs) or not ahead[0] <= first <= last < ahead[0] + ahead[2]:
+            count = max(last, min(ahead_to, first + AHEAD - 1)) - first + 1
+            self._ahead = ahead = (first, len(self.sim.legs), count,
+                                   self.sim.frame_steps(first * self.dt, self.dt, count))
+        lo, hi = first - ahead[0], last + 1 - ahead[0]
+        return {name: column[lo:hi] for name, column in ahead[3].items()}
 
     def _last_row(self, t: float) -> int:
         return last_row(t, self.dt) if self.sim.vessel is not None else -1

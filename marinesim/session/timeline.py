@@ -246,19 +246,27 @@ class Simulation:
         return self.response(len(self.legs) - 1).frame(times, self._linear(times))
 
     def frame_steps(self, start: float, dt: float, steps: int) -> dict[str, np.ndarray]:
-        """:meth:`frame` at ``start + dt * arange(steps)``: within one leg's steady part through the
-        response's block product (:meth:`Response.linear_steps`), across a blend leg by leg."""
+        """:meth:`frame` at ``start + dt * arange(steps)``: each leg's steady part through its response's
+        block product (:meth:`Response.linear_steps`, tables reused across blocks), blends time by time."""
         times = start + dt * np.arange(steps)
-        index = len(self.legs) - 1
-        while index > 0 and self.legs[index].start > times[0]:
-            index -= 1
-        leg = self.legs[index]
-        after = self.legs[index + 1].start if index + 1 < len(self.legs) else math.inf
-        if times[0] >= leg.start + leg.ramp_s and times[-1] < after:
-            linear = np.concatenate([out for _, out in self.response(index).linear_steps(start, dt, steps)])
-        else:
-            linear = self._linear(times)
-        return self.response(len(self.legs) - 1).frame(times, linear)
+        last = len(self.legs) - 1
+        linear = np.empty((steps, self.response(last).linear(times[:0]).shape[1]))
+        k = 0
+        while k < steps:
+            index = max(i for i, leg in enumerate(self.legs) if leg.start <= times[k] or i == 0)
+            leg = self.legs[index]
+            after = self.legs[index + 1].start if index < last else math.inf
+            steady = leg.start + leg.ramp_s
+            blending = times[k] < steady
+            end = k + int(np.searchsorted(times[k:], min(steady, after) if blending else after, side="left"))
+            end = max(end, k + 1)
+            if blending:
+                linear[k:end] = self._linear(times[k:end])
+            else:
+                linear[k:end] = np.concatenate([out for _, out in self.response(index).linear_steps(times[k], dt,
+                                                                                                     end - k)])
+            k = end
+        return self.response(last).frame(times, linear)
 
     def _linear(self, times: np.ndarray) -> np.ndarray:
         """The responses' linear outputs (:meth:`Response.linear`) at ``times``, blended across legs;
