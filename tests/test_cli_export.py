@@ -12,6 +12,7 @@ import pytest
 from conftest import ROOT, VESSEL_SCENARIO as SCENARIO, cli, write
 
 
+@pytest.mark.slow
 def test_interrupted_export_leaves_no_partial_file(tmp_path):
     # a day at 10 Hz takes a while: interrupt it once the temporary file is growing
     scenario = write(tmp_path, SCENARIO.replace("duration_s = 120.0", "duration_s = 86400.0"))

@@ -114,6 +114,7 @@ def mutate_dataset(dataset, edits):
     return dataset
 
 
+@pytest.mark.slow
 @FUZZ
 @given(edits=st.lists(DATASET_EDIT, min_size=1, max_size=3))
 def test_mutated_capytaine_datasets_give_a_table_or_one_clean_error(capytaine_dataset, edits):
@@ -131,6 +132,7 @@ def test_mutated_capytaine_datasets_give_a_table_or_one_clean_error(capytaine_da
         outcome(read_rao, RaoTable, path)
 
 
+@pytest.mark.slow
 @FUZZ
 @given(cut=st.floats(0.0, 1.0), flips=st.lists(st.tuples(st.floats(0.0, 1.0), st.integers(0, 255)), max_size=6))
 def test_damaged_capytaine_bytes_give_a_table_or_one_clean_error(capytaine_file, cut, flips):

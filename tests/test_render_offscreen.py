@@ -91,6 +91,7 @@ def foam_fraction(scenario, hs_factor: float) -> float:
     return float((brighter > 20.0).mean())
 
 
+@pytest.mark.slow
 def test_foam_covers_more_of_the_sea_as_hs_rises(default):
     """Whitecaps grow with wave steepness: Hs x0.5 almost none, x2 several times more than x1.
 

@@ -24,6 +24,7 @@ from marinesim.scenario import load_scenario
 NO_WINDOW = 77
 
 
+@pytest.mark.slow
 def test_an_operator_session_records_changes_the_sea_and_pauses(tmp_path):
     result = subprocess.run([sys.executable, __file__, str(tmp_path)], capture_output=True, text=True, timeout=600)
     if result.returncode == NO_WINDOW:
