@@ -14,7 +14,7 @@ EXERCISE = ROOT / "configs" / "s175_heavy_weather.toml"
 
 @pytest.fixture(scope="module")
 def assessed():
-    done = cli("assess", str(EXERCISE), "--json", "--duration", "600", "--quiet")
+    done = cli("assess", str(EXERCISE), "--json", "--duration", "500", "--quiet")
     assert done.returncode == 0, done.stderr
     return json.loads(done.stdout), done
 
@@ -39,12 +39,12 @@ def test_assess_reports_every_criterion_and_event(assessed):
     assert happened[0] == 0.0 and happened[1] == 480.0
     assert result["events"][2]["trigger"] == "when bridge lateral acceleration > 1"
     assert "t   480.0 s  event 1: at 480 s: sea Hs" in done.stderr  # the log goes to stderr with --json
-    assert result["duration_s"] == 600.0
+    assert result["duration_s"] == 500.0
 
 
 @pytest.mark.slow
 def test_assess_is_reproducible(assessed):
-    again = cli("assess", str(EXERCISE), "--json", "--duration", "600", "--quiet")
+    again = cli("assess", str(EXERCISE), "--json", "--duration", "500", "--quiet")
     assert again.stdout == assessed[1].stdout
 
 
@@ -73,6 +73,6 @@ def test_the_headless_run_writes_what_assess_prints(tmp_path, assessed):
     from marinesim.session.headless import run_headless
 
     lines: list[str] = []
-    result = run_headless(Assembly(with_run(load_scenario(EXERCISE), duration=600.0)), tmp_path, log=lines.append)
+    result = run_headless(Assembly(with_run(load_scenario(EXERCISE), duration=500.0)), tmp_path, log=lines.append)
     assert json.loads(result.files["assessment"].read_text()) == assessed[0]
     assert any(line.startswith("t   480.0 s  event 1: at 480 s") for line in lines)

@@ -20,6 +20,7 @@ import dataclasses
 import math
 from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -33,10 +34,12 @@ from marinesim.scenario.model import CHANGE_RAMP_S, MAX_SPEED_KN
 from marinesim.sea.ocean import smoothstep
 from marinesim.sea.seastate import SeaState, scaled_sea
 from marinesim.session.assembly import Assembly
-from marinesim.solver.local import LocalSolver
 from marinesim.vessel.response import Response, Track
 from marinesim.wake.cache import cached_wake
 from marinesim.wake.compute import QUALITATIVE_BELOW_FROUDE, Wake, WakeGrid
+
+if TYPE_CHECKING:  # the solver's module (moderngl's compute side) loads only where a solver runs
+    from marinesim.solver.local import LocalSolver
 
 PREPARE_S = 0.5
 """A sea change starts this long (s) after it is asked for, or when the blend before it ends if
