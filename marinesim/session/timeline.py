@@ -249,8 +249,8 @@ class Simulation:
         return self.response(len(self.legs) - 1).frame(times, self._linear(times))
 
     def frame_steps(self, start: float, dt: float, steps: int) -> dict[str, np.ndarray]:
-        """:meth:`frame` at ``start + dt * arange(steps)``: each leg's steady part through its response's
-        block product (:meth:`Response.linear_steps`, tables reused across blocks), blends time by time."""
+        """:meth:`frame` at ``start + dt * arange(steps)``, each leg through its response's block product
+        (:meth:`Response.linear_steps`, tables reused across blocks), a blend as the two legs' weighted sum."""
         times = start + dt * np.arange(steps)
         last = len(self.legs) - 1
         linear = np.empty((steps, self.response(last).linear(times[:0]).shape[1]))
@@ -263,13 +263,16 @@ class Simulation:
             blending = times[k] < steady
             end = k + int(np.searchsorted(times[k:], min(steady, after) if blending else after, side="left"))
             end = max(end, k + 1)
+            linear[k:end] = self._steps_of(index, times[k], dt, end - k)
             if blending:
-                linear[k:end] = self._linear(times[k:end])
-            else:
-                linear[k:end] = np.concatenate([out for _, out in self.response(index).linear_steps(times[k], dt,
-                                                                                                     end - k)])
+                w = leg.weight(times[k:end])[:, None]
+                linear[k:end] = w * linear[k:end] + (1.0 - w) * self._steps_of(index - 1, times[k], dt, end - k)
             k = end
         return self.response(last).frame(times, linear)
+
+    def _steps_of(self, index: int, start: float, dt: float, steps: int) -> np.ndarray:
+        """Leg ``index``'s response's linear outputs at ``start + dt * arange(steps)`` (its block product)."""
+        return np.concatenate([out for _, out in self.response(index).linear_steps(start, dt, steps)])
 
     def _linear(self, times: np.ndarray) -> np.ndarray:
         """The responses' linear outputs (:meth:`Response.linear`) at ``times``, blended across legs;
