@@ -1,4 +1,6 @@
-"""The viewer window through pyglet's headless EGL mode: keys, recording, pause, help, redraws.
+"""The viewer window through pyglet's headless EGL mode: keys (pyglet's own key symbols and text
+events, dispatched to the window), recording, pause, help, the instructor's message and event, the
+session log and its replay to the recorder's bytes, redraws.
 
 The walkthrough runs in a fresh Python process: moderngl finds pyglet's headless EGL context only
 in a process that has made no other context (the rest of the suite makes many), so the test runs
@@ -7,6 +9,7 @@ this file as a script and reads its verdict (exit 0, 77 = no headless window her
 
 from __future__ import annotations
 
+import json
 import subprocess
 import sys
 from pathlib import Path
@@ -41,14 +44,33 @@ def walkthrough(tmp_path: Path) -> None:
     except (NoDisplay, GraphicsError) as error:  # no EGL here: nothing to test
         print(error)
         sys.exit(NO_WINDOW)
+    import pyglet
+
+    key = pyglet.window.key
     controls, sim = viewer.controls, viewer.scene.sim
     controls.recordings = tmp_path
+    viewer.log_path = tmp_path / "session.jsonl"
+
+    def press(symbol: int, text: str | None = None) -> None:
+        """A key as the window gets it: the press, then its text (as pyglet sends both), queued and then
+        dispatched by the window as its event loop does."""
+        viewer.window.dispatch_event("on_key_press", symbol, 0)
+        if text is not None:
+            viewer.window.dispatch_event("on_text", text)
+        viewer.window.dispatch_event("on_key_release", symbol, 0)
+        viewer.window.dispatch_events()
+
+    def type_text(text: str) -> None:
+        for char in text:
+            viewer.window.dispatch_event("on_text", char)
+        viewer.window.dispatch_events()
+
     try:
-        controls.press("R")                               # record from t = 0
+        press(key.R, "r")                                 # record from t = 0
         for _ in range(30):
             viewer.tick(0.1)
         viewer.draw()
-        controls.press("R")
+        press(key.R, "r")
         recorded = pd.read_csv(next(tmp_path.glob("*.csv")))
         assert main(["export", str(DEFAULT), "--out", str(tmp_path / "export.out"), "--duration", "3",
                      "--quiet"]) == 0
@@ -59,29 +81,56 @@ def walkthrough(tmp_path: Path) -> None:
         assert not list(tmp_path.glob(".*")), "the recording left its temporary file"
 
         hs = sim.sea.hs
-        controls.press("BRACKETRIGHT")                    # waves up by 10 % over CHANGE_RAMP_S
+        press(key.R, "r")                                 # record the rest of the session
+        press(key.BRACKETRIGHT, "]")                      # waves up by 10 % over CHANGE_RAMP_S
         speed = sim.speed_m_s
-        controls.press("UP")                              # waits for the sea change, then blends
+        press(key.UP)                                     # waits for the sea change, then blends
         for _ in range(int(2.2 * CHANGE_RAMP_S / MAX_FRAME_S)):
             viewer.tick(5.0)                               # a stalled frame still advances only 0.1 s
         assert sim.time == pytest.approx(2.2 * CHANGE_RAMP_S + 3.0, abs=1e-6)
         assert sim.sea.hs == pytest.approx(HS_STEP * hs, rel=1e-9)
         assert sim.speed_m_s == pytest.approx(speed + 0.514444, rel=1e-4)
 
-        controls.press("SPACE")
+        press(key.SPACE, " ")
         before = sim.time
         viewer.tick(0.1)
         assert sim.time == before, "paused, the simulation must not move"
-        controls.press("SPACE")
+        press(key.SPACE, " ")
 
-        for key in ("2", "H", "3", "W", "1"):
-            controls.press(key)
+        cameras = []
+        for symbol, text in ((key._2, "2"), (key.H, "h"), (key._3, "3"), (key.W, "w"), (key._1, "1")):
+            press(symbol, text)
+            cameras.append(viewer.scene.camera_name)
             viewer.tick(0.05)
             viewer.draw()
             assert viewer.ctx.error == "GL_NO_ERROR"
-        assert viewer.scene.camera_name == "orbit" and controls.show_help
+        assert cameras == ["bridge", "bridge", "free", "free", "orbit"] and controls.show_help
+
+        press(key.M, "m")                                 # the instructor types a message
+        type_text("Fog ahead")
+        press(key.BACKSPACE)
+        press(key.ESCAPE)                                 # ESC while typing cancels the message only
+        assert controls.typing is None and viewer.window.has_exit is False
+        press(key.M, "m")
+        type_text("Fog ahead")
+        press(key.RETURN, "\r")
+        viewer.tick(0.1)
+        assert viewer.scene.exercise.said[-1][1] == "Fog ahead"
+        assert any("instructor: Fog ahead" in m for m in viewer.scene.exercise.messages())
+        viewer.draw()
+        for _ in range(7):
+            viewer.tick(0.1)
     finally:
         viewer.close()
+    session = tmp_path / "session.jsonl"
+    lines = [json.loads(line) for line in session.read_text().splitlines()[1:]]
+    keys = [e["key"] for e in lines if e["kind"] == "key"]
+    assert keys[:4] == ["R", "R", "R", "BRACKETRIGHT"] and "RETURN" not in keys  # typing keys are the message's
+    assert [e["action"] for e in lines if e["kind"] == "action"] == ["change", "change", "message"]
+    recording = sorted(tmp_path.glob(f"{scenario.name}_*.csv"))[-1]  # the second: from t = 3 s to the end
+    assert main(["replay", str(session), "--export", str(tmp_path / "replayed.csv"), "--quiet"]) == 0
+    recorded, replayed = recording.read_text().splitlines(), (tmp_path / "replayed.csv").read_text().splitlines()
+    assert recorded[0] == replayed[0] and recorded[1:] == replayed[31:], "the replay's rows are not the recording's"
 
 
 if __name__ == "__main__":

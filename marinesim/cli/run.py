@@ -34,6 +34,8 @@ def add(commands: argparse._SubParsersAction) -> None:
                                                   "first 10 s of it at most")
     p.add_argument("--headless", action="store_true", help="do not open a window even if there is a display")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
+    p.add_argument("--log", type=Path, help="the viewer session's log, written when the window closes "
+                                            "(default sessions/<scenario name>-NNN.jsonl, the next free number)")
     add_view_options(p)
     p.set_defaults(handler=handle)
 
@@ -58,7 +60,8 @@ def handle(args: argparse.Namespace) -> int:
 
         try:
             with reporting(bars(args.quiet)):
-                viewer = Viewer(scenario, args.camera, args.solver, options=render_options(args))
+                viewer = Viewer(scenario, args.camera, args.solver, options=render_options(args),
+                                log_path=args.log or next_log(scenario.name))
         except NoDisplay as reason:
             print(f"{reason}: running headless instead")
         else:
@@ -75,6 +78,13 @@ def handle(args: argparse.Namespace) -> int:
     for key, path in files.items():
         print(f"wrote {DESCRIBED[key] + ':':{width + 1}s} {path}")
     return 0
+
+
+def next_log(name: str, folder: Path = Path("sessions")) -> Path:
+    """``folder/<name>-NNN.jsonl`` with the first number not taken: no session overwrites another."""
+    taken = {p.name for p in folder.glob(f"{name}-*.jsonl")} if folder.is_dir() else set()
+    number = next(n for n in range(1, len(taken) + 2) if f"{name}-{n:03d}.jsonl" not in taken)
+    return folder / f"{name}-{number:03d}.jsonl"
 
 
 def _video(scenario, out_dir: Path, args: argparse.Namespace) -> dict[str, Path]:

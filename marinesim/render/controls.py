@@ -1,24 +1,27 @@
-"""The viewer's live controls: keys and mouse to actions on a scene, and the motion recorder.
+"""The viewer's controls: keys to actions on a scene, for the trainee, the instructor and a replay.
 
 Kept apart from the window so that they act the same in a test as at the keyboard: a key is
-named as pyglet names it (``pyglet.window.key.symbol_string``), e.g. ``"BRACKETRIGHT"``.
+named as pyglet names it (``pyglet.window.key.symbol_string``), e.g. ``"BRACKETRIGHT"``, ``"_1"``.
+Every key press goes into the session's journal, and every action that changes the exercise goes
+through :meth:`Exercise.act`, so that a replay of the log applies it again at the same time. In a
+replay the timeline is the log's: keys seek, pause and change the pace instead.
 """
 
 from __future__ import annotations
 
-import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
 
 import numpy as np
 
-from marinesim.atomic import AtomicFile
+from marinesim.render.hud import LEVEL_COLORS, MESSAGE_COLOR, Slider
+
 from marinesim.constants import KNOT
 from marinesim.errors import MarinesimError
 from marinesim.render.scene import Scene
 from marinesim.scenario.model import MAX_SPEED_KN
-from marinesim.session.export import write_csv_block
+from marinesim.session.recorder import Recorder
 from marinesim.session.timeline import CHANGE_RAMP_S
 
 HS_STEP = 1.1       # each press: heights x 1.1 (or / 1.1)
@@ -26,50 +29,19 @@ TP_STEP = 1.05      # periods x 1.05
 TURN_STEP_DEG = 15.0
 SPEED_STEP_KN = 1.0
 HEADING_STEP_DEG = 5.0
-TIME_SCALES = (0.125, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0)
+TIME_SCALES = (0.125, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0)
+SEEK_STEP_S = 30.0
+"""A replay's LEFT / RIGHT: back / forward this long (s)."""
 FREE_SPEED_M_S = 40.0
 MAX_FRAME_S = 0.1
 """A frame never advances the simulation by more than this (s of wall time): after a stall or a
 paused debugger the ship does not jump, and the solver is not asked to catch up minutes."""
 
 
-class Recorder:
-    """Motion rows at the scenario's dt, from start to stop, written as ``marinesim export`` writes
-    them. Rows go to a temporary file beside ``path``, renamed to ``path`` on :meth:`stop`."""
-
-    def __init__(self, scene: Scene, path: Path) -> None:
-        self.scene, self.path = scene, Path(path)
-        self.path.parent.mkdir(parents=True, exist_ok=True)
-        self._file = AtomicFile(self.path)
-        self._handle = self._file.temp.open("w", encoding="utf-8", newline="")
-        self._dt = scene.sim.scenario.run.dt_s
-        self._next = math.ceil(scene.sim.time / self._dt - 1e-9)  # index of the next row's time
-        self.rows = 0
-
-    def catch_up(self) -> None:
-        """Write the rows up to the simulation's time."""
-        last = math.floor(self.scene.sim.time / self._dt + 1e-9)
-        if last < self._next:
-            return
-        times = np.arange(self._next, last + 1) * self._dt
-        write_csv_block(self._handle, self.scene.sim.frame(times), header=self.rows == 0)
-        self.rows += len(times)
-        self._next = last + 1
-
-    def stop(self) -> Path:
-        self.catch_up()
-        self._handle.close()
-        return self._file.commit()
-
-    def abandon(self) -> None:
-        """Close and delete the temporary file, keeping nothing (writing it failed)."""
-        self._handle.close()
-        self._file.discard()
-
-
 @dataclass
 class Controls:
-    """What the keys do to ``scene``; ``recordings`` is where recordings go."""
+    """What the keys do to ``scene``; ``recordings`` is where recordings go. In a replay
+    (``scene.replay`` set), ``restart(t)`` opens the session again at ``t`` (s) for a seek back."""
 
     scene: Scene
     recordings: Path = Path("recordings")
@@ -78,6 +50,15 @@ class Controls:
     show_help: bool = False
     recorder: Recorder | None = None
     message: str = ""
+    typing: str | None = None
+    """The instructor's message being typed (None: not typing)."""
+    restart: Callable[[float], None] | None = None
+    _opened_now: bool = field(default=False, init=False, repr=False)
+    """The key that opened the message is still to come as text: it is not part of the message."""
+
+    @property
+    def exercise(self):
+        return self.scene.exercise
 
     @property
     def time_scale(self) -> float:
@@ -86,7 +67,7 @@ class Controls:
     def frame(self, wall_dt: float, held: set[str] = frozenset()) -> None:
         """One frame of ``wall_dt`` seconds: move the free camera for held keys, advance the run."""
         wall_dt = min(max(wall_dt, 0.0), MAX_FRAME_S)
-        if self.scene.camera_name == "free":
+        if self.scene.camera_name == "free" and self.typing is None:
             step = FREE_SPEED_M_S * wall_dt
             moves = {"W": (step, 0, 0), "S": (-step, 0, 0), "D": (0, step, 0), "A": (0, -step, 0),
                      "E": (0, 0, step), "C": (0, 0, -step)}
@@ -97,9 +78,14 @@ class Controls:
         if self.recorder is not None:
             self.recorder.catch_up()
         self.scene.status = self.status()
+        self.scene.slider = self.slider()
 
     def press(self, key: str) -> None:
-        """React to the key named ``key``; unknown keys do nothing."""
+        """React to the key named ``key`` (journaled); unknown keys do nothing."""
+        if self.typing is not None:
+            self._type_key(key)
+            return
+        self.exercise.note("key", key=key)
         action = self.actions().get(key)
         if action is not None:
             try:
@@ -107,75 +93,145 @@ class Controls:
             except MarinesimError as error:  # e.g. a period change the ocean's tiles cannot carry
                 self.message = str(error)
 
+    def text(self, text: str) -> None:
+        """Characters typed (pyglet's ``on_text``): they go into a message being typed."""
+        if self.typing is not None and not self._opened_now:
+            self.typing += "".join(c for c in text if c.isprintable())
+        self._opened_now = False
+
+    def _type_key(self, key: str) -> None:
+        if key in ("RETURN", "ENTER"):
+            text, self.typing = self.typing, None
+            if text.strip():
+                self._act("message", text=text)
+        elif key == "ESCAPE":
+            self.typing = None
+        elif key == "BACKSPACE":
+            self.typing = self.typing[:-1]
+
+    def _act(self, action: str, **fields) -> None:
+        self.exercise.act(action, **fields)
+
     def actions(self) -> dict[str, Callable[[], None]]:
         sim = self.scene.sim
 
         def change(**kwargs) -> Callable[[], None]:
-            return lambda: sim.change(ramp_s=CHANGE_RAMP_S, **kwargs)
+            return lambda: self._act("change", ramp_s=CHANGE_RAMP_S, **kwargs)
 
         def camera(name: str) -> Callable[[], None]:
             return lambda: setattr(self.scene, "camera_name", name)
 
         actions = {
             "H": self.toggle_help, "SPACE": self.toggle_pause, "R": self.toggle_recording,
-            "1": camera("orbit"), "2": camera("bridge"), "3": camera("free"),
+            "_1": camera("orbit"), "_2": camera("bridge"), "_3": camera("free"),
             "PLUS": lambda: self._scale_time(1), "EQUAL": lambda: self._scale_time(1),
             "MINUS": lambda: self._scale_time(-1),
+        }
+        if self.scene.replay is not None:
+            return actions | {"LEFT": lambda: self.seek(sim.time - SEEK_STEP_S),
+                              "RIGHT": lambda: self.seek(sim.time + SEEK_STEP_S), "HOME": lambda: self.seek(0.0)}
+        actions |= {
+            "RETURN": lambda: self._act("acknowledge"), "ENTER": lambda: self._act("acknowledge"),
+            "N": self.trigger_next, "M": self.start_message,
             "BRACKETRIGHT": change(hs_factor=HS_STEP), "BRACKETLEFT": change(hs_factor=1.0 / HS_STEP),
             "PERIOD": change(tp_factor=TP_STEP), "COMMA": change(tp_factor=1.0 / TP_STEP),
             "APOSTROPHE": change(turn_waves_deg=TURN_STEP_DEG), "SEMICOLON": change(turn_waves_deg=-TURN_STEP_DEG),
         }
         if sim.vessel is not None:
             actions |= {
-                "UP": lambda: sim.change(speed_kn=min(sim.speed_m_s / KNOT + SPEED_STEP_KN, MAX_SPEED_KN),
-                                         ramp_s=CHANGE_RAMP_S),
-                "DOWN": lambda: sim.change(speed_kn=max(sim.speed_m_s / KNOT - SPEED_STEP_KN, 0.0),
-                                           ramp_s=CHANGE_RAMP_S),
-                "RIGHT": change(heading_deg=sim.heading_deg + HEADING_STEP_DEG),
-                "LEFT": change(heading_deg=sim.heading_deg - HEADING_STEP_DEG),
+                "UP": change(speed_kn=min(sim.speed_m_s / KNOT + SPEED_STEP_KN, MAX_SPEED_KN)),
+                "DOWN": change(speed_kn=max(sim.speed_m_s / KNOT - SPEED_STEP_KN, 0.0)),
+                "RIGHT": change(heading_deg=(sim.heading_deg + HEADING_STEP_DEG) % 360.0),
+                "LEFT": change(heading_deg=(sim.heading_deg - HEADING_STEP_DEG) % 360.0),
             }
         return actions
+
+    def trigger_next(self) -> None:
+        """The instructor brings the next scripted event forward to now."""
+        pending = self.exercise.pending_events()
+        if not pending:
+            self.message = "no scripted event left to trigger"
+            return
+        self._act("trigger", index=pending[0])
+
+    def start_message(self) -> None:
+        self.typing, self._opened_now = "", True
 
     def toggle_help(self) -> None:
         self.show_help = not self.show_help
 
     def toggle_pause(self) -> None:
         self.paused = not self.paused
+        self.exercise.note("pause" if self.paused else "resume")
 
     def _scale_time(self, direction: int) -> None:
         self.time_scale_index = int(np.clip(self.time_scale_index + direction, 0, len(TIME_SCALES) - 1))
+        self.exercise.note("time_scale", scale=self.time_scale)
+
+    def seek(self, t: float) -> None:
+        """A replay's clock to ``t`` (s, within the session): forward through the log, back by starting again."""
+        replay = self.scene.replay
+        t = min(max(t, 0.0), replay.log.end_s)
+        if t >= self.scene.sim.time:
+            replay.advance_to(t)
+            self.scene.sim.seek(t)
+            self.scene.prefill_history()
+            self.scene.renderer.update()
+        elif self.restart is not None:
+            self.restart(t)
 
     def toggle_recording(self) -> None:
         if self.recorder is None:
-            if self.scene.sim.vessel is None:
-                self.message = "nothing to record: the scenario has no vessel"
-                return
             name = f"{self.scene.sim.scenario.name}_{self.scene.sim.time:08.1f}s.csv"
-            self.recorder = Recorder(self.scene, self.recordings / name)
+            try:
+                self.recorder = Recorder(self.exercise, self.recordings / name)
+            except MarinesimError as error:
+                self.message = str(error)
+                return
+            self.exercise.note("recording", file=str(self.recorder.path))
             self.message = f"recording to {self.recorder.path}"
         else:
             recorder, self.recorder = self.recorder, None
             try:
                 path = recorder.stop()
+                self.exercise.note("recorded", file=str(path), rows=recorder.rows)
                 self.message = f"recorded {recorder.rows} rows to {path}"
-            except OSError as error:  # a full disk must not end the session
+            except (OSError, MarinesimError) as error:  # a full disk must not end the session
                 recorder.abandon()
                 self.message = f"the recording could not be written: {error}"
 
     def status(self) -> list[str]:
         state = "PAUSED" if self.paused else f"time x{self.time_scale:g}"
         recording = f"   REC {self.recorder.rows} rows" if self.recorder else ""
-        lines = [f"{state}{recording}   H: help"]
+        mode = "   REPLAY" if self.scene.replay is not None else ""
+        lines = [f"{state}{recording}{mode}   H: help"]
+        if self.typing is not None:
+            lines.append(f"message: {self.typing}_   (ENTER send, ESC cancel)")
         return lines + ([self.message] if self.message else [])
+
+    def slider(self) -> Slider | None:
+        """A replay's time slider: where the clock is in the session, its events and alarms marked."""
+        replay = self.scene.replay
+        if replay is None:
+            return None
+        end = max(replay.log.end_s, 1e-9)
+        marks = [(entry["t"] / end, LEVEL_COLORS["exceeded"] if entry["kind"] == "alarm" else MESSAGE_COLOR)
+                 for entry in replay.log.entries if entry["kind"] in ("event", "alarm")]
+        return Slider(self.scene.sim.time / end, marks,
+                      f"replay {self.scene.sim.time:7.1f} / {replay.log.end_s:.1f} s   "
+                      "LEFT/RIGHT -/+30 s  HOME start  click: seek")
 
 
 HELP = [
     "marinesim viewer",
     "",
+    "ENTER          acknowledge the alarms",
+    "N              instructor: trigger the next scripted event now",
+    "M              instructor: type a message (ENTER sends, ESC cancels)",
     "mouse drag     turn the view        scroll   zoom (orbit), fly (free)",
     "1 / 2 / 3      orbit / bridge / free camera",
     "W A S D E C    fly the free camera (forward, left, back, right, up, down)",
-    "SPACE          pause                + / -    time faster / slower",
+    "SPACE          freeze / resume      + / -    time faster / slower",
     "[ / ]          wave height down / up (x1.1, over 10 s)",
     ", / .          wave period down / up (x1.05)",
     "; / '          waves turn anticlockwise / clockwise 15 deg",

@@ -45,8 +45,31 @@ MESSAGE_COLOR = (1.0, 0.86, 0.45, 1.0)
 LEVEL_COLORS = {"settling": DIM_TEXT_COLOR, "ok": (0.45, 0.92, 0.5, 1.0), "caution": (1.0, 0.75, 0.2, 1.0),
                 "exceeded": (1.0, 0.35, 0.32, 1.0)}
 """A criterion's text colour by level: grey while settling, green, amber, red."""
+ALARM_COLOR = (0.78, 0.06, 0.06, 0.92)
+"""An alarm banner's background (the text is white)."""
+SLIDER_TRACK_COLOR = (0.55, 0.58, 0.62, 0.9)
+SLIDER_DONE_COLOR = (0.85, 0.88, 0.92, 1.0)
+SLIDER_HEIGHT = 10
 
 Color = tuple[float, float, float, float]
+
+
+@dataclass(frozen=True)
+class Banner:
+    """A line of ``text`` on a solid ``background``, centred under the messages (an alarm, a status light)."""
+
+    text: str
+    background: Color
+    color: Color = TEXT_COLOR
+
+
+@dataclass(frozen=True)
+class Slider:
+    """A replay's time slider along the bottom: the position (0..1), marks (position, colour) and a label."""
+
+    position: float
+    marks: Sequence[tuple[float, Color]] = ()
+    label: str = ""
 
 
 @dataclass(frozen=True)
@@ -183,7 +206,7 @@ class Hud:
 
     def draw(self, size: tuple[int, int], lines: Sequence[str], charts: Sequence[StripChart] = (),
              help_lines: Sequence[str] | None = None, panel: Sequence[tuple[str, str]] = (),
-             messages: Sequence[str] = ()) -> None:
+             messages: Sequence[str] = (), banners: Sequence[Banner] = (), slider: Slider | None = None) -> None:
         """Draw onto the currently bound framebuffer of `size` (w, h) pixels, alpha-blended, depth test off:
         `lines` as a text block at the top-left on a translucent dark panel; `charts` stacked at the bottom-left
         (each: a panel about 360x70 px with its title, unit, current value, the min/max of the y axis as labels,
@@ -191,7 +214,8 @@ class Hud:
         never below a small floor so a flat signal is not magnified noise); `help_lines`, when given, centred on a
         darker panel; ``panel`` (text, level) rows at the top-right (below the text block if the two
         would overlap), each coloured by its level (:data:`LEVEL_COLORS`); ``messages`` in amber at
-        the top-centre, below the top panels if they leave no room between them.
+        the top-centre, below the top panels if they leave no room between them; ``banners`` centred
+        under the messages; ``slider`` along the bottom, right of the charts (:meth:`slider_rect`).
 
         The bound framebuffer, its viewport and the enable flags (blend, depth test, face culling) are
         restored afterwards; the blend function is left at ``moderngl.DEFAULT_BLENDING`` and texture
@@ -210,12 +234,23 @@ class Hud:
             if width - MARGIN - right[0] < 2 * MARGIN + left[0]:
                 right_y = 2 * MARGIN + left[1]  # no room beside the text block: below it
             self._text_block(base, width - MARGIN - right[0], right_y, rows, PAD, PANEL_COLOR)
+        below = MARGIN  # the top of the free space at the top-centre
         if messages:
-            box_w = self._text_size(messages, PAD)[0]
+            box_w, box_h = self._text_size(messages, PAD)
             x, y = (width - box_w) // 2, MARGIN
             if right_y > MARGIN or x < 2 * MARGIN + left[0] or x + box_w > width - 2 * MARGIN - right[0]:
                 y = MARGIN + max(left[1], right_y - MARGIN + right[1]) + MARGIN  # below the top panels
             self._text_block(base, max(x, MARGIN), y, [(m, MESSAGE_COLOR) for m in messages], PAD, PANEL_COLOR)
+            below = y + box_h + MARGIN
+        elif banners:
+            below = MARGIN + max(left[1], right_y - MARGIN + right[1]) + MARGIN
+        for banner in banners:
+            box_w, box_h = self._text_size([banner.text], 2 * PAD)
+            self._text_block(base, max((width - box_w) // 2, MARGIN), below, [(banner.text, banner.color)], 2 * PAD,
+                             banner.background)
+            below += box_h + MARGIN // 2
+        if slider is not None:
+            self._slider(base, slider, *self.slider_rect(size, bool(charts)))
         layers = [base]
         if help_lines:
             box_w, box_h = self._text_size(help_lines, 2 * PAD)
@@ -249,6 +284,22 @@ class Hud:
         plot_y = panel_y + self.line_height + 4
         half = (panel_y + panel_h - 4 - plot_y) // 2
         return panel_x, panel_y, plot_x, plot_y, half
+
+    def slider_rect(self, size: tuple[int, int], charts: bool) -> tuple[int, int, int, int]:
+        """Where the time slider's track is, px from the top-left: ``(x, y, w, h)``, right of the charts."""
+        x = MARGIN + (self.chart_size[0] + MARGIN if charts else 0) + PAD
+        w = max(size[0] - MARGIN - PAD - x, 1)
+        return x, size[1] - MARGIN - PAD - SLIDER_HEIGHT, w, SLIDER_HEIGHT
+
+    def _slider(self, layer: _Layer, slider: Slider, x: int, y: int, w: int, h: int) -> None:
+        layer.rect(x - PAD, y - PAD - self.line_height, w + 2 * PAD, h + 2 * PAD + self.line_height, PANEL_COLOR)
+        self._text(layer, x, y - self.line_height - 2, slider.label, TEXT_COLOR)
+        layer.rect(x, y + h // 2 - 1, w, 3, SLIDER_TRACK_COLOR)
+        done = min(max(slider.position, 0.0), 1.0) * w
+        layer.rect(x, y + h // 2 - 1, done, 3, SLIDER_DONE_COLOR)
+        for position, color in slider.marks:
+            layer.rect(x + min(max(position, 0.0), 1.0) * w - 1, y, 2, h, color)
+        layer.rect(x + done - 3, y - 2, 6, h + 4, SLIDER_DONE_COLOR)
 
     def release(self) -> None:
         """Free the GL objects (idempotent)."""

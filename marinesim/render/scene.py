@@ -18,16 +18,22 @@ from marinesim.errors import ParameterError
 from marinesim.gl import is_software
 from marinesim.render import CAMERAS
 from marinesim.render.camera import BridgeCamera, FreeCamera, OrbitCamera
-from marinesim.render.hud import Hud, StripHistory
+from marinesim.render.hud import ALARM_COLOR, LEVEL_COLORS, Banner, Hud, Slider, StripHistory
 from marinesim.render.renderer import Renderer, RenderOptions
 from marinesim.scenario import Scenario
 from marinesim.session.exercise import Exercise, quiet
+from marinesim.session.replay import Replay
 from marinesim.session.timeline import Simulation
 
 CHARTED = (("heave", "heave_m", "m"), ("roll", "roll_deg", "deg"), ("pitch", "pitch_deg", "deg"))
 """Strip charts: title, motion column, unit."""
 HISTORY_STEP_S = 0.2
 """Spacing of the strip charts' samples (s of simulated time)."""
+HELIDECK = "helideck"
+"""The point whose criteria make the helideck status light."""
+HELIDECK_LIGHTS = {"ok": ("GREEN", "landing permitted"), "caution": ("AMBER", "landing with caution"),
+                   "exceeded": ("RED", "landing not permitted"), "settling": ("--", "measuring motions")}
+"""Helideck monitoring status by the worst level of the helideck's criteria (CAP 437 style)."""
 
 
 def solver_wanted(ctx: moderngl.Context, choice: str) -> bool:
@@ -68,6 +74,9 @@ class Scene:
         """The window's last frame time (s), shown with the renderer's timings; None (a headless render):
         no clock time in the picture, so that the same scenario gives the same pixels."""
         self.status: list[str] = []
+        self.replay: Replay | None = None
+        """The session log the clock follows (a replay), or None (live)."""
+        self.slider: Slider | None = None
 
     @property
     def camera_name(self) -> str:
@@ -84,8 +93,12 @@ class Scene:
         return self.cameras[self._camera_name]
 
     def step(self, dt: float) -> None:
-        """Advance the simulation ``dt`` s, sample the strip charts, bring the GPU up to date."""
-        self.exercise.advance(dt)
+        """Advance the simulation ``dt`` s (through the replay's actions in a replay), sample the strip
+        charts, bring the GPU up to date."""
+        if self.replay is not None:
+            self.replay.advance_to(self.sim.time + dt)
+        else:
+            self.exercise.advance(dt)
         self._sample_history()
         self.renderer.update()
 
@@ -109,7 +122,26 @@ class Scene:
         self.renderer.draw(self.camera.eye(self.sim.pose()), size)
         if hud:
             charts = [self.history.chart(name, unit) for name, _, unit in CHARTED] if self.sim.vessel else []
-            self.hud.draw(size, self.hud_lines(), charts, help_lines, self.criteria_panel(), self.exercise.messages())
+            self.hud.draw(size, self.hud_lines(), charts, help_lines, self.criteria_panel(), self.exercise.messages(),
+                          self.banners(), self.slider)
+
+    def banners(self) -> list[Banner]:
+        """The helideck's status light, then the alarms waiting for an acknowledgement (flashing at 1 Hz
+        of simulated time, so a screenshot repeats)."""
+        out = []
+        helideck = [level for c, _, level in self.exercise.readings() if c.point == HELIDECK]
+        if helideck:
+            worst = max(helideck, key=("settling", "ok", "caution", "exceeded").index)
+            light, meaning = HELIDECK_LIGHTS[worst]
+            color = LEVEL_COLORS[worst]
+            out.append(Banner(f"HELIDECK {light}: {meaning}", (*[0.35 * c for c in color[:3]], 0.9), color))
+        bright = math.floor(2.0 * self.sim.time) % 2 == 0
+        for alarm in self.exercise.unacknowledged():
+            state = "" if alarm.cleared_s is None else " (back within limit)"
+            background = ALARM_COLOR if bright else (0.45, 0.04, 0.04, 0.92)
+            out.append(Banner(f"ALARM  {alarm.name}: {alarm.value:.3g} > {alarm.limit:.3g}{state}   "
+                              f"ENTER: acknowledge", background))
+        return out
 
     def criteria_panel(self) -> list[tuple[str, str]]:
         """(text, level) rows of the criteria panel: name, latest value / limit and unit, level."""

@@ -329,6 +329,22 @@ class CriterionOptions(Section):
         return self
 
 
+class ObjectiveOptions(Section):
+    """One of ``[briefing] objectives``: what the trainee is to achieve, judged by the criteria it names."""
+
+    text: Annotated[str, Field(min_length=1, max_length=400)] = Field(description="the objective, as briefed")
+    criteria: Annotated[list[str], Field(max_length=MAX_CRITERIA)] = Field(
+        default_factory=list, description="names of [[criteria]] that judge it (met: none exceeded)")
+
+
+class BriefingOptions(Section):
+    """``[briefing]``: what the trainees are told before the exercise, and its objectives."""
+
+    text: Annotated[str, Field(min_length=1, max_length=4000)] = Field(description="the briefing")
+    objectives: Annotated[list[ObjectiveOptions], Field(max_length=MAX_CRITERIA)] = Field(
+        default_factory=list, description="the exercise's objectives (list of tables)")
+
+
 class ScenarioFile(Section):
     """A whole scenario file."""
 
@@ -341,6 +357,7 @@ class ScenarioFile(Section):
         default_factory=list, description="the exercise's timeline")
     criteria: Annotated[list[CriterionOptions], Field(max_length=MAX_CRITERIA)] = Field(
         default_factory=list, description="motion limits evaluated live and by marinesim assess")
+    briefing: BriefingOptions | None = Field(None, description="the exercise's briefing and objectives")
 
     @model_validator(mode="after")
     def _criteria_and_events_fit(self) -> ScenarioFile:
@@ -365,6 +382,11 @@ class ScenarioFile(Section):
             if QUANTITIES[criterion.quantity].dose is not None and self.run.dt_s > MAX_WF_DT_S:
                 raise _refuse(where, f"{criterion.quantity} filters the acceleration up to 0.63 Hz: it needs "
                                      f"run.dt_s <= {MAX_WF_DT_S:g} s, got {self.run.dt_s:g}")
+        for i, objective in enumerate(self.briefing.objectives if self.briefing else []):
+            for name in objective.criteria:
+                if name not in names:
+                    raise _refuse(f"briefing.objectives[{i}].criteria", f"{name!r} names no criterion "
+                                                                        f"(known: {', '.join(sorted(names)) or 'none'})")
         previous = 0.0
         for i, event in enumerate(self.events):
             where = f"events[{i}]"

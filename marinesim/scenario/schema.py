@@ -78,6 +78,14 @@ class Event:
 
 
 @dataclass(frozen=True)
+class Briefing:
+    """What the trainees are told (``text``) and the objectives: (text, names of the criteria that judge it)."""
+
+    text: str
+    objectives: tuple[tuple[str, tuple[str, ...]], ...] = ()
+
+
+@dataclass(frozen=True)
 class Scenario:
     """A validated scenario: the sea state, the ocean's options, the vessel (if any), the run, the
     exercise's events (in file order) and criteria."""
@@ -89,6 +97,7 @@ class Scenario:
     vessel: Vessel | None = None
     events: tuple[Event, ...] = ()
     criteria: tuple[Criterion, ...] = ()
+    briefing: Briefing | None = None
 
     @property
     def name(self) -> str:
@@ -132,7 +141,9 @@ def _build(path: Path, file: ScenarioFile) -> Scenario:
         if depth <= draft:
             raise ScenarioError(f"ocean.depth_m: {depth:g} m is not deeper than the hull's draft ({draft:.4g} m, "
                                 "vessel.hull): the keel would be on the sea bed")
-    return Scenario(path.resolve(), sea, file.ocean, file.run, vessel, events, criteria)
+    briefing = None if file.briefing is None else Briefing(
+        file.briefing.text.strip(), tuple((o.text, tuple(o.criteria)) for o in file.briefing.objectives))
+    return Scenario(path.resolve(), sea, file.ocean, file.run, vessel, events, criteria, briefing)
 
 
 def _sea(where: str, options: list[SeaOptions], depth: float, whole: str) -> SeaState:

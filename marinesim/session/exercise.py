@@ -11,18 +11,26 @@ Events happen in time: one with ``at_s`` is asked of the timeline ahead of time 
 ``at_s``; one with ``when`` is checked at every evaluation and happens the first time its condition
 holds, its change starting then (a sea change :data:`~marinesim.session.timeline.PREPARE_S` later, while
 its amplitudes are prepared). A change asked while another blends waits for that blend to end.
+
+A criterion whose running value goes above its limit raises an :class:`Alarm`, which stays until it is
+acknowledged; it clears when the value is back within the limit. Live actions (an instructor's change
+of sea, speed or heading, an event triggered early, a message, an acknowledgement) go through
+:meth:`Exercise.act`; everything that happens is kept in :attr:`Exercise.journal` with its simulation
+time, the session log (:mod:`marinesim.session.log`) that a replay runs again.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
 from marinesim.constants import KNOT
-from marinesim.criteria.monitor import Criterion, Monitor, watched
+from marinesim.criteria.monitor import Criterion, Monitor, Tally, watched
+from marinesim.errors import ParameterError
 from marinesim.progress import task
 from marinesim.scenario import Scenario
 from marinesim.scenario.schema import Event
@@ -42,10 +50,39 @@ class Happened:
     index: int
     time_s: float
     event: Event
+    early: bool = False
+    """Triggered by the instructor before its time or condition."""
 
     def line(self) -> str:
         """One log line: the time, the event, its message."""
-        return f"t {self.time_s:7.1f} s  event {self.index}: {self.event.describe()}"
+        early = " (triggered early by the instructor)" if self.early else ""
+        return f"t {self.time_s:7.1f} s  event {self.index}{early}: {self.event.describe()}"
+
+
+@dataclass
+class Alarm:
+    """Criterion ``criterion`` (index of the scenario's), named ``name``, went above its ``limit`` at
+    ``raised_s`` (s) with ``value``; acknowledged and back within the limit at the times given (s)."""
+
+    criterion: int
+    name: str
+    raised_s: float
+    value: float
+    limit: float
+    acknowledged_s: float | None = None
+    cleared_s: float | None = None
+
+    def line(self) -> str:
+        return f"t {self.raised_s:7.1f} s  ALARM {self.name}: {self.value:.3g} above the limit {self.limit:.3g}"
+
+
+CHANGE_KEYS = frozenset({"hs_factor", "tp_factor", "turn_waves_deg", "speed_kn", "heading_deg", "ramp_s"})
+"""What a live change may give (:meth:`Simulation.change`'s keywords, the sea as factors of the present one)."""
+ACTIONS = {"change": CHANGE_KEYS, "trigger": frozenset({"index"}), "message": frozenset({"text"}),
+           "acknowledge": frozenset()}
+"""Live actions and their fields: what :meth:`Exercise.act` applies and a replay applies again."""
+MAX_MESSAGE = 200
+"""The longest message an instructor may insert (characters)."""
 
 
 def quiet(line: str) -> None:
@@ -59,10 +96,11 @@ def last_row(t: float, dt: float) -> int:
 
 class Exercise:
     """``simulation``'s scenario as an exercise over ``duration_s`` (default: the run's); each event
-    that happens is passed to ``log`` as one line."""
+    that happens is passed to ``log`` as one line. ``watch``: more criteria to evaluate (:meth:`tally`),
+    without alarms (the debrief's motion sickness at each point)."""
 
     def __init__(self, simulation: Simulation, duration_s: float | None = None,
-                 log: Callable[[str], None] = quiet) -> None:
+                 log: Callable[[str], None] = quiet, watch: Sequence[Criterion] = ()) -> None:
         self.sim = simulation
         scenario: Scenario = simulation.scenario
         self.scenario = scenario
@@ -83,10 +121,20 @@ class Exercise:
                 if criterion not in criteria:
                     criteria.append(criterion)
                 self._watching[i] = criteria.index(criterion)
+        criteria += [criterion for criterion in watch if criterion not in criteria]
         self.criteria: tuple[Criterion, ...] = scenario.criteria
         """The scenario's criteria: the monitor's first; the others it holds are watched for conditions."""
         self.monitor = Monitor(criteria, vessel.points, self.dt, self.duration_s) if vessel and criteria else None
         self.happened: list[Happened] = []
+        self.alarms: list[Alarm] = []
+        self.said: list[tuple[float, str]] = []
+        """The instructor's messages: (time s, text)."""
+        self.journal: list[dict[str, Any]] = []
+        """Everything that happened, in time order: ``{"t": s, "kind": ..., ...}`` (the session log's entries)."""
+        self.evaluated_s: list[float] = []
+        self.values: list[list[float | None]] = []
+        """The scenario's criteria at each evaluation (None while settling), at :attr:`evaluated_s`."""
+        self._active: dict[int, Alarm] = {}
         self._timed = [i for i, event in enumerate(self.events) if event.at_s is not None]
         self._asked = 0      # timed events asked of the timeline
         self._announced = 0  # timed events that have happened
@@ -100,7 +148,11 @@ class Exercise:
 
     def advance(self, dt: float) -> None:
         """Move the clock on by ``dt`` (s), stopping at each evaluation on the way (the viewer's frame)."""
-        for _ in self._steps(self.sim.time + dt, rows=False):
+        self.advance_to(self.sim.time + dt)
+
+    def advance_to(self, t: float) -> None:
+        """Move the clock on to exactly ``t`` (s), as :meth:`advance`."""
+        for _ in self._steps(t, rows=False):
             pass
 
     def seek(self, t: float) -> None:
@@ -143,7 +195,10 @@ class Exercise:
             self.row = stop_row + 1
             self._announce_timed(stop)
             if self.monitor is not None and self.monitor.due(stop_row):
-                self.monitor.evaluate()
+                values = self.monitor.evaluate()[:len(self.criteria)]
+                self.evaluated_s.append(stop)
+                self.values.append(values)
+                self._check_alarms(stop, values)
                 self._check_conditions(stop)
             if rows:
                 out.append(block)
@@ -170,7 +225,7 @@ class Exercise:
 
     def _move_clock(self, t: float, step_solver: bool) -> None:
         if t > self.sim.time:
-            self.sim.advance(t - self.sim.time, step_solver=step_solver)
+            self.sim.advance_to(t, step_solver=step_solver)
 
     # -- events -------------------------------------------------------------------------------
 
@@ -197,22 +252,101 @@ class Exercise:
                     self._change(event, t + (PREPARE_S if event.sea is not None else 0.0))
                 self._happen(index, t)
 
+    def _check_alarms(self, t: float, values: list[float | None]) -> None:
+        """Raise an alarm for each criterion gone above its limit; clear those back within it."""
+        for i, (criterion, value) in enumerate(zip(self.criteria, values)):
+            above = value is not None and criterion.limit is not None and value > criterion.limit
+            if above and i not in self._active:
+                alarm = self._active[i] = Alarm(i, criterion.label, t, value, criterion.limit)
+                self.alarms.append(alarm)
+                self.note("alarm", criterion=alarm.name, value=value, limit=criterion.limit)
+                self.log(alarm.line())
+            elif not above and i in self._active:
+                alarm = self._active.pop(i)
+                alarm.cleared_s = t
+                self.note("cleared", criterion=alarm.name, value=value)
+
     def _change(self, event: Event, at: float) -> None:
         self.sim.change(sea=event.sea, speed_kn=None if event.speed_m_s is None else event.speed_m_s / KNOT,
                         heading_deg=event.heading_deg, ramp_s=event.ramp_s, at=at)
 
-    def _happen(self, index: int, t: float) -> None:
-        happened = Happened(index, t, self.events[index])
+    def _happen(self, index: int, t: float, early: bool = False) -> None:
+        happened = Happened(index, t, self.events[index], early)
         self.happened.append(happened)
+        self.note("event", index=index, what=happened.event.describe(), **({"early": True} if early else {}))
         self.log(happened.line())
+
+    # -- live actions -------------------------------------------------------------------------
+
+    def act(self, action: str, **fields: Any) -> None:
+        """Apply the live ``action`` (one of :data:`ACTIONS`, with its fields) now and journal it; a
+        change the timeline refuses raises :class:`~marinesim.errors.MarinesimError` and is not journaled."""
+        known = ACTIONS.get(action)
+        if known is None or not fields.keys() <= known:
+            raise ParameterError(f"unknown action {action!r} with {sorted(fields)}")
+        if action == "change":
+            self.sim.change(**fields)
+        elif action == "trigger":
+            self._trigger(fields["index"])
+        elif action == "message":
+            self._say(fields["text"])
+        self.note("action", action=action, **fields)
+        if action == "acknowledge":
+            self._acknowledge()
+
+    def note(self, kind: str, **fields: Any) -> None:
+        """Journal ``kind`` with ``fields`` at the present time."""
+        self.journal.append({"t": self.sim.time, "kind": kind, **fields})
+
+    def pending_events(self) -> list[int]:
+        """The scripted events the instructor may still trigger early (not happened, not about to)."""
+        timed = self._timed[self._asked:]
+        return sorted(timed + self._conditional)
+
+    def _trigger(self, index: int) -> None:
+        if index not in self.pending_events():
+            raise ParameterError(f"event {index} has happened or is about to: it cannot be triggered")
+        if index in self._conditional:
+            self._conditional.remove(index)
+        else:
+            self._timed.remove(index)
+        event, now = self.events[index], self.sim.time
+        if event.changes:
+            self._change(event, now + (PREPARE_S if event.sea is not None else 0.0))
+        self._happen(index, now, early=True)
+
+    def _say(self, text: str) -> None:
+        text = " ".join(str(text).split())
+        if not text or len(text) > MAX_MESSAGE:
+            raise ParameterError(f"a message needs 1 to {MAX_MESSAGE} characters, got {len(text)}")
+        self.said.append((self.sim.time, text))
+        self.log(f"t {self.sim.time:7.1f} s  instructor: {text}")
+
+    def _acknowledge(self) -> None:
+        waiting = [alarm for alarm in self.alarms if alarm.acknowledged_s is None]
+        for alarm in waiting:
+            alarm.acknowledged_s = self.sim.time
+        if waiting:
+            self.note("acknowledged", criteria=[a.name for a in waiting],
+                      delays_s=[self.sim.time - a.raised_s for a in waiting])
+
+    def unacknowledged(self) -> list[Alarm]:
+        """The alarms waiting for an acknowledgement, oldest first."""
+        return [alarm for alarm in self.alarms if alarm.acknowledged_s is None]
 
     # -- what it shows ------------------------------------------------------------------------
 
     def messages(self, t: float | None = None, span_s: float = 30.0) -> list[str]:
         """The messages of the events that happened within ``span_s`` before ``t`` (default now), newest last."""
         t = self.sim.time if t is None else t
-        return [f"t {h.time_s:6.0f} s  {h.event.message}" for h in self.happened
-                if h.event.message and t - span_s <= h.time_s <= t]
+        said = [(h.time_s, h.event.message) for h in self.happened if h.event.message]
+        said += [(time_s, f"instructor: {text}") for time_s, text in self.said]
+        return [f"t {time_s:6.0f} s  {text}" for time_s, text in sorted(said, key=lambda m: m[0])
+                if t - span_s <= time_s <= t]
+
+    def tally(self, criterion: Criterion) -> Tally:
+        """The tally of a criterion the exercise evaluates (the scenario's, a condition's, or watched)."""
+        return self.monitor.tallies[self.monitor.criteria.index(criterion)]
 
     def readings(self) -> list[tuple[Criterion, float | None, str]]:
         """(criterion, latest value or None while settling, level) of the scenario's criteria."""
@@ -237,9 +371,11 @@ class Exercise:
         events = [{"index": i, "trigger": (f"at {e.at_s:g} s" if e.at_s is not None else f"when {e.condition}"),
                    "happened_s": happened.get(i), "what": e.describe().partition(": ")[2], "message": e.message}
                   for i, e in enumerate(self.events)]
+        alarms = [{"criterion": a.name, "raised_s": a.raised_s, "value": a.value, "limit": a.limit,
+                   "acknowledged_s": a.acknowledged_s, "cleared_s": a.cleared_s} for a in self.alarms]
         levels = {c["level"] for c in criteria}
         verdict = ("exceeded" if "exceeded" in levels else "caution" if "caution" in levels
                    else "no value" if levels == {"settling"} else "within limits")
         return {"scenario": str(self.scenario.path), "seed": self.scenario.run.seed,
                 "duration_s": self.sim.time, "dt_s": self.dt, "criteria": criteria, "events": events,
-                "verdict": verdict}
+                "alarms": alarms, "verdict": verdict}

@@ -74,33 +74,41 @@ def export_motions(assembly: Assembly, out: Path, file_format: str | None = None
             (_write_csv if file_format == "csv" else _write_parquet)(temp, blocks, bar)
 
     def describe() -> dict:
-        vessel, rao, response = scenario.vessel, scenario.vessel.rao, assembly.response
-        return {
-            "format": file_format,
-            "rows": steps,
-            "columns": columns,
-            "conventions": CONVENTIONS,
-            **run_sidecar(assembly, duration, run.dt_s, response.components),
-            "vessel": {
-                "rao": str(vessel.rao_path),
-                "rao_sha256": sha256(vessel.rao_path),
-                "rao_format": rao.source_format,
-                "rao_notes": list(rao.notes),
-                "rao_reference_point_m": list(rao.reference_point),
-                "hull": str(vessel.hull_path) if vessel.hull_path else None,
-                "hull_sha256": sha256(vessel.hull_path) if vessel.hull_path else None,
-                "speed_kn": vessel.speed_kn,
-                "heading_deg": vessel.heading_deg,
-                "points_m": {name: list(p) for name, p in vessel.points.items()},
-            },
-            "events": [{"index": h.index, "time_s": h.time_s, "what": h.event.describe()} for h in exercise.happened],
-        }
+        return {"format": file_format, **motions_sidecar(exercise, steps, duration)}
 
     try:
         sidecar = write_table(out, write, describe)
     finally:
         simulation.close()
     return Export(out, sidecar, steps, columns, exercise)
+
+
+def motions_sidecar(exercise: Exercise, rows: int, duration_s: float) -> dict:
+    """What a motion table's sidecar says after its format: its rows and columns, what they mean, the run
+    (:func:`run_sidecar`), the vessel's files and course, the events that happened and the live actions."""
+    assembly = exercise.sim.assembly
+    scenario = assembly.scenario
+    vessel, rao, response = scenario.vessel, scenario.vessel.rao, assembly.response
+    return {
+        "rows": rows,
+        "columns": response.columns,
+        "conventions": CONVENTIONS,
+        **run_sidecar(assembly, duration_s, scenario.run.dt_s, response.components),
+        "vessel": {
+            "rao": str(vessel.rao_path),
+            "rao_sha256": sha256(vessel.rao_path),
+            "rao_format": rao.source_format,
+            "rao_notes": list(rao.notes),
+            "rao_reference_point_m": list(rao.reference_point),
+            "hull": str(vessel.hull_path) if vessel.hull_path else None,
+            "hull_sha256": sha256(vessel.hull_path) if vessel.hull_path else None,
+            "speed_kn": vessel.speed_kn,
+            "heading_deg": vessel.heading_deg,
+            "points_m": {name: list(p) for name, p in vessel.points.items()},
+        },
+        "events": [{"index": h.index, "time_s": h.time_s, "what": h.event.describe()} for h in exercise.happened],
+        "actions": [entry for entry in exercise.journal if entry["kind"] == "action"],
+    }
 
 
 def table_format(path: Path, file_format: str | None) -> str:

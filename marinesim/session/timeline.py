@@ -125,13 +125,19 @@ class Simulation:
     def advance(self, dt: float, step_solver: bool = True) -> None:
         """Move the clock on by ``dt`` (s), start the changes waiting for a blend to end, step the solver
         (unless told not to: a seek places it once at the end)."""
-        self._move_clock(dt)
+        self.advance_to(self.time + dt, step_solver)
+
+    def advance_to(self, t: float, step_solver: bool = True) -> None:
+        """:meth:`advance` to exactly ``t`` (s): a replay that stops where the live session stopped has
+        the same clock to the last bit."""
+        dt = t - self.time
+        self._move_clock(t)
         if self.solver is not None and dt > 0 and step_solver:
             self.solver.step(dt, self.pose())
 
     def seek(self, t: float) -> None:
         """Jump the clock forward to ``t`` (s); the solver's water starts at rest around the new pose."""
-        self._move_clock(t - self.time)
+        self._move_clock(t)
         if self.solver is not None:
             self.solver.place(self.pose())
 
@@ -140,10 +146,10 @@ class Simulation:
         solver.place(self.pose())
         self.solver = solver
 
-    def _move_clock(self, dt: float) -> None:
-        if not math.isfinite(dt) or dt < 0:
-            raise ParameterError(f"time step must be a finite non-negative number of seconds, got {dt!r}")
-        self.time += dt
+    def _move_clock(self, t: float) -> None:
+        if not math.isfinite(t) or t < self.time:
+            raise ParameterError(f"time step must be a finite non-negative number of seconds, got {t - self.time!r}")
+        self.time = t
         while self._pending and self.time >= (at := self._next_start()):
             self._start(self._pending.pop(0), at)
 
@@ -198,7 +204,7 @@ class Simulation:
             change = dataclasses.replace(change, sea=sea, ready_at=start + (PREPARE_S if at is None else 0.0),
                                          prepared=self._preparing.submit(self.ocean.prepare, sea))
         self._pending.append(change)
-        self.advance(0.0)
+        self._move_clock(self.time)
 
     def _start(self, change: _Change, at: float) -> None:
         t, last = at, self.legs[-1]

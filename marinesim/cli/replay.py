@@ -1,0 +1,57 @@
+"""``marinesim replay``: a session log opened again in the viewer with a time slider, or replayed headless."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from marinesim.cli.common import add_view_options, bars, render_options
+
+NEEDS = ("marinesim.scenario", "marinesim.session.replay", "marinesim.session.log")
+"""The modules the command loads before it starts (Ctrl-C is held until they are in)."""
+
+
+def add(commands: argparse._SubParsersAction) -> None:
+    p = commands.add_parser(
+        "replay", help="replay a session log: in the viewer with a time slider, or headless",
+        description="Open a session log (written by the viewer when it closes, JSON lines) in the viewer: "
+                    "the same scenario, seed and live actions at the same times, with a time slider (LEFT/RIGHT "
+                    "seek 30 s, HOME start, click the slider, SPACE pause, + / - pace). With --export, or "
+                    "without a display, replay it headless to its end: with --export the motions are written as "
+                    "the session's recorder wrote them, to the same bytes.")
+    p.add_argument("log", type=Path, help="session log (.jsonl)")
+    p.add_argument("--export", type=Path, help="write the session's motions (CSV, with its sidecar) and exit")
+    p.add_argument("--headless", action="store_true", help="do not open a window even if there is a display")
+    p.add_argument("--quiet", action="store_true", help="no progress bar")
+    add_view_options(p)
+    p.set_defaults(handler=handle)
+
+
+def handle(args: argparse.Namespace) -> int:
+    from marinesim.cli.assess import table
+    from marinesim.progress import reporting
+    from marinesim.session.log import describe, read_log
+    from marinesim.session.replay import replay_session, session_scenario
+
+    session = read_log(args.log)
+    print(f"session {args.log}: {describe(session)}")
+    if args.export is None and not args.headless:
+        from marinesim.render.viewer import NoDisplay, Viewer
+
+        scenario = session_scenario(session, args.log)
+        try:
+            with reporting(bars(args.quiet)):
+                viewer = Viewer(scenario, args.camera, args.solver, options=render_options(args), replay=session)
+        except NoDisplay as reason:
+            print(f"{reason}: replaying headless instead")
+        else:
+            print("replay open: LEFT/RIGHT seek, SPACE pause, H lists the keys, ESC quits")
+            viewer.run()
+            return 0
+    with reporting(bars(args.quiet)):
+        exercise = replay_session(args.log, args.export, log=print)
+    if exercise.monitor is not None:
+        print("\n".join(table(exercise.assessment())))
+    if args.export is not None:
+        print(f"wrote the session's motions: {args.export} (sidecar {args.export}.json)")
+    return 0

@@ -1,0 +1,58 @@
+"""``marinesim report``: the after-action report of a session log or a scenario, one HTML file."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from marinesim.cli.common import bars
+
+NEEDS = ("marinesim.scenario", "marinesim.session.replay", "marinesim.report.debrief", "marinesim.report.html")
+"""The modules the command loads before it starts (Ctrl-C is held until they are in)."""
+
+
+def add(commands: argparse._SubParsersAction) -> None:
+    p = commands.add_parser(
+        "report", help="write the after-action report of a session log or a scenario (HTML)",
+        description="Run a session log again (or a scenario's exercise, headless) and write the debrief as one "
+                    "self-contained HTML file: the briefing and a verdict per objective, every criterion over "
+                    "time with its limit, caution line and the events, exceedance statistics, the alarms with "
+                    "their acknowledgement delays, motion sickness (MSI, MSDV) and the conditions.")
+    p.add_argument("source", type=Path, help="session log (.jsonl) or scenario (.toml)")
+    p.add_argument("--out", type=Path, required=True, help="the report's HTML file")
+    p.add_argument("--duration", type=float, help="a scenario's run length, s (default: the scenario's)")
+    p.add_argument("--seed", type=int, help="a scenario's random seed (default: the scenario's)")
+    p.add_argument("--quiet", action="store_true", help="no progress bar")
+    p.set_defaults(handler=handle)
+
+
+def handle(args: argparse.Namespace) -> int:
+    from marinesim.errors import ParameterError
+    from marinesim.progress import reporting
+    from marinesim.report.debrief import debrief, sickness_criteria
+    from marinesim.report.html import write_report
+    from marinesim.scenario import load_scenario, with_run
+    from marinesim.session.exercise import Exercise
+    from marinesim.session.log import read_log
+    from marinesim.session.replay import replay_session, session_scenario
+    from marinesim.session.timeline import Simulation
+
+    is_log = args.source.suffix.lower() in (".jsonl", ".log")
+    with reporting(bars(args.quiet)):
+        if is_log:
+            if args.duration is not None or args.seed is not None:
+                raise ParameterError("--duration and --seed are the session's own: give them with a scenario")
+            watch = sickness_criteria(session_scenario(read_log(args.source), args.source))
+            exercise = replay_session(args.source, watch=watch, log=print)
+        else:
+            scenario = with_run(load_scenario(args.source), args.duration, seed=args.seed)
+            simulation = Simulation(scenario, wake=False)
+            try:
+                exercise = Exercise(simulation, log=print, watch=sickness_criteria(scenario))
+                exercise.run()
+            finally:
+                simulation.close()
+    out = write_report(debrief(exercise, args.source if is_log else None), args.out)
+    print(f"verdict: {exercise.assessment()['verdict']}")
+    print(f"wrote the after-action report: {out}")
+    return 0

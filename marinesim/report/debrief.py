@@ -1,0 +1,107 @@
+"""What the after-action report shows, gathered from an exercise run (live, replayed or assessed).
+
+:func:`debrief` turns an :class:`~marinesim.session.exercise.Exercise` that has run into the plain
+dictionary :mod:`marinesim.report.html` lays out: the briefing and a verdict per objective, each
+criterion's running value at every evaluation, the events, alarms with their acknowledgements, the
+messages and actions, motion sickness (MSI, MSDV) at the vessel's points, and the conditions.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from marinesim import __version__
+from marinesim.angles import wave_compass_from_beta
+from marinesim.criteria.monitor import Criterion
+from marinesim.criteria.sickness import MAX_WF_DT_S
+from marinesim.scenario import Scenario
+from marinesim.sea.seastate import SeaState
+from marinesim.session.exercise import Exercise
+from marinesim.session.sidecar import sha256
+
+VERDICTS = {"ok": "met", "caution": "met with caution", "exceeded": "not met", "settling": "no value"}
+"""An objective's verdict from the worst level of the criteria that judge it."""
+ORDER = ("settling", "ok", "caution", "exceeded")
+
+
+def sickness_criteria(scenario: Scenario) -> list[Criterion]:
+    """The motion-sickness criteria the debrief watches at each point: MSI, and MSDV where dt allows W_f."""
+    vessel = scenario.vessel
+    if vessel is None:
+        return []
+    quantities = ["msi_pct"] + (["msdv_m_s1_5"] if scenario.run.dt_s <= MAX_WF_DT_S else [])
+    return [Criterion(q, point=point) for point in vessel.points for q in quantities]
+
+
+def debrief(exercise: Exercise, log: Path | None = None) -> dict:
+    """The report's data from ``exercise`` (run with ``watch=sickness_criteria(...)``), its session ``log`` if any."""
+    scenario = exercise.scenario
+    result = exercise.assessment()
+    criteria = result["criteria"]
+    for i, entry in enumerate(criteria):
+        entry["series"] = {"time_s": exercise.evaluated_s, "value": [values[i] for values in exercise.values]}
+    levels = {c["name"]: c["level"] for c in criteria}
+    briefing = None
+    if scenario.briefing is not None:
+        objectives = []
+        for text, names in scenario.briefing.objectives:
+            worst = max((levels[name] for name in names), key=ORDER.index, default="settling")
+            objectives.append({"text": text, "criteria": list(names), "verdict": VERDICTS[worst]})
+        briefing = {"text": scenario.briefing.text, "objectives": objectives}
+    messages = [{"time_s": h.time_s, "text": h.event.message, "source": "event"}
+                for h in exercise.happened if h.event.message]
+    messages += [{"time_s": t, "text": text, "source": "instructor"} for t, text in exercise.said]
+    actions = [{"time_s": e["t"], "what": _action(e)} for e in exercise.journal if e["kind"] == "action"]
+    sickness = []
+    if exercise.monitor is not None:
+        by_point: dict[str, dict] = {}
+        for criterion in sickness_criteria(scenario):
+            value = exercise.tally(criterion).value
+            key = "msi_percent" if criterion.quantity == "msi_pct" else "msdv_m_s1_5"
+            by_point.setdefault(criterion.point, {"point": criterion.point})[key] = value
+        sickness = list(by_point.values())
+    return {
+        "title": scenario.name.replace("_", " "),
+        "source": str(log) if log is not None else str(scenario.path),
+        "briefing": briefing,
+        "verdict": result["verdict"],
+        "conditions": _conditions(exercise, log),
+        "criteria": criteria,
+        "events": result["events"],
+        "alarms": result["alarms"],
+        "messages": sorted(messages, key=lambda m: m["time_s"]),
+        "actions": actions,
+        "sickness": sickness,
+    }
+
+
+def _action(entry: dict) -> str:
+    """An action entry of the journal in words."""
+    fields = {k: v for k, v in entry.items() if k not in ("t", "kind", "action")}
+    if entry["action"] == "change":
+        return "change: " + ", ".join(f"{k} {v:g}" for k, v in fields.items() if k != "ramp_s")
+    if entry["action"] == "trigger":
+        return f"event {fields['index']} triggered early"
+    if entry["action"] == "message":
+        return f"message: {fields['text']}"
+    return "alarms acknowledged"
+
+
+def _conditions(exercise: Exercise, log: Path | None) -> dict:
+    scenario = exercise.scenario
+    vessel = scenario.vessel
+    seas = []
+    for system in scenario.sea.systems:
+        alone = SeaState((system,), depth=scenario.sea.depth)
+        seas.append({"hs_m": alone.hs, "tp_s": alone.tp, "from_deg": wave_compass_from_beta(system.beta),
+                     "gamma": getattr(getattr(system, "spectrum", None), "gamma", None),
+                     "spreading_s": getattr(getattr(system, "spreading", None), "s", None)})
+    out = {"scenario": str(scenario.path), "scenario_sha256": sha256(scenario.path), "seed": scenario.run.seed,
+           "duration_s": exercise.sim.time, "dt_s": scenario.run.dt_s,
+           "log": str(log) if log is not None else None, "log_sha256": sha256(log) if log is not None else None,
+           "marinesim": __version__, "sea": seas}
+    if vessel is not None:
+        out["vessel"] = {"rao": str(vessel.rao_path), "rao_sha256": sha256(vessel.rao_path),
+                         "speed_kn": vessel.speed_kn, "heading_deg": vessel.heading_deg,
+                         "points_m": {name: list(p) for name, p in vessel.points.items()}}
+    return out
