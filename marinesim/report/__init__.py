@@ -1,0 +1,1 @@
+"""The debrief: what an exercise run shows, and its after-action report."""

@@ -1,0 +1,58 @@
+"""The four shipped training exercises: each loads with its briefing and objectives, runs through
+``assess`` and ``report`` (short, as CI can afford), and the heavy-weather transit rewards the right
+call: the course change brings the roll back within its limit."""
+
+from __future__ import annotations
+
+import html
+import json
+
+import pytest
+
+from conftest import ROOT
+from marinesim.cli import main
+from marinesim.scenario import load_scenario
+from marinesim.session.exercise import Exercise
+from marinesim.session.timeline import Simulation
+
+TRAINING = sorted((ROOT / "configs" / "training").glob("*.toml"))
+
+
+def test_four_exercises_ship():
+    assert [p.stem for p in TRAINING] == ["crane_lift", "heavy_weather_transit", "helideck_landing",
+                                          "offshore_loading"]
+
+
+@pytest.mark.parametrize("path", TRAINING, ids=[p.stem for p in TRAINING])
+def test_an_exercise_runs_through_assess_and_report(path, tmp_path, capsys):
+    scenario = load_scenario(path)
+    assert scenario.briefing is not None and scenario.briefing.objectives and scenario.events and scenario.criteria
+    named = {c.label for c in scenario.criteria}
+    for _, criteria in scenario.briefing.objectives:
+        assert criteria and set(criteria) <= named, "every objective is judged by the exercise's criteria"
+    assert main(["assess", str(path), "--duration", "240", "--json", "--quiet"]) == 0
+    result = json.loads(capsys.readouterr().out)
+    assert result["duration_s"] == 240.0 and len(result["criteria"]) == len(scenario.criteria)
+    assert main(["report", str(path), "--out", str(tmp_path / "r.html"), "--duration", "240", "--quiet"]) == 0
+    page = (tmp_path / "r.html").read_text()
+    assert html.escape(scenario.briefing.objectives[0][0]) in page and "<img class='plot'" in page
+
+
+@pytest.mark.slow
+def test_the_course_change_is_the_right_call_in_heavy_weather():
+    """Without a change the roll goes above 4 deg RMS as the sea builds; altering to 180 deg at 600 s
+    keeps it within the limit (the briefing's objective is met)."""
+    scenario = load_scenario(ROOT / "configs" / "training" / "heavy_weather_transit.toml")
+    worst = {}
+    for change in (False, True):
+        simulation = Simulation(scenario, wake=False)
+        exercise = Exercise(simulation)
+        if change:
+            exercise.advance_to(600.0)
+            exercise.act("change", heading_deg=180.0, ramp_s=60.0)
+        exercise.run()
+        roll = exercise.assessment()["criteria"][0]
+        worst[change] = (roll["value"], roll["level"])
+        simulation.close()
+    assert worst[False][1] == "exceeded" and worst[True][1] in ("ok", "caution"), worst
+    assert worst[True][0] < 4.0 < worst[False][0]
