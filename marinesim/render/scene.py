@@ -30,7 +30,7 @@ CHARTED = (("heave", "heave_m", "m"), ("roll", "roll_deg", "deg"), ("pitch", "pi
 HISTORY_STEP_S = 0.2
 """Spacing of the strip charts' samples (s of simulated time)."""
 HELIDECK = "helideck"
-"""The point whose criteria make the helideck status light."""
+"""The criteria at this point, or named starting with it, make the helideck status light."""
 HELIDECK_LIGHTS = {"ok": ("GREEN", "landing permitted"), "caution": ("AMBER", "landing with caution"),
                    "exceeded": ("RED", "landing not permitted"), "settling": ("--", "measuring motions")}
 """Helideck monitoring status by the worst level of the helideck's criteria (CAP 437 style)."""
@@ -129,7 +129,8 @@ class Scene:
         """The helideck's status light, then the alarms waiting for an acknowledgement (flashing at 1 Hz
         of simulated time, so a screenshot repeats)."""
         out = []
-        helideck = [level for c, _, level in self.exercise.readings() if c.point == HELIDECK]
+        helideck = [level for c, _, level in self.exercise.readings()
+                    if c.point == HELIDECK or c.label.lower().startswith(HELIDECK)]
         if helideck:
             worst = max(helideck, key=("settling", "ok", "caution", "exceeded").index)
             light, meaning = HELIDECK_LIGHTS[worst]
