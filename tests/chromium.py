@@ -1,5 +1,6 @@
 """Debian's Chromium, headless, for the tests that look at a page as a person would: a screenshot of a
-file:// page and its DOM after the page's scripts ran. Chromium must be installed (``.ci/run`` installs it)."""
+file:// page and its DOM once the page's scripts ran. Chromium must be installed (``.ci/run`` installs
+it); a test that needs it fails, never skips, where it is missing."""
 
 from __future__ import annotations
 
@@ -10,24 +11,33 @@ from pathlib import Path
 
 CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"
 FLAGS = ("--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-         "--disable-background-networking", "--disable-component-update", "--disable-sync", "--hide-scrollbars")
-"""Without the networking flags Chromium keeps trying hosts this machine cannot reach."""
+         "--disable-background-networking", "--disable-component-update", "--disable-sync",
+         "--disable-default-apps", "--disable-extensions", "--mute-audio", "--hide-scrollbars",
+         "--force-device-scale-factor=1")
+"""Without the networking flags Chromium keeps trying hosts this machine cannot reach; scale 1: a
+screenshot's pixels are CSS pixels."""
+TIMEOUT_S = 120.0
 
 
-def _run(args: list[str], timeout: float = 120.0) -> subprocess.CompletedProcess:
+def _run(args: list[str], timeout: float = TIMEOUT_S) -> subprocess.CompletedProcess:
+    """Chromium with :data:`FLAGS` and a fresh profile of its own, then ``args``; raises if it fails."""
     if not Path(CHROMIUM).exists():
         raise FileNotFoundError(f"{CHROMIUM} is missing: apt-get install chromium")
-    with tempfile.TemporaryDirectory() as profile:
+    with tempfile.TemporaryDirectory(prefix="chromium-profile-") as profile:
         return subprocess.run([CHROMIUM, *FLAGS, f"--user-data-dir={profile}", *args], capture_output=True,
-                              text=True, timeout=timeout, check=True)
+                              text=True, timeout=timeout, check=True, stdin=subprocess.DEVNULL)
 
 
-def screenshot(page: Path, png: Path, size: tuple[int, int] = (1200, 3000)) -> Path:
-    """``page`` rendered to ``png`` at ``size`` (w, h) px."""
-    _run([f"--window-size={size[0]},{size[1]}", f"--screenshot={png}", Path(page).resolve().as_uri()])
-    return png
+def screenshot(html_path: Path, png_path: Path, size: tuple[int, int] = (1200, 3000)) -> Path:
+    """``html_path`` drawn to ``png_path`` in a window of ``size`` (width, height) px; returns ``png_path``."""
+    png_path = Path(png_path).resolve()
+    _run([f"--window-size={size[0]},{size[1]}", f"--screenshot={png_path}", "--virtual-time-budget=5000",
+          Path(html_path).resolve().as_uri()])
+    if not png_path.is_file():
+        raise RuntimeError(f"chromium wrote no screenshot of {html_path}")
+    return png_path
 
 
-def dump_dom(page: Path) -> str:
-    """The DOM of ``page`` once loaded and its load handlers have run."""
-    return _run(["--virtual-time-budget=5000", "--dump-dom", Path(page).resolve().as_uri()]).stdout
+def dump_dom(html_path: Path) -> str:
+    """The DOM of ``html_path`` once loaded and its load handlers have run, serialised as HTML."""
+    return _run(["--virtual-time-budget=5000", "--dump-dom", Path(html_path).resolve().as_uri()]).stdout

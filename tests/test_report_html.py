@@ -1,43 +1,213 @@
-"""The after-action report of a real session (alarms, an acknowledgement, instructor actions), rendered
-in Debian's Chromium: the plots decode, the page is drawn, and the same session gives the same bytes."""
+"""The after-action report (:mod:`marinesim.report.html`) of a realistic 20-minute helideck exercise: what the
+page says, that real Chromium decodes every plot and draws the page, and that the same data give the same bytes."""
 
 from __future__ import annotations
 
+import copy
 import re
 
 import numpy as np
+import pytest
 from PIL import Image
 
 from chromium import dump_dom, screenshot
 from conftest import write
 from marinesim.cli import main
+from marinesim.errors import MarinesimError
+from marinesim.report.html import render_report, write_report
 from marinesim.scenario import load_scenario
 from marinesim.session.log import write_log
 from test_session_replay import SESSION, _live_session
 
+RED = (0xd0, 0x31, 0x2d)
+"""The 'exceeded' badge's red (:data:`marinesim.report.plots.EXCEEDED`)."""
 
-def test_the_debrief_of_a_session_renders_in_a_browser(tmp_path):
+
+def _running_max(amplitude, period_s: float, phase: float, window_s: float, noise: np.ndarray) -> dict:
+    """The running largest |angle| over ``window_s`` of a wave-frequency motion of slowly varying ``amplitude``(t),
+    sampled at 0.5 s and evaluated every 1 s over 1200 s (None while the window fills)."""
+    t = np.arange(0.0, 1200.0, 0.5)
+    motion = amplitude(t) * np.sin(2 * np.pi * t / period_s + phase) + noise[: t.size]
+    window = int(window_s / 0.5)
+    running = np.lib.stride_tricks.sliding_window_view(np.abs(motion), window).max(axis=1)  # ends at t[window-1:]
+    times = np.arange(1.0, 1201.0)
+    values = [None if ti < window_s else round(float(running[int(2 * ti) - window]), 4) for ti in times]
+    return {"time_s": times.tolist(), "value": values}
+
+
+def _criterion(name, point, quantity, unit, limit, window_s, series) -> dict:
+    """A criterion's entry as :meth:`Exercise.assessment` gives it, its statistics taken from ``series``."""
+    pairs = [(t, v) for t, v in zip(series["time_s"], series["value"]) if v is not None]
+    above = [t for t, v in pairs if v > limit]
+    worst_t, worst = max(pairs, key=lambda p: p[1]) if pairs else (None, None)
+    level = ("settling" if worst is None else "exceeded" if worst > limit else "caution" if worst >= 0.8 * limit
+             else "ok")
+    return {"name": name, "point": point, "quantity": quantity, "unit": unit, "limit": limit, "caution": 0.8,
+            "window_s": window_s, "value": worst, "value_at_s": worst_t, "time_exceeded_s": float(len(above)),
+            "first_exceeded_s": above[0] if above else None, "level": level, "series": series}
+
+
+def _alarms(criterion: dict) -> list[dict]:
+    """An alarm each time the series goes above its limit, cleared when it is back under."""
+    out, up = [], None
+    for t, v in zip(criterion["series"]["time_s"], criterion["series"]["value"]):
+        if v is not None and v > criterion["limit"] and up is None:
+            up = {"criterion": criterion["name"], "raised_s": t, "value": v, "limit": criterion["limit"],
+                  "acknowledged_s": None, "cleared_s": None}
+            out.append(up)
+        elif up is not None and (v is None or v <= criterion["limit"]):
+            up["cleared_s"], up = t, None
+    return out
+
+
+def exercise_data() -> dict:
+    """A 1200 s run evaluated every 1 s: the helideck pitch goes above its limit twice (two alarms, the first
+    acknowledged after 6.5 s, the second never), the roll reaches caution only, the heave rate's 30 min window
+    never fills; an event at 240 s, one on a condition, one that never happened; an instructor's message with
+    markup in it."""
+    rng = np.random.default_rng(7)
+    pitch = _running_max(lambda t: 2.3 + 0.9 * np.sin(2 * np.pi * (t - 200) / 600), 7.5, 0.3, 60.0,
+                         rng.normal(0.0, 0.08, 2400))
+    roll = _running_max(lambda t: 3.25 + 0.85 * np.sin(2 * np.pi * t / 900), 11.0, 1.1, 60.0,
+                        rng.normal(0.0, 0.1, 2400))
+    heave = {"time_s": pitch["time_s"], "value": [None] * len(pitch["time_s"])}
+    criteria = [_criterion("helideck pitch", "helideck", "pitch_max_deg", "deg", 3.0, 60.0, pitch),
+                _criterion("helideck roll", "helideck", "roll_max_deg", "deg", 5.0, 60.0, roll),
+                _criterion("helideck heave rate", "helideck", "mahr_m_s", "m/s", 1.3, 1800.0, heave)]
+    alarms = _alarms(criteria[0])
+    assert len(alarms) == 2, "the test's pitch must go above its limit twice"
+    alarms[0]["acknowledged_s"] = alarms[0]["raised_s"] + 6.5
+    stand_by = next(t for t, v in zip(pitch["time_s"], pitch["value"]) if v is not None and v > 2.5)
+    return {
+        "title": "helideck landing window",
+        "source": "configs/training/helideck_landing.toml",
+        "briefing": {
+            "text": "A medium helicopter lands on the supply vessel's helideck in a building westerly sea.\n\n"
+                    "Keep the deck within the CAP 437 motion limits; call the helicopter off when the pitch "
+                    "alarm sounds, and acknowledge every alarm at once.",
+            "objectives": [
+                {"text": "Land the helicopter within the CAP 437 limits",
+                 "criteria": ["helideck pitch", "helideck roll"], "verdict": "not met"},
+                {"text": "Keep the roll below the caution line", "criteria": ["helideck roll"],
+                 "verdict": "met with caution"},
+                {"text": "Hold the heave rate over 30 min", "criteria": ["helideck heave rate"], "verdict": "no value"},
+                {"text": "Brief the crew before the approach", "criteria": [], "verdict": "met"}]},
+        "verdict": "exceeded",
+        "conditions": {
+            "scenario": "configs/training/helideck_landing.toml", "scenario_sha256": "3f" * 32, "seed": 11,
+            "duration_s": 1200.0, "dt_s": 0.5, "log": "sessions/helideck-1.jsonl", "log_sha256": "a7" * 32,
+            "marinesim": "0.9",
+            "vessel": {"rao": "rao/supply/supply.re1", "rao_sha256": "c4" * 32, "speed_kn": 4.0, "heading_deg": 270.0,
+                       "points_m": {"helideck": [-28.0, 0.0, 12.5], "bridge": [22.0, 0.0, 14.0]}},
+            "sea": [{"hs_m": 3.0, "tp_s": 9.0, "from_deg": 290.0, "gamma": 3.3, "spreading_s": 12.0},
+                    {"hs_m": 1.5, "tp_s": 14.0, "from_deg": 250.0, "gamma": 1.0, "spreading_s": None}]},
+        "criteria": criteria,
+        "events": [
+            {"index": 0, "trigger": "at 240 s", "happened_s": 240.0, "what": "sea Hs 4.0 m over 120 s",
+             "message": "Helicopter inbound"},
+            {"index": 1, "trigger": "when helideck pitch > 2.5", "happened_s": stand_by, "what": "message only",
+             "message": "Deck crew stand by"},
+            {"index": 2, "trigger": "when roll > 8", "happened_s": None, "what": "speed 0 kn", "message": None}],
+        "alarms": alarms,
+        "messages": [{"time_s": 240.0, "text": "Helicopter inbound", "source": "event"},
+                     {"time_s": stand_by, "text": "Deck crew stand by", "source": "event"},
+                     {"time_s": 640.0, "text": "<script>alert('wave')</script> & check the lashings",
+                      "source": "instructor"}],
+        "actions": [{"time_s": 120.4, "what": "instructor: speed 10 kn"},
+                    {"time_s": alarms[0]["acknowledged_s"], "what": "alarms acknowledged"}],
+        "sickness": [{"point": "bridge", "msi_percent": 12.3, "msdv_m_s1_5": 30.1},
+                     {"point": "helideck", "msi_percent": 21.7, "msdv_m_s1_5": None}],
+    }
+
+
+@pytest.fixture(scope="module")
+def report(tmp_path_factory):
+    out = tmp_path_factory.mktemp("report") / "debrief.html"
+    data = exercise_data()
+    return data, write_report(data, out)
+
+
+def test_the_page_says_what_the_debrief_needs(report):
+    data, path = report
+    page = path.read_text(encoding="utf-8")
+    assert page.count("<img class='plot'") == len(data["criteria"]) + 1, "one plot per criterion, and the timeline"
+    assert "class='badge exceeded verdict'>exceeded<" in page, "the overall verdict, as a red badge"
+    for objective in data["briefing"]["objectives"]:
+        assert objective["text"] in page and f"'>{objective['verdict']}</span>" in page, objective
+    assert "<td class='num'>6.5 s</td>" in page, "the alarm table gives the acknowledgement delay"
+    assert "not acknowledged" in page and "did not happen" in page
+    assert "&lt;script&gt;alert(&#x27;wave&#x27;)&lt;/script&gt; &amp; check the lashings" in page, "text is escaped"
+    assert page.count("<script") == 1, "one script only: the plot counter"
+    assert not re.search(r"(?:src|href)=['\"]?(?:https?:|//)", page) and "http://" not in page, "nothing fetched"
+    sections = ("briefing", "criteria", "statistics", "alarms", "sickness", "log", "conditions")
+    places = [page.index(f"<section id='{name}'>") for name in sections]
+    assert places == sorted(places), "briefing, exercise, statistics, alarms, sickness, log, conditions in order"
+    assert "3f" * 32 in page and "c4" * 32 in page, "the conditions name the inputs by hash"
+    assert len(page) < 400_000, f"the page is {len(page)} bytes: keep the plots small"
+
+
+def test_same_data_same_bytes(report, tmp_path):
+    data, path = report
+    again = write_report(copy.deepcopy(data), tmp_path / "again.html")
+    assert again.read_bytes() == path.read_bytes()
+
+
+def test_missing_parts_leave_their_sections_out():
+    """A title, a verdict and one criterion that never got a value: the page renders, without the other parts."""
+    lean = {"title": "bare", "verdict": "no value", "criteria": [exercise_data()["criteria"][2]]}
+    page = render_report(lean)
+    assert page.count("<img class='plot'") == 1 and "no value yet" in page
+    for section in ("briefing", "alarms", "sickness", "log", "conditions"):
+        assert f"<section id='{section}'>" not in page
+    bare = render_report({"title": "bare", "criteria": [], "events": [], "alarms": [], "messages": []})
+    assert "<h1>bare</h1>" in bare and "<img" not in bare and "class='badge none verdict'>no value<" in bare
+
+
+def test_a_three_hour_run_keeps_every_point_and_a_small_page():
+    t = np.arange(1.0, 10801.0)
+    v = 1.0 + 0.8 * np.sin(2 * np.pi * t / 3000) + np.random.default_rng(1).normal(0.0, 0.05, t.size)
+    criterion = {"name": "bridge MSI", "point": "bridge", "quantity": "msi_pct", "unit": "%", "limit": 1.6,
+                 "caution": 0.8, "window_s": None, "value": float(v.max()), "value_at_s": float(t[v.argmax()]),
+                 "time_exceeded_s": float((v > 1.6).sum()), "first_exceeded_s": float(t[v > 1.6][0]),
+                 "level": "exceeded", "series": {"time_s": t.tolist(), "value": v.tolist()}}
+    page = render_report({"title": "heavy weather transit", "verdict": "exceeded", "criteria": [criterion],
+                          "conditions": {"duration_s": 10800.0}})
+    assert "3:00:00" in page, "past an hour, times read h:min:s"
+    assert len(page) < 200_000
+
+
+def test_write_refuses_a_folder(tmp_path):
+    (tmp_path / "r.html").mkdir()
+    with pytest.raises(MarinesimError):
+        write_report({"title": "x"}, tmp_path / "r.html")
+
+
+def test_chromium_decodes_every_plot_and_draws_the_page(report, tmp_path):
+    data, path = report
+    dom = dump_dom(path)
+    loaded = re.search(r'data-plots-loaded="(\d+)"', dom)
+    assert loaded and int(loaded.group(1)) == len(data["criteria"]) + 1, "the browser must decode every plot"
+    png = screenshot(path, tmp_path / "report.png", (1200, 3000))
+    image = np.asarray(Image.open(png).convert("RGB")).astype(int)
+    assert image.shape[:2] == (3000, 1200)
+    ink = (image.sum(axis=2) < 600).mean()
+    assert ink > 0.03, f"the page looks blank ({ink:.1%} ink)"
+    red = (np.abs(image - RED) < 20).all(axis=2)
+    assert red[:250].sum() > 300, "the red 'exceeded' verdict badge must be drawn in the header"
+
+
+def test_the_debrief_of_a_real_session_log(tmp_path):
+    """End to end: a live session with an alarm, an acknowledgement and instructor actions, its log written,
+    then ``marinesim report LOG``. What would be wrong: the report reading the log differently from the
+    session (a lost action, a wrong acknowledgement delay) or varying between runs."""
     scenario = load_scenario(write(tmp_path, SESSION.format(limit=0.15)))
     exercise, _ = _live_session(scenario, tmp_path, 6)
     log = write_log(tmp_path / "session.jsonl", exercise)
     assert main(["report", str(log), "--out", str(tmp_path / "report.html"), "--quiet"]) == 0
     page = (tmp_path / "report.html").read_text()
-    criteria = len(scenario.criteria)
-    assert page.count("<img class='plot'") == criteria + 1, "one plot per criterion, and the timeline"
-    delay = exercise.alarms[0].acknowledged_s - exercise.alarms[0].raised_s
-    assert f"<td>{delay:.1f} s</td>" in page, "the alarm table gives the acknowledgement delay"
+    assert page.count("<img class='plot'") == len(scenario.criteria) + 1, "one plot per criterion, and the timeline"
+    alarm = exercise.alarms[0]
+    assert f"<td class='num'>{alarm.acknowledged_s - alarm.raised_s:.1f} s</td>" in page, "acknowledgement delay"
     assert "stand by the helideck" in page and "event 1 triggered early" in page
-    assert "http://" not in page and "https://" not in page, "the report fetches nothing"
-
-    dom = dump_dom(tmp_path / "report.html")
-    loaded = re.search(r'data-plots-loaded="(\d+)"', dom)
-    assert loaded and int(loaded.group(1)) == criteria + 1, "the browser must decode every plot"
-    png = screenshot(tmp_path / "report.html", tmp_path / "report.png", (1200, 2400))
-    image = np.asarray(Image.open(png).convert("RGB")).astype(int)
-    ink = (image.sum(axis=2) < 600).mean()
-    assert ink > 0.03, f"the page looks blank ({ink:.1%} ink)"
-    red = ((abs(image[..., 0] - 0xd0) < 25) & (abs(image[..., 1] - 0x31) < 25) & (abs(image[..., 2] - 0x2d) < 25))
-    assert red.sum() > 200, "the exceeded verdict's red badge and limit lines must be drawn"
-
     assert main(["report", str(log), "--out", str(tmp_path / "again.html"), "--quiet"]) == 0
     assert (tmp_path / "again.html").read_bytes() == (tmp_path / "report.html").read_bytes()

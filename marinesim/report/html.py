@@ -1,213 +1,443 @@
 """The after-action report as one self-contained HTML file: plots embedded as PNG, CSS inline, nothing fetched.
 
-Laid out for a debrief (IMO model course 6.10: briefing, exercise, debriefing; STCW A-I/12: against
-the objectives) from the dictionary :func:`marinesim.report.debrief.debrief` makes. The same data
-give the same bytes (no dates; PNG metadata left out).
+Laid out for a debrief (IMO model course 6.10: briefing, exercise, debriefing; STCW A-I/12: against the
+objectives), from the plain dictionary :func:`marinesim.report.debrief.debrief` makes: the title and
+the overall verdict, the briefing with a verdict per objective, each criterion over the run, exceedance
+statistics, the timeline and the alarms with their acknowledgement delays, motion sickness, the log of
+events, messages and actions, and the conditions. A part the data leave out (or give empty) is left out
+of the page. Every text from the data is HTML-escaped. The same data give the same bytes: no dates, and
+the PNGs carry no metadata (:mod:`marinesim.report.plots`). The one script counts the plots the browser
+decoded into ``body[data-plots-loaded]``, for a test to read the rendered page.
 """
 
 from __future__ import annotations
 
 import base64
 import html
-import io
+import re
 from pathlib import Path
 
-import numpy as np
-
 from marinesim.atomic import atomic_path
+from marinesim.report.plots import CAUTION, EXCEEDED, NONE, OK, clock, criterion_png, number, timeline_png, with_unit
 
-COLORS = {"ok": "#2e9e44", "within limits": "#2e9e44", "met": "#2e9e44", "caution": "#e0a100",
-          "met with caution": "#e0a100", "exceeded": "#d0312d", "not met": "#d0312d", "settling": "#8a8f98",
-          "no value": "#8a8f98"}
-"""Badge colours as on a bridge alarm panel: green, amber, red, grey."""
-CSS = """
-body{font-family:'DejaVu Sans',Arial,sans-serif;margin:24px auto;max-width:1100px;color:#1b1f24;line-height:1.4}
-h1{margin-bottom:4px} h2{border-bottom:2px solid #d6dbe1;padding-bottom:3px;margin-top:28px}
-.badge{display:inline-block;padding:2px 10px;border-radius:10px;color:#fff;font-weight:bold;font-size:0.9em}
-table{border-collapse:collapse;margin:8px 0;font-size:0.92em} td,th{border:1px solid #d6dbe1;padding:3px 8px;text-align:left}
-th{background:#eef1f4} td.num{text-align:right;font-variant-numeric:tabular-nums}
-img.plot{display:block;max-width:100%;margin:8px 0} .muted{color:#667} p.brief{white-space:pre-wrap}
-@media print{body{margin:0;max-width:none} h2{page-break-after:avoid} img.plot{page-break-inside:avoid}}
+LEVELS = {"within limits": "ok", "met": "ok", "ok": "ok", "caution": "caution", "met with caution": "caution",
+          "exceeded": "exceeded", "not met": "exceeded", "settling": "none", "no value": "none"}
+"""A verdict, objective verdict or criterion level -> its badge's colour class."""
+SHOWN = {"settling": "no value yet", "ok": "within limits"}
+"""A criterion's level in the words a badge shows."""
+CSS = f"""
+:root{{--ok:{OK};--caution:{CAUTION};--exceeded:{EXCEEDED};--none:{NONE};--ink:#1b1f24;--muted:#5b6470;
+--rule:#d6dbe1;--head:#eef1f4;--band:#f6f7f9}}
+*{{box-sizing:border-box}}
+html{{-webkit-print-color-adjust:exact;print-color-adjust:exact}}
+body{{margin:0;background:#fff;color:var(--ink);font:15px/1.5 "DejaVu Sans","Segoe UI",Roboto,"Helvetica Neue",Arial,
+sans-serif}}
+main{{max-width:1040px;margin:0 auto;padding:28px 20px 40px}}
+header.top{{border-bottom:3px solid var(--ink);padding-bottom:14px;margin-bottom:8px}}
+.kicker{{text-transform:uppercase;letter-spacing:.12em;font-size:12px;color:var(--muted);font-weight:bold}}
+.titlerow{{display:flex;align-items:center;gap:18px;flex-wrap:wrap;margin:4px 0 2px}}
+h1{{font-size:30px;line-height:1.2;margin:0}} h1::first-letter{{text-transform:uppercase}}
+.source{{margin:2px 0 0;color:var(--muted);font-size:13px;word-break:break-all}}
+h2{{font-size:20px;margin:34px 0 8px;padding-bottom:4px;border-bottom:2px solid var(--rule)}}
+h3{{font-size:16px;margin:22px 0 6px}}
+p{{margin:6px 0 10px;max-width:78ch}}
+.intro{{color:var(--muted);font-size:13.5px;max-width:none}}
+.badge{{display:inline-block;padding:2px 10px;border-radius:4px;font-weight:bold;font-size:12.5px;line-height:1.5;
+text-transform:uppercase;letter-spacing:.04em;white-space:nowrap;color:#fff;background:var(--none)}}
+.badge.ok{{background:var(--ok)}} .badge.caution{{background:var(--caution);color:#1b1f24}}
+.badge.exceeded{{background:var(--exceeded)}}
+.badge.verdict{{font-size:17px;padding:5px 16px;border-radius:6px}}
+.facts{{display:grid;grid-template-columns:repeat(auto-fit,minmax(190px,1fr));gap:10px;margin:14px 0 0}}
+.facts div{{background:var(--band);border-left:4px solid var(--rule);padding:7px 12px}}
+.facts div.ok{{border-left-color:var(--ok)}} .facts div.caution{{border-left-color:var(--caution)}}
+.facts div.exceeded{{border-left-color:var(--exceeded)}}
+.facts dt{{font-size:12px;text-transform:uppercase;letter-spacing:.06em;color:var(--muted)}}
+.facts dd{{margin:0;font-size:19px;font-weight:bold}} .facts dd small{{font-size:12.5px;font-weight:normal;
+color:var(--muted);display:block}}
+table{{border-collapse:collapse;margin:8px 0 14px;font-size:13.5px;width:100%}}
+table.narrow{{width:auto;min-width:50%}} .intro .k{{white-space:nowrap}}
+th,td{{border-bottom:1px solid var(--rule);padding:5px 8px;text-align:left;vertical-align:top}}
+th{{background:var(--head);font-weight:bold;border-bottom:2px solid #c3cad3;vertical-align:bottom}}
+.wide{{overflow-x:auto}}
+td.num,th.num{{text-align:right;font-variant-numeric:tabular-nums;white-space:nowrap}}
+td.tag{{white-space:nowrap;font-weight:bold}} tr.missed td{{color:var(--muted);font-style:italic}}
+.warn{{color:#9b1f1a;font-weight:bold}} .muted{{color:var(--muted)}} td .warn,td .muted{{white-space:normal}}
+code,.hash{{font-family:"DejaVu Sans Mono",Menlo,Consolas,monospace;font-size:12px}} .hash{{color:var(--muted);
+word-break:break-all}}
+figure{{margin:14px 0 18px;break-inside:avoid;page-break-inside:avoid}}
+img.plot{{display:block;width:100%;max-width:1000px;height:auto;outline:1px solid var(--rule)}}
+figcaption{{font-size:13.5px;margin-top:5px;display:flex;gap:10px;align-items:baseline;flex-wrap:wrap}}
+.key{{display:inline-block;width:22px;height:0;vertical-align:middle;margin:0 4px 0 10px}}
+.key.limit{{border-top:3px solid var(--exceeded)}} .key.caution{{border-top:3px dashed var(--caution)}}
+.key.value{{border-top:3px solid #1f4e8c}} .key.span{{height:12px;background:rgba(208,49,45,.16)}}
+.key.event{{border-top:2px dotted #3d4651}}
+footer{{margin-top:36px;padding-top:8px;border-top:1px solid var(--rule);color:var(--muted);font-size:12px}}
+@page{{size:A4;margin:14mm 12mm}}
+@media print{{body{{font-size:10pt}} main{{max-width:none;padding:0}} h1{{font-size:20pt}} h2{{font-size:14pt;
+break-after:avoid;page-break-after:avoid}} h3{{font-size:11pt;break-after:avoid}} tr{{break-inside:avoid}}
+table{{font-size:8.5pt}} th,td{{padding:3px 5px}} .badge{{font-size:7.5pt;padding:1px 6px}}
+.badge.verdict{{font-size:12pt;padding:3px 12px}} .facts{{grid-template-columns:repeat(4,1fr)}}
+.facts dd{{font-size:13pt}}
+.wide{{overflow:visible}} img.plot{{outline:none}} .intro,figcaption{{font-size:9pt}}}}
 """
-SCRIPT = ("window.addEventListener('load',function(){var n=0;document.querySelectorAll('img.plot').forEach("
-          "function(i){if(i.complete&&i.naturalWidth>0)n++;});document.body.dataset.plotsLoaded=n;});")
+SCRIPT = ("addEventListener('load',function(){var n=0;document.querySelectorAll('img.plot').forEach("
+          "function(i){if(i.complete&&i.naturalWidth>0)n++});document.body.dataset.plotsLoaded=n})")
 """Counts the plots the browser decoded (a test reads it from the rendered page)."""
 
 
 def write_report(data: dict, out: Path) -> Path:
-    """Write the report of ``data`` to ``out`` (atomically); returns ``out``."""
+    """Write the report of ``data`` to ``out`` (atomically: a complete file or none); returns ``out``."""
     out = Path(out)
     out.parent.mkdir(parents=True, exist_ok=True)
+    text = render_report(data)
     with atomic_path(out) as temp:
-        temp.write_text(render_report(data), encoding="utf-8")
+        temp.write_bytes(text.encode("utf-8"))
     return out
 
 
 def render_report(data: dict) -> str:
-    """The report of ``data`` as HTML text."""
-    e = html.escape
-    verdict = data.get("verdict", "no value")
-    parts = [f"<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'><title>Debrief: {e(data['title'])}</title>"
-             f"<style>{CSS}</style></head><body>",
-             f"<h1>Debrief: {e(data['title'])}</h1><p class='muted'>{e(data.get('source', ''))}</p>",
-             f"<p>Verdict: {_badge(verdict)}</p>"]
-    briefing = data.get("briefing")
-    if briefing:
-        parts.append("<h2>Briefing</h2>" + "".join(f"<p class='brief'>{e(p.strip())}</p>"
-                                                   for p in briefing["text"].split("\n\n") if p.strip()))
-        if briefing.get("objectives"):
-            rows = [(e(o["text"]), e(", ".join(o["criteria"])) or "-", _badge(o["verdict"])) for o in briefing["objectives"]]
-            parts.append("<h3>Objectives</h3>" + _table(("objective", "judged by", "verdict"), rows))
-    criteria = data.get("criteria", [])
-    if criteria:
-        parts.append("<h2>Criteria over the exercise</h2><p class='muted'>Running value at each evaluation; red: "
-                     "limit; amber dashed: caution; shaded: above the limit; grey lines: events (numbered); "
-                     "red ticks: alarms.</p>")
-        for criterion in criteria:
-            parts.append(_img(_criterion_plot(criterion, data), f"{criterion['name']} over time"))
-        parts.append("<h2>Exceedance statistics</h2>" + _statistics(data))
-    parts.append("<h2>Timeline</h2>" + _img(_timeline_plot(data), "timeline of events, messages and alarms"))
-    alarms = data.get("alarms", [])
-    if alarms:
-        rows = [(e(a["criterion"]), _num(a["raised_s"], "s"), f"{a['value']:.3g} / {a['limit']:.3g}",
-                 _num(a["acknowledged_s"], "s"),
-                 _num(None if a["acknowledged_s"] is None else a["acknowledged_s"] - a["raised_s"], "s", ".1f"),
-                 _num(a["cleared_s"], "s")) for a in alarms]
-        parts.append("<h3>Alarms</h3>" + _table(("criterion", "raised", "value / limit", "acknowledged",
-                                                  "acknowledgement delay", "back within limit"), rows))
-    if data.get("sickness"):
-        rows = [(e(s["point"]), _num(s.get("msi_percent"), "%", ".1f"), _num(s.get("msdv_m_s1_5"), "m/s^1.5", ".1f"))
-                for s in data["sickness"]]
-        parts.append("<h2>Motion sickness</h2><p class='muted'>MSI: O'Hanlon &amp; McCauley, 2 h exposure; MSDV: "
-                     "ISO 2631-1 W_f over the exercise.</p>" + _table(("point", "MSI", "MSDV"), rows))
-    log = [(m["time_s"], f"{m['source']} message", m["text"]) for m in data.get("messages", [])]
-    log += [(ev["happened_s"], f"event {ev['index']} ({ev['trigger']})", ev["what"] or "")
-            for ev in data.get("events", []) if ev["happened_s"] is not None]
-    log += [(a["time_s"], "action", a["what"]) for a in data.get("actions", [])]
-    if log:
-        rows = [(_num(t, "s"), e(kind), e(text)) for t, kind, text in sorted(log, key=lambda r: r[0])]
-        parts.append("<h2>Log</h2>" + _table(("time", "what", ""), rows))
-    parts.append("<h2>Conditions</h2>" + _conditions(data.get("conditions", {})))
-    parts.append(f"<script>{SCRIPT}</script></body></html>\n")
-    return "\n".join(parts)
+    """The report of ``data`` (see the module's docstring) as the text of one HTML page."""
+    page = _Page(data)
+    parts = [page.header_section(), page.briefing_section(), page.criteria_section(), page.statistics_section(),
+             page.alarms_section(), page.sickness_section(), page.log_section(), page.conditions_section()]
+    title = _e(data.get("title") or "exercise")
+    return ("<!DOCTYPE html>\n<html lang='en'>\n<head>\n<meta charset='utf-8'>\n"
+            "<meta name='viewport' content='width=device-width,initial-scale=1'>\n"
+            f"<title>Debrief: {title}</title>\n<style>{CSS}</style>\n</head>\n<body>\n<main>\n"
+            + "\n".join(part for part in parts if part)
+            + f"\n<footer>After-action report written by marinesim {_e(_get(data, 'conditions', 'marinesim') or '')}"
+            " from the data named above; the same run gives this same file.</footer>\n</main>\n"
+            f"<script>{SCRIPT}</script>\n</body>\n</html>\n")
 
 
-def _badge(level: str) -> str:
-    return f"<span class='badge' style='background:{COLORS.get(level, '#8a8f98')}'>{html.escape(level)}</span>"
+class _Page:
+    """The report's sections, each HTML text or '' when the data have nothing for it."""
+
+    def __init__(self, data: dict) -> None:
+        self.data = data
+        self.criteria = list(data.get("criteria") or [])
+        self.events = list(data.get("events") or [])
+        self.messages = list(data.get("messages") or [])
+        self.actions = list(data.get("actions") or [])
+        self.alarms = list(enumerate(data.get("alarms") or [], start=1))
+        self.conditions = data.get("conditions") or {}
+        self.units = {c.get("name"): c.get("unit") for c in self.criteria}
+        last = [t for c in self.criteria for t in ((c.get("series") or {}).get("time_s") or [])[-1:]]
+        self.duration = float(self.conditions.get("duration_s") or max(last, default=0.0))
+        self.long = self.duration >= 3600
+
+    def clock(self, t: float | None) -> str:
+        return "—" if t is None else clock(t, self.long)
+
+    def header_section(self) -> str:
+        verdict = self.data.get("verdict") or "no value"
+        source = self.data.get("source")
+        facts = [self._fact("Run", self.clock(self.duration) if self.duration else "—",
+                            " · ".join(x for x in (f"{self.duration:g} s" if self.duration else "",
+                                                   _seed(self.conditions.get("seed"))) if x))]
+        if self.criteria:
+            levels = [c.get("level") for c in self.criteria]
+            worst = next((lv for lv in ("exceeded", "caution", "ok") if lv in levels), "")
+            counts = ", ".join(f"{levels.count(lv)} {SHOWN.get(lv, lv)}" for lv in ("exceeded", "caution", "ok",
+                                                                                     "settling") if lv in levels)
+            facts.append(self._fact("Criteria", str(len(self.criteria)), counts, worst))
+        alarms = [a for _, a in self.alarms]
+        acked = [a["acknowledged_s"] - a["raised_s"] for a in alarms if a.get("acknowledged_s") is not None]
+        if "alarms" in self.data:
+            missed = len(alarms) - len(acked)
+            detail = ([f"{len(acked)} acknowledged" + (f", slowest {max(acked):.1f} s" if acked else "")]
+                      + ([f"{missed} not acknowledged"] if missed else []) if alarms else ["none raised"])
+            facts.append(self._fact("Alarms", str(len(alarms)), detail, "exceeded" if alarms else "ok"))
+        objectives = (self.data.get("briefing") or {}).get("objectives") or []
+        if objectives:
+            met = sum(o.get("verdict") in ("met", "met with caution") for o in objectives)
+            worst = next((LEVELS[v] for v in ("not met", "met with caution") if any(o.get("verdict") == v
+                                                                                      for o in objectives)), "ok")
+            facts.append(self._fact("Objectives", f"{met} of {len(objectives)} met",
+                                    _count([o.get("verdict") for o in objectives], "not met", "met with caution"),
+                                    worst))
+        return ("<header class='top'>\n<div class='kicker'>After-action report · debrief</div>\n"
+                f"<div class='titlerow'><h1>{_e(self.data.get('title') or 'exercise')}</h1>"
+                f"{_badge(verdict, extra='verdict')}</div>\n"
+                + (f"<p class='source'>{_e(source)}</p>\n" if source else "")
+                + f"<dl class='facts'>{''.join(facts)}</dl>\n</header>")
+
+    @staticmethod
+    def _fact(name: str, value: str, detail: str | list[str] = "", level: str = "") -> str:
+        lines = [detail] if isinstance(detail, str) else detail
+        small = "".join(f"<small>{_e(line)}</small>" for line in lines if line)
+        return f"<div class='{level}'><dt>{name}</dt><dd>{_e(value)}{small}</dd></div>"
+
+    def briefing_section(self) -> str:
+        briefing = self.data.get("briefing")
+        if not briefing:
+            return ""
+        paragraphs = [p.strip() for p in (briefing.get("text") or "").split("\n\n") if p.strip()]
+        out = ["<section id='briefing'>\n<h2>Briefing</h2>"]
+        out += [f"<p>{_reflow(p)}</p>" for p in paragraphs]
+        objectives = briefing.get("objectives") or []
+        if objectives:
+            rows = [(_td(str(i), "num"), _td(_e(o.get("text", ""))),
+                     _td(_e(", ".join(o.get("criteria") or [])) or "<span class='muted'>—</span>"),
+                     _td(_badge(o.get("verdict") or "no value")))
+                    for i, o in enumerate(objectives, start=1)]
+            out.append("<h3>Objectives and how they went</h3>"
+                       + _table((("#", "num"), "objective", "judged by", "verdict"), rows))
+        return "\n".join(out) + "\n</section>"
+
+    def criteria_section(self) -> str:
+        if not self.criteria:
+            return ""
+        out = ["<section id='criteria'>\n<h2>The exercise, criterion by criterion</h2>",
+               "<p class='intro'>Each criterion's running value at every evaluation: "
+               "<span class='k'><span class='key value'></span>value</span> "
+               "<span class='k'><span class='key limit'></span>limit</span> "
+               "<span class='k'><span class='key caution'></span>caution</span> "
+               "<span class='k'><span class='key span'></span>above the limit</span> "
+               "<span class='k'><span class='key event'></span>event E<i>n</i></span> "
+               "<span class='k'>&nbsp;<b style='color:var(--exceeded)'>▼A<i>n</i></b> alarm raised</span>. "
+               "Grey at the start: the running window still filling, no value yet.</p>"]
+        for criterion in self.criteria:
+            mine = [(n, a) for n, a in self.alarms if a.get("criterion") == criterion.get("name")]
+            png = criterion_png(criterion, self.duration, self.events, mine)
+            point = f" ({criterion['point']})" if criterion.get("point") else ""
+            alt = f"{criterion.get('name')}{point} over the run"
+            unit = criterion.get("unit")
+            bits = []
+            if criterion.get("value") is not None:
+                worst = with_unit(criterion["value"], unit)
+                bits.append(f"worst {worst} at {self.clock(criterion.get('value_at_s'))}")
+            if criterion.get("limit") is not None:
+                bits.append(f"limit {with_unit(criterion['limit'], unit)}")
+            if criterion.get("time_exceeded_s"):
+                bits.append(f"{criterion['time_exceeded_s']:.0f} s above the limit")
+            if mine:
+                bits.append(f"{len(mine)} alarm{'s' if len(mine) > 1 else ''}")
+            caption = (f"{_level_badge(criterion.get('level'))} <b>{_e(criterion.get('name', ''))}</b>"
+                       f"<span>{_e(' · '.join(bits))}</span>")
+            out.append(f"<figure>{_img(png, alt)}<figcaption>{caption}</figcaption></figure>")
+        return "\n".join(out) + "\n</section>"
+
+    def statistics_section(self) -> str:
+        if not self.criteria:
+            return ""
+        rows = []
+        for c in self.criteria:
+            unit, limit = c.get("unit"), c.get("limit")
+            alarms = sum(1 for _, a in self.alarms if a.get("criterion") == c.get("name"))
+            above = c.get("time_exceeded_s")
+            share = "—" if above is None or not self.duration else f"{100 * above / self.duration:.1f} %"
+            point = f"<br><span class='muted'>{_e(c['point'])}</span>" if c.get("point") else ""
+            rows.append((_td(f"<b>{_e(c.get('name', ''))}</b>{point}"), _td(_level_badge(c.get("level"))),
+                         _td("—" if c.get("value") is None else _e(with_unit(c["value"], unit)), "num"),
+                         _td(self.clock(c.get("value_at_s")) if c.get("value") is not None else "—", "num"),
+                         _td("—" if limit is None else _e(with_unit(limit, unit)), "num"),
+                         _td("—" if above is None else f"{above:.0f} s", "num"), _td(share, "num"),
+                         _td(str(alarms), "num"), _td(self.clock(c.get("first_exceeded_s")), "num")))
+        return ("<section id='statistics'>\n<h2>Exceedance statistics</h2>\n"
+                f"<p class='intro'>Times are elapsed {'h:min:s' if self.long else 'min:s'} from the start of the "
+                "run; the share is of the whole run.</p>\n"
+                + _table(("criterion", "level", ("worst", "num"), ("at", "num"), ("limit", "num"),
+                          ("time above limit", "num"), ("share of run", "num"), ("alarms", "num"),
+                          ("first above", "num")), rows) + "\n</section>")
+
+    def alarms_section(self) -> str:
+        if not (self.alarms or self.events or self.messages or self.actions):
+            return ""
+        out = ["<section id='alarms'>\n<h2>Timeline and alarms</h2>",
+               "<p class='intro'>Events (E<i>n</i>), messages (filled: the instructor's, open: an event's), "
+               "instructor actions, and each alarm A<i>n</i>: dark red from raised to acknowledged (hatched: never "
+               "acknowledged), light red until the value was back within the limit.</p>",
+               "<figure>" + _img(timeline_png(self.duration, self.events, self.messages, self.actions, self.alarms),
+                                 "timeline of events, messages, actions and alarms") + "</figure>"]
+        if self.alarms:
+            rows = []
+            for n, a in self.alarms:
+                acked, cleared = a.get("acknowledged_s"), a.get("cleared_s")
+                value, limit = _value_limit(a.get("value"), a.get("limit"), self.units.get(a.get("criterion")))
+                rows.append((_td(f"A{n}", "tag"), _td(_e(a.get("criterion", ""))),
+                             _td(self.clock(a.get("raised_s")), "num"), _td(_e(f"{value} / {limit}"), "num"),
+                             _td("<span class='warn'>not acknowledged</span>" if acked is None else self.clock(acked),
+                                 "num"),
+                             _td("—" if acked is None else f"{acked - a['raised_s']:.1f} s", "num"),
+                             _td("<span class='muted'>not by the end</span>" if cleared is None
+                                 else self.clock(cleared), "num")))
+            out.append("<h3>Alarms</h3>" + _table(("#", "criterion", ("raised", "num"), ("value / limit", "num"),
+                                                   ("acknowledged", "num"), ("acknowledgement delay", "num"),
+                                                   ("back within limit", "num")), rows))
+        elif "alarms" in self.data:
+            out.append("<p>No alarm was raised.</p>")
+        return "\n".join(out) + "\n</section>"
+
+    def sickness_section(self) -> str:
+        sickness = self.data.get("sickness") or []
+        if not sickness:
+            return ""
+        rows = [(_td(_e(s.get("point", ""))),
+                 _td("—" if s.get("msi_percent") is None else f"{s['msi_percent']:.1f} %", "num"),
+                 _td("—" if s.get("msdv_m_s1_5") is None else f"{s['msdv_m_s1_5']:.1f}", "num")) for s in sickness]
+        return ("<section id='sickness'>\n<h2>Motion sickness</h2>\n<p class='intro'>MSI: the share of people "
+                "expected to vomit in a 2 h exposure (O'Hanlon &amp; McCauley); MSDV: the ISO 2631-1 motion sickness "
+                "dose value of the vertical acceleration, W<sub>f</sub>-weighted, over the exercise.</p>\n"
+                + _table(("point", ("MSI", "num"), ("MSDV (m/s¹·⁵)", "num")), rows, css="narrow") + "\n</section>")
+
+    def log_section(self) -> str:
+        entries = []  # (time, order, tag, kind, text, class)
+        for event in self.events:
+            what = event.get("what") or ""
+            trigger = f" ({event['trigger']})" if event.get("trigger") else ""
+            if event.get("happened_s") is not None:
+                entries.append((event["happened_s"], 0, f"E{event['index']}", "event" + trigger, what, ""))
+            else:
+                entries.append((None, 0, f"E{event['index']}", "event" + trigger, f"{what} — did not happen",
+                                "missed"))
+        for n, alarm in self.alarms:
+            unit = self.units.get(alarm.get("criterion"))
+            value, limit = _value_limit(alarm.get("value"), alarm.get("limit"), unit)
+            entries.append((alarm["raised_s"], 1, f"A{n}", "alarm raised",
+                            f"{alarm.get('criterion', '')}: {value}, limit {limit}", ""))
+        said = {(e.get("happened_s"), e.get("message")) for e in self.events}
+        for message in self.messages:
+            if message.get("source") == "event" and (message["time_s"], message.get("text")) in said:
+                continue  # the event's own row says it
+            entries.append((message["time_s"], 2, "", f"message ({message.get('source') or 'event'})",
+                            message.get("text") or "", ""))
+        for action in self.actions:
+            entries.append((action["time_s"], 3, "", "action", action.get("what") or "", ""))
+        if not entries:
+            return ""
+        entries.sort(key=lambda r: (r[0] is None, r[0] or 0.0, r[1]))
+        rows = [(_td(self.clock(t), "num"), _td(_e(tag), "tag"), _td(_e(kind)), _td(_e(text)), css)
+                for t, _, tag, kind, text, css in entries]
+        return ("<section id='log'>\n<h2>Log</h2>\n"
+                + _table((("time", "num"), "", "what", "detail"), rows) + "\n</section>")
+
+    def conditions_section(self) -> str:
+        c = self.conditions
+        if not c:
+            return ""
+        rows = []
+        if c.get("scenario"):
+            rows.append(("scenario", _file(c["scenario"], c.get("scenario_sha256"))))
+        if c.get("log"):
+            rows.append(("session log", _file(c["log"], c.get("log_sha256"))))
+        if c.get("seed") is not None:
+            rows.append(("random seed", _e(str(c["seed"]))))
+        if c.get("duration_s") is not None:
+            step = f", time step {c['dt_s']:g} s" if c.get("dt_s") is not None else ""
+            rows.append(("run", f"{c['duration_s']:g} s ({self.clock(c['duration_s'])}){step}"))
+        if c.get("marinesim"):
+            rows.append(("marinesim", _e(str(c["marinesim"]))))
+        vessel = c.get("vessel") or {}
+        if vessel.get("rao"):
+            rows.append(("vessel (RAO)", _file(vessel["rao"], vessel.get("rao_sha256"))))
+        if vessel.get("speed_kn") is not None or vessel.get("heading_deg") is not None:
+            rows.append(("speed, heading",
+                         f"{_plain(vessel.get('speed_kn'))} kn, {_plain(vessel.get('heading_deg'))}°"))
+        out = ["<section id='conditions'>\n<h2>Conditions</h2>",
+               _table(("", ""), [(_td(f"<b>{name}</b>"), _td(value)) for name, value in rows], head=False)]
+        points = vessel.get("points_m") or {}
+        if points:
+            prows = [(_td(_e(name)), *(_td(_plain(x), "num") for x in (list(p) + [None] * 3)[:3]))
+                     for name, p in points.items()]
+            out.append("<h3>Points on the vessel</h3>"
+                       + _table(("point", ("x (m)", "num"), ("y (m)", "num"), ("z (m)", "num")), prows, css="narrow"))
+        seas = c.get("sea") or []
+        if seas:
+            srows = [(_td(str(i), "num"), _td(_unit(s.get("hs_m"), " m", ".2f"), "num"),
+                      _td(_unit(s.get("tp_s"), " s", ".1f"), "num"), _td(_unit(s.get("from_deg"), "°", ".0f"), "num"),
+                      _td(_unit(s.get("gamma"), "", "g"), "num"), _td(_unit(s.get("spreading_s"), "", "g"), "num"))
+                     for i, s in enumerate(seas, start=1)]
+            out.append("<h3>Sea at the start</h3>" + _table((("system", "num"), ("Hs", "num"), ("Tp", "num"),
+                                                               ("from", "num"), ("JONSWAP γ", "num"),
+                                                               ("spreading s", "num")), srows, css="narrow"))
+        return "\n".join(out) + "\n</section>"
 
 
-def _num(value: float | None, unit: str = "", fmt: str = ".0f") -> str:
-    return "-" if value is None else f"{value:{fmt}} {unit}".strip()
+def _e(text: object) -> str:
+    return html.escape(str(text))
 
 
-def _table(header: tuple[str, ...], rows: list[tuple[str, ...]]) -> str:
-    head = "".join(f"<th>{h}</th>" for h in header)
-    body = "".join("<tr>" + "".join(f"<td>{cell}</td>" for cell in row) + "</tr>" for row in rows)
-    return f"<table><tr>{head}</tr>{body}</table>"
-
-
-def _statistics(data: dict) -> str:
-    duration = max(data.get("conditions", {}).get("duration_s") or 0.0, 1e-9)
-    rows = []
-    for c in data["criteria"]:
-        alarms = sum(1 for a in data.get("alarms", []) if a["criterion"] == c["name"])
-        worst = "settling" if c["value"] is None else f"{c['value']:.3g} {c['unit']} at {c['value_at_s']:.0f} s"
-        rows.append((html.escape(c["name"]), worst, f"{c['limit']:.3g} {c['unit']}", _num(c["time_exceeded_s"], "s"),
-                     f"{100 * c['time_exceeded_s'] / duration:.1f} %", str(alarms), _num(c["first_exceeded_s"], "s"),
-                     _badge(c["level"])))
-    return _table(("criterion", "worst", "limit", "time above limit", "share of the run", "alarms",
-                   "first above", "level"), rows)
-
-
-def _conditions(c: dict) -> str:
-    e = html.escape
-    rows = [("scenario", f"{e(str(c.get('scenario')))}<br><span class='muted'>sha256 {e(str(c.get('scenario_sha256')))}</span>"),
-            ("seed", e(str(c.get("seed")))),
-            ("run", f"{c.get('duration_s', 0):.1f} s at dt {c.get('dt_s')} s"),
-            ("marinesim", e(str(c.get("marinesim"))))]
-    if c.get("log"):
-        rows.append(("session log", f"{e(c['log'])}<br><span class='muted'>sha256 {e(str(c.get('log_sha256')))}</span>"))
-    vessel = c.get("vessel")
-    if vessel:
-        rows.append(("vessel", f"{e(vessel['rao'])}<br><span class='muted'>sha256 {e(vessel['rao_sha256'])}</span>"))
-        rows.append(("course", f"{vessel['speed_kn']:.3g} kn, heading {vessel['heading_deg']:g} deg"))
-        rows.append(("points", e("; ".join(f"{k} {v}" for k, v in vessel["points_m"].items()))))
-    out = _table(("", ""), rows)
-    seas = c.get("sea", [])
-    if seas:
-        out += "<h3>Sea at the start</h3>" + _table(
-            ("Hs", "Tp", "from", "gamma", "spreading s"),
-            [(f"{s['hs_m']:.2f} m", f"{s['tp_s']:.1f} s", f"{s['from_deg']:.0f} deg",
-              "-" if s.get("gamma") is None else f"{s['gamma']:g}",
-              "-" if s.get("spreading_s") is None else f"{s['spreading_s']:g}") for s in seas])
+def _reflow(paragraph: str) -> str:
+    """A paragraph of the briefing, escaped: its lines joined (a TOML string is wrapped by hand), but a line that
+    starts a list item ('- ', '* ', '1. ') kept on a line of its own."""
+    lines = [line.strip() for line in paragraph.splitlines() if line.strip()]
+    out = _e(lines[0]) if lines else ""
+    for line in lines[1:]:
+        item = re.match(r"([-*•]|\d+[.)])\s", line)
+        out += ("<br>" if item else " ") + _e(line)
     return out
 
 
+def _value_limit(value: float | None, limit: float | None, unit: str | None) -> tuple[str, str]:
+    """An alarm's value and limit, with as many figures as it takes to tell them apart (3.001 over 3)."""
+    if value is None or limit is None:
+        shown = ["—" if x is None else with_unit(x, unit) for x in (value, limit)]
+        return shown[0], shown[1]
+    digits = next((d for d in range(3, 7) if number(value, d) != number(limit, d)), 6)
+    return with_unit(value, unit, digits), with_unit(limit, unit)
+
+
+def _get(data: dict, *keys: str):
+    for key in keys:
+        data = (data or {}).get(key)
+    return data
+
+
+def _seed(seed: object) -> str:
+    return "" if seed is None else f"seed {seed}"
+
+
+def _count(values: list, *names: str) -> str:
+    return ", ".join(f"{values.count(n)} {n}" for n in names if n in values)
+
+
+def _plain(value: float | None) -> str:
+    return "—" if value is None else number(value)
+
+
+def _unit(value: float | None, unit: str, fmt: str) -> str:
+    return "—" if value is None else f"{value:{fmt}}{unit}"
+
+
+def _badge(verdict: str, extra: str = "") -> str:
+    """``verdict`` (an overall or an objective's verdict) on its colour: green, amber, red, grey."""
+    kind = LEVELS.get(verdict, "none")
+    return f"<span class='badge {kind}{' ' + extra if extra else ''}'>{_e(verdict)}</span>"
+
+
+def _level_badge(level: str | None) -> str:
+    """A criterion's level on its colour, in words (ok: within limits, settling: no value yet)."""
+    kind = LEVELS.get(level or "settling", "none")
+    return f"<span class='badge {kind}'>{_e(SHOWN.get(level or 'settling', level))}</span>"
+
+
+def _td(inner: str, css: str = "") -> tuple[str, str]:
+    return inner, css
+
+
+def _table(header: tuple, rows: list[tuple], head: bool = True, css: str = "") -> str:
+    """A table; a header cell is a name or (name, class), a row's cells are (html, class) pairs, and a row may end
+    with its own class."""
+    out = [f"<table class='{css}'>" if css else "<table>"]
+    if head:
+        cells = [(h, "") if isinstance(h, str) else h for h in header]
+        out.append("<tr>" + "".join(f"<th class='{c}'>{n}</th>" if c else f"<th>{n}</th>" for n, c in cells)
+                   + "</tr>")
+    for row in rows:
+        row_css = row[-1] if isinstance(row[-1], str) else ""
+        cells = row[:-1] if isinstance(row[-1], str) else row
+        out.append((f"<tr class='{row_css}'>" if row_css else "<tr>")
+                   + "".join(f"<td class='{c}'>{inner}</td>" if c else f"<td>{inner}</td>" for inner, c in cells)
+                   + "</tr>")
+    out.append("</table>")
+    return "<div class='wide'>" + "\n".join(out) + "</div>"
+
+
+def _file(path: str, digest: str | None) -> str:
+    return f"<code>{_e(path)}</code>" + (f"<br><span class='hash'>sha256 {_e(digest)}</span>" if digest else "")
+
+
 def _img(png: bytes, alt: str) -> str:
-    return f"<img class='plot' alt='{html.escape(alt)}' src='data:image/png;base64,{base64.b64encode(png).decode()}'>"
-
-
-def _figure(height: float):
-    from matplotlib.figure import Figure
-
-    return Figure(figsize=(10.5, height), dpi=100, layout="constrained")
-
-
-def _png(figure) -> bytes:
-    buffer = io.BytesIO()
-    figure.savefig(buffer, format="png", metadata={"Software": None})
-    return buffer.getvalue()
-
-
-def _criterion_plot(c: dict, data: dict) -> bytes:
-    figure = _figure(2.6)
-    ax = figure.add_subplot()
-    t = np.asarray(c["series"]["time_s"], float)
-    v = np.array([np.nan if x is None else x for x in c["series"]["value"]], float)
-    ax.plot(t, v, color="#1f5fa8", lw=1.4, label="running value")
-    ax.axhline(c["limit"], color="#d0312d", lw=1.5, label=f"limit {c['limit']:.3g}")
-    ax.axhline(c["caution"] * c["limit"], color="#e0a100", lw=1.2, ls="--", label="caution")
-    ax.fill_between(t, c["limit"], np.where(v > c["limit"], v, c["limit"]), color="#d0312d", alpha=0.25, lw=0)
-    for event in data.get("events", []):
-        if event["happened_s"] is not None:
-            ax.axvline(event["happened_s"], color="#777", lw=0.8)
-            ax.annotate(str(event["index"]), (event["happened_s"], 1.0), xycoords=("data", "axes fraction"),
-                        fontsize=8, color="#555", ha="left", va="top")
-    for alarm in data.get("alarms", []):
-        if alarm["criterion"] == c["name"]:
-            ax.plot([alarm["raised_s"]], [alarm["value"]], marker="v", color="#d0312d", ms=8)
-    top = np.nanmax(np.append(v, c["limit"])) if np.isfinite(v).any() else c["limit"]
-    ax.set_ylim(0.0, 1.15 * top)
-    ax.set_xlim(0.0, max(data.get("conditions", {}).get("duration_s") or 0.0, t.max() if t.size else 1.0, 1.0))
-    where = f" ({c['point']})" if c.get("point") else ""
-    window = "whole run" if c.get("window_s") is None else f"{c['window_s']:g} s window"
-    ax.set_title(f"{c['name']}{where}: {c['quantity']}, {window}", fontsize=10, loc="left")
-    ax.set_xlabel("time (s)")
-    ax.set_ylabel(c["unit"] or "-")
-    ax.grid(alpha=0.3)
-    ax.legend(loc="upper left", fontsize=8, ncols=3, framealpha=0.8)
-    return _png(figure)
-
-
-def _timeline_plot(data: dict) -> bytes:
-    figure = _figure(1.9)
-    ax = figure.add_subplot()
-    rows = {"events": 3, "messages": 2, "alarms": 1}
-    for event in data.get("events", []):
-        if event["happened_s"] is not None:
-            ax.plot([event["happened_s"]], [rows["events"]], "D", color="#555")
-            ax.annotate(str(event["index"]), (event["happened_s"], rows["events"] + 0.25), fontsize=8, ha="center")
-    for message in data.get("messages", []):
-        ax.plot([message["time_s"]], [rows["messages"]], "o", color="#e0a100")
-    for alarm in data.get("alarms", []):
-        end = alarm["acknowledged_s"] if alarm["acknowledged_s"] is not None else alarm["cleared_s"]
-        if end is not None and end > alarm["raised_s"]:
-            ax.barh(rows["alarms"], end - alarm["raised_s"], left=alarm["raised_s"], height=0.4,
-                    color="#d0312d", alpha=0.5)
-        ax.plot([alarm["raised_s"]], [rows["alarms"]], "v", color="#d0312d")
-    ax.set_yticks(list(rows.values()), ["events", "messages", "alarms (bar: to acknowledgement)"], fontsize=8)
-    ax.set_ylim(0.4, 3.7)
-    ax.set_xlim(0.0, max(data.get("conditions", {}).get("duration_s") or 0.0, 1.0))
-    ax.set_xlabel("time (s)")
-    ax.grid(axis="x", alpha=0.3)
-    return _png(figure)
+    return (f"<img class='plot' alt='{_e(alt)}' width='1000' "
+            f"src='data:image/png;base64,{base64.b64encode(png).decode('ascii')}'>")
