@@ -7,9 +7,10 @@ from __future__ import annotations
 import html
 import json
 
+import numpy as np
 import pytest
 
-from conftest import ROOT
+from conftest import ROOT, offscreen
 from marinesim.cli import main
 from marinesim.scenario import load_scenario
 from marinesim.session.exercise import Exercise
@@ -36,6 +37,29 @@ def test_an_exercise_runs_through_assess_and_report(path, tmp_path, capsys):
     assert main(["report", str(path), "--out", str(tmp_path / "r.html"), "--duration", "240", "--quiet"]) == 0
     page = (tmp_path / "r.html").read_text()
     assert html.escape(scenario.briefing.objectives[0][0]) in page and "<img class='plot'" in page
+
+
+@pytest.mark.parametrize("path", TRAINING, ids=[p.stem for p in TRAINING])
+def test_the_exercise_shows_its_vessel(path):
+    """The first frame with the vessel drawn against the same frame without it: the vessel must cover a
+    visible part of the picture near its middle (the orbit camera looks at it), and where the exercise names a
+    painted visual mesh its pixels carry the paint, not the plain grey of the hydrodynamic hull. What would be
+    wrong: a mesh in the wrong frame (under the sea, off screen) or the visual mesh not loaded."""
+    scenario = load_scenario(path)
+    with offscreen(scenario) as view:
+        view.go_to(0.0)
+        with_vessel = view.frame(hud=False).astype(int)
+        view.scene.renderer.vessel.shown = False
+        without = view.frame(hud=False).astype(int)
+    vessel = np.abs(with_vessel - without).sum(axis=2) > 30
+    height, width = vessel.shape
+    rows, cols = np.nonzero(vessel)
+    assert vessel.mean() > 0.005, f"the vessel covers {vessel.mean():.2%} of the frame"
+    assert abs(cols.mean() / width - 0.5) < 0.15 and abs(rows.mean() / height - 0.5) < 0.2, "the vessel is off centre"
+    if scenario.vessel.visual is not None:
+        pixels = with_vessel[vessel]
+        chroma = pixels.max(axis=1) - pixels.min(axis=1)
+        assert np.median(chroma) > 15, "the visual mesh's paint is missing (a grey hull reads about 3)"
 
 
 @pytest.mark.slow

@@ -145,12 +145,14 @@ class Scene:
         return out
 
     def criteria_panel(self) -> list[tuple[str, str]]:
-        """(text, level) rows of the criteria panel: name, latest value / limit and unit, level."""
+        """(text, level) rows of the criteria panel: name, latest value / limit and unit, level. A value
+        under 1e-4 of its limit reads 0 (a green-water probability of 1e-12 is none a crew would see)."""
         rows = []
         readings = self.exercise.readings()
         width = max((len(c.label) for c, _, _ in readings), default=0)
         for criterion, value, level in readings:
-            shown = "      --" if value is None else f"{value:8.3g}"
+            shown = ("      --" if value is None else f"{0:8d}" if abs(value) < 1e-4 * abs(criterion.limit)
+                     else f"{value:8.3g}")
             rows.append((f"{criterion.label:<{width}}  {shown} / {criterion.limit:<6.3g}"
                          f"{criterion.measure.unit:<8}{level}", level))
         return rows
