@@ -20,7 +20,7 @@ LAYERS = (
     {"__init__", "errors", "constants", "angles", "atomic", "cache", "tokens", "recent", "progress",
      "resources", "formats", "pose", "gl"},
     {"sea"}, {"hull"}, {"vessel"}, {"wake"}, {"solver"}, {"criteria"},
-    {"scenario"}, {"session"}, {"report"}, {"render"}, {"cli", "__main__"},
+    {"scenario"}, {"session"}, {"study"}, {"report"}, {"render"}, {"cli", "__main__"},
 )
 
 

@@ -1,0 +1,1 @@
+"""Engineering studies over many sea states: scatter diagrams, operability, their time-domain checks."""
