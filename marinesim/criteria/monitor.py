@@ -218,7 +218,7 @@ class Monitor:
         self._last_evaluation = self.time
         values = []
         for i, (criterion, tally) in enumerate(zip(self.criteria, self.tallies)):
-            value = self._doses[i].value() if i in self._doses else self._windowed(criterion)
+            value = self._doses[i].value() if i in self._doses else self.windowed(criterion)
             tally.value = value
             if value is not None:
                 if tally.worst is None or value > tally.worst:
@@ -230,7 +230,9 @@ class Monitor:
             values.append(value)
         return values
 
-    def _windowed(self, criterion: Criterion) -> float | None:
+    def windowed(self, criterion: Criterion) -> float | None:
+        """``criterion``'s value over its window ending at the last row appended (None: settling); the
+        tallies are not touched."""
         n = min(self.rows, self.window_rows(criterion))
         settle_s = min(SETTLE_FRACTION * criterion.window, self.duration_s)
         if n * self.dt < settle_s - 1e-9 * self.dt:
