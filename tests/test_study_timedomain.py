@@ -14,7 +14,7 @@ from marinesim.criteria.monitor import Criterion
 from marinesim.errors import MarinesimError, ParameterError
 from marinesim.sea.build import wave_system
 from marinesim.study.distributed import run_tasks
-from marinesim.study.timedomain import TimeDomainStudy, run_task
+from marinesim.study.timedomain import Task, TimeDomainStudy, run_task
 from marinesim.vessel import read_rao
 
 CRITERIA = (Criterion("heave_rms_m", 1.0), Criterion("pitch_rms_deg", 1.0), Criterion("roll_max_deg", 5.0),
@@ -27,16 +27,6 @@ def small_study(duration_s: float = 1200.0, seeds: tuple[int, ...] = (1, 2)) -> 
     return TimeDomainStudy(read_rao(ROOT / "rao" / "tanker" / "tanker.4"), {"bow": (120.0, 0.0, 10.0)}, 0.0,
                            CRITERIA, system, math.inf, np.array([2.0, 4.0]), np.array([9.0, 12.0]),
                            np.array([180.0, 120.0]), seeds, duration_s)
-
-
-class Task:
-    """``run_task`` of a study as a picklable callable (what a worker process receives)."""
-
-    def __init__(self, study: TimeDomainStudy) -> None:
-        self.study = study
-
-    def __call__(self, index: int) -> np.ndarray:
-        return run_task(self.study, index)
 
 
 def test_the_same_tasks_give_the_same_bits_serially_and_on_a_local_cluster(tmp_path):

@@ -109,3 +109,13 @@ def run_task(study: TimeDomainStudy, index: int) -> np.ndarray:
         elif value is not None:
             out[i] = value
     return out
+
+
+class Task:
+    """:func:`run_task` of ``study`` as a picklable callable of the task index (what a Dask worker receives)."""
+
+    def __init__(self, study: TimeDomainStudy) -> None:
+        self.study = study
+
+    def __call__(self, index: int) -> np.ndarray:
+        return run_task(self.study, index)
