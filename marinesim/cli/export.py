@@ -31,11 +31,14 @@ def handle(args: argparse.Namespace) -> int:
     from marinesim.progress import reporting
     from marinesim.scenario import load_scenario, with_run
     from marinesim.session.assembly import Assembly
-    from marinesim.session.export import export_motions
+    from marinesim.session.export import export_motions, outside_table_note
 
     scenario = with_run(load_scenario(args.scenario), args.duration, args.dt, args.seed)
     with reporting(bars(args.quiet)):
         result = export_motions(Assembly(scenario), args.out, args.format)
     print(f"wrote {result.rows} rows x {len(result.columns)} columns to {result.table} "
           f"(metadata: {result.sidecar})")
+    note = outside_table_note(result.outside_table)
+    if note is not None:
+        print(note)
     return 0

@@ -8,6 +8,10 @@ disk in blocks, so memory stays flat with duration; it and its sidecar are writt
 files renamed into place together at the end (:func:`~marinesim.session.sidecar.write_table`), so
 an interrupted export leaves the previous pair or the new one, never a partial file or a mix.
 Same scenario and seed: byte-identical files (the sidecar holds no clock time).
+
+The sidecar's ``outside_rao_table`` says, per leg of the run, what share of each DOF's response
+variance came from wave frequencies below the RAO table (the long-wave model) and above it (the
+taper): an RAO table that stops short of the sea's peak is not silently extrapolated.
 """
 
 from __future__ import annotations
@@ -36,6 +40,12 @@ CONVENTIONS = ("body frame x forward, y port, z up, origin at the RAO reference 
                "<point>_relative_m = point's vertical motion minus the incident wave elevation there; "
                "wave_elevation_m: incident wave at the reference point (docs/CONVENTIONS.md)")
 """What the columns mean, as the sidecar states it."""
+OUTSIDE_TABLE = ("share of each DOF's displacement variance (sum |H a|^2 / 2 over the wave components) from wave "
+                 "frequencies below the RAO table (the long-wave model) and above it (the RAO tapered to zero at "
+                 "1.5 times its highest frequency), per leg of the run from its start time")
+"""What the sidecar's ``outside_rao_table`` holds."""
+NOTE_SHARE = 0.01
+"""Where some DOF's share from outside the RAO table reaches this, the command line notes the shares."""
 
 
 @dataclass(frozen=True)
@@ -45,6 +55,8 @@ class Export:
     rows: int
     columns: list[str]
     exercise: Exercise
+    outside_table: dict
+    """The sidecar's ``outside_rao_table`` (:func:`outside_table`)."""
 
 
 def export_motions(assembly: Assembly, out: Path, file_format: str | None = None,
@@ -73,19 +85,24 @@ def export_motions(assembly: Assembly, out: Path, file_format: str | None = None
         with task(f"export {out.name}", steps) as bar:
             (_write_csv if file_format == "csv" else _write_parquet)(temp, blocks, bar)
 
+    coverage: dict = {}
+
     def describe() -> dict:
-        return {"format": file_format, **motions_sidecar(exercise, steps, duration)}
+        metadata = {"format": file_format, **motions_sidecar(exercise, steps, duration)}
+        coverage.update(metadata["outside_rao_table"])
+        return metadata
 
     try:
         sidecar = write_table(out, write, describe)
     finally:
         simulation.close()
-    return Export(out, sidecar, steps, columns, exercise)
+    return Export(out, sidecar, steps, columns, exercise, coverage)
 
 
 def motions_sidecar(exercise: Exercise, rows: int, duration_s: float) -> dict:
     """What a motion table's sidecar says after its format: its rows and columns, what they mean, the run
-    (:func:`run_sidecar`), the vessel's files and course, the events that happened and the live actions."""
+    (:func:`run_sidecar`), the vessel's files and course, the share of the response from outside the RAO table
+    (:func:`outside_table`), the events that happened and the live actions."""
     assembly = exercise.sim.assembly
     scenario = assembly.scenario
     vessel, rao, response = scenario.vessel, scenario.vessel.rao, assembly.response
@@ -106,9 +123,45 @@ def motions_sidecar(exercise: Exercise, rows: int, duration_s: float) -> dict:
             "heading_deg": vessel.heading_deg,
             "points_m": {name: list(p) for name, p in vessel.points.items()},
         },
+        "outside_rao_table": outside_table(exercise),
         "events": [{"index": h.index, "time_s": h.time_s, "what": h.event.describe()} for h in exercise.happened],
         "actions": [entry for entry in exercise.journal if entry["kind"] == "action"],
     }
+
+
+def outside_table(exercise: Exercise) -> dict:
+    """The RAO table's frequency range (rad/s) and, per leg of the run (``from_s``, s), the share of each
+    DOF's response variance from below and above it (:meth:`Response.variance_outside_table`, rounded to
+    1e-6), as :data:`OUTSIDE_TABLE` says."""
+    sim = exercise.sim
+    rao = sim.vessel.rao
+    legs = []
+    for i, leg in enumerate(sim.legs):
+        shares = sim.response(i).variance_outside_table()
+        legs.append({"from_s": leg.start, **{side: {dof: None if share is None else round(share, 6)
+                                                    for dof, share in by_dof.items()}
+                                             for side, by_dof in shares.items()}})
+    return {"what": OUTSIDE_TABLE, "omega_rad_s": [float(rao.omega[0]), float(rao.omega[-1])], "legs": legs}
+
+
+def outside_table_note(coverage: dict) -> str | None:
+    """One line for the console from :func:`outside_table`: per DOF the percentage of its variance from
+    below / above the RAO table (the largest over the legs), or None where each is under :data:`NOTE_SHARE`."""
+    legs = coverage["legs"]
+    largest = {side: {dof: max((leg[side][dof] for leg in legs if leg[side][dof] is not None), default=None)
+                      for dof in legs[0][side]} for side in ("below", "above")}
+    if all(share is None or share < NOTE_SHARE for by_dof in largest.values() for share in by_dof.values()):
+        return None
+
+    def percent(share: float | None) -> str:
+        return "-" if share is None else f"{100 * share:.1f}"
+
+    low, high = coverage["omega_rad_s"]
+    cells = ", ".join(f"{dof} {percent(largest['below'][dof])}/{percent(largest['above'][dof])}"
+                      for dof in largest["below"])
+    over = f"; the largest over {len(legs)} legs" if len(legs) > 1 else ""
+    return (f"note: response variance from wave frequencies outside the RAO table's {low:.4g}..{high:.4g} rad/s "
+            f"(below: long-wave model, above: tapered), % below/above{over}: {cells}")
 
 
 def table_format(path: Path, file_format: str | None) -> str:

@@ -12,8 +12,18 @@ stiffness and F the excitation (diffraction + Froude-Krylov), and converts once 
 ``exp(+i w t)``: ``H = conj(X)``. ``roll_damping`` adds a linear roll damping ``B_roll`` as a
 fraction of critical, ``2 sqrt(K44 (M44 + A44(w_n)))`` at the roll natural frequency: potential
 flow has no viscous roll damping, so radiation-only RAOs overpredict roll at resonance.
-The reference point is the dataset's ``rotation_center``. Needs ``xarray`` with a NetCDF engine
-(``pip install 'marinesim[capytaine]'``).
+
+The reference point is the dataset's ``rotation_center`` ``(xc, yc, zc)``, the point X rotates
+about. Capytaine's forces, hence X, are per unit wave at the mesh origin (0, 0), while the RAO is
+per unit wave at the reference point (CONVENTIONS, "Transfer functions"), whose incident wave is
+``exp(-i k (xc cos b + yc sin b))`` times the one at the origin (marinesim's convention), so
+
+    H = conj(X) exp(i k (xc cos b + yc sin b))
+
+with ``k`` from ``w^2 = g k tanh(k h)`` in the dataset's ``water_depth`` h, which the table keeps
+(:attr:`RaoTable.depth`). Capytaine 2.x datasets store no ``rotation_center``: the mesh origin
+is then assumed (reference point (0, 0, 0), no shift) and a note says so. Needs ``xarray`` with
+a NetCDF engine (``pip install 'marinesim[capytaine]'``).
 """
 
 from __future__ import annotations
@@ -29,6 +39,7 @@ import numpy as np
 
 from marinesim.errors import FileFormatError, MarinesimError, ParameterError
 from marinesim.formats import check_file
+from marinesim.sea.dispersion import k_from_omega
 from marinesim.vessel.rao import DOFS, RaoTable, make_table
 
 NEEDED = ("added_mass", "radiation_damping", "inertia_matrix", "hydrostatic_stiffness")
@@ -100,14 +111,27 @@ def _solve(path: Path, dataset, roll_damping: float) -> RaoTable:
         motion = np.linalg.solve(impedance[:, None], force[..., None])[..., 0]  # (omega, direction, dof)
     except np.linalg.LinAlgError:
         raise FileFormatError(path, None, "the equation of motion is singular at some frequency") from None
-    values = np.conj(motion).transpose(1, 0, 2)[None]
-    reference = (tuple(float(v) for v in dataset["rotation_center"].values)
-                 if "rotation_center" in dataset.coords else (0.0, 0.0, 0.0))
     rho = float(dataset["rho"]) if "rho" in dataset.coords else 1025.0
     g = float(dataset["g"]) if "g" in dataset.coords else 9.81
+    depth = float(dataset["water_depth"]) if "water_depth" in dataset.coords else math.inf
+    if not depth > 0.0:
+        raise FileFormatError(path, None, f"water_depth must be > 0 m (inf: deep water), got {depth:g}")
+    if "rotation_center" in dataset.coords:
+        reference = tuple(float(v) for v in dataset["rotation_center"].values)
+    else:
+        reference = (0.0, 0.0, 0.0)
+        notes.append("the dataset stores no rotation_center (Capytaine 2.x): the motions are taken as about "
+                     "the mesh origin (0, 0, 0), the reference point, and per unit wave there; if the body's "
+                     "DOFs rotate about another point, export the dataset with Capytaine 3")
+    if len(reference) != 3 or not all(math.isfinite(v) for v in reference):
+        raise FileFormatError(path, None, f"rotation_center must be three finite numbers, got {reference}")
+    wave_number = k_from_omega(omega, depth, g)                                            # (omega,)
+    along = reference[0] * np.cos(directions) + reference[1] * np.sin(directions)         # (direction,)
+    at_reference = np.exp(1j * wave_number[:, None] * along[None, :])                      # (omega, direction)
+    values = (np.conj(motion) * at_reference[..., None]).transpose(1, 0, 2)[None]
     try:
         return make_table(omega, directions, [0.0], values, reference_point=reference, rho=rho, g=g,
-                          source=str(path), source_format="capytaine", notes=tuple(notes))
+                          source=str(path), source_format="capytaine", notes=tuple(notes), depth=depth)
     except ParameterError as error:
         raise FileFormatError(path, None, str(error)) from None
 

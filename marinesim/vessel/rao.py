@@ -10,7 +10,8 @@ Interpolation is linear on Re/Im in frequency, heading (wrapping around the circ
 Outside the tabulated frequencies:
 
 * below the lowest, ``H = L(w) + (H(w0) - L(w0)) (w / w0)^2``: the free-floating long-wave
-  limit ``L`` (:func:`long_wave_limit`) plus the table's deviation from it, fading as w^2;
+  limit ``L`` (:func:`long_wave_limit`, in the table's water depth) plus the table's deviation
+  from it, fading as w^2;
 * above the highest, the last value tapered by ``cos^2`` to zero at 1.5 times that frequency.
 
 A table of one frequency (a regular-wave result) is extended the same way from that frequency.
@@ -26,7 +27,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from marinesim.constants import G
-from marinesim.errors import ParameterError
+from marinesim.errors import ParameterError, require_positive
+from marinesim.sea.dispersion import k_from_omega
 
 DOFS = ("surge", "sway", "heave", "roll", "pitch", "yaw")
 ROTATIONS = (3, 4, 5)
@@ -45,19 +47,23 @@ MAX_ROTATION_SLOPES = 50.0
 """Largest rotation |RAO| as a multiple of the wave slope per amplitude, k = w^2 / g (rad/m)."""
 
 
-def long_wave_limit(omega: np.ndarray, beta: np.ndarray, g: float = G) -> np.ndarray:
-    """Deep-water long-wave RAO of a free-floating body, shape (n, 6).
+def long_wave_limit(omega: np.ndarray, beta: np.ndarray, g: float = G, depth: float = math.inf) -> np.ndarray:
+    """Long-wave RAO of a free-floating body in water of ``depth`` (m; inf = deep), shape (n, 6).
 
-    The body follows the wave orbit and slope: surge ``-i cos beta``, sway ``-i sin beta``,
-    heave 1, roll ``-i k sin beta``, pitch ``i k cos beta`` (pitch bow down = minus the slope
-    along x), yaw 0, with ``k = w^2 / g``.
+    The body follows the wave orbit and slope at the surface: surge ``-i cos beta / tanh(kh)``,
+    sway ``-i sin beta / tanh(kh)`` (the horizontal orbit is ``1 / tanh(kh)`` times the vertical
+    one), heave 1, roll ``-i k sin beta``, pitch ``i k cos beta`` (pitch bow down = minus the
+    slope along x), yaw 0, with ``k`` from ``w^2 = g k tanh(kh)`` (deep water: ``k = w^2 / g``,
+    ``tanh = 1``).
     """
     omega = np.asarray(omega, dtype=float)
     beta = np.asarray(beta, dtype=float)
-    k = omega ** 2 / g
+    k = k_from_omega(omega, depth, g)
+    orbit = 1.0 if math.isinf(depth) else 1.0 / np.tanh(k * depth)
     c, s = np.cos(beta), np.sin(beta)
     zero = np.zeros(np.broadcast(omega, beta).shape)
-    return np.stack([-1j * c + zero, -1j * s + zero, 1.0 + zero, -1j * k * s, 1j * k * c, zero + 0j], axis=-1)
+    return np.stack([-1j * c * orbit + zero, -1j * s * orbit + zero, 1.0 + zero, -1j * k * s, 1j * k * c,
+                     zero + 0j], axis=-1)
 
 
 @dataclass(frozen=True)
@@ -66,7 +72,9 @@ class RaoTable:
 
     ``values[s, b, w, j]``: speed ``speed[s]`` (m/s), heading ``beta[b]`` (rad, increasing in
     [0, 2 pi)), frequency ``omega[w]`` (rad/s, increasing), DOF j in :data:`DOFS` order.
-    Build with :func:`make_table`, which completes half-range tables by symmetry.
+    ``depth`` (m, inf = deep water) is the water depth the table was computed for: the long-wave
+    limits and the extension below the table use it. Build with :func:`make_table`, which
+    completes half-range tables by symmetry.
     """
 
     omega: np.ndarray
@@ -80,6 +88,7 @@ class RaoTable:
     source_format: str
     notes: tuple[str, ...] = field(default=())
     mirrored: bool = False
+    depth: float = math.inf
 
     def __call__(self, omega: np.ndarray, beta: np.ndarray, speed: float = 0.0) -> np.ndarray:
         """Interpolated RAOs, shape (n, 6), at wave frequencies ``omega`` (rad/s, > 0) and
@@ -93,9 +102,9 @@ class RaoTable:
         if np.any(below):
             fade = (omega[below] / w_lo) ** 2
             at_edge = inside[below]
-            inside[below] = (long_wave_limit(omega[below], beta[below], self.g)
-                             + (at_edge - long_wave_limit(np.full(fade.size, w_lo), beta[below], self.g))
-                             * fade[:, None])
+            inside[below] = (long_wave_limit(omega[below], beta[below], self.g, self.depth)
+                             + (at_edge - long_wave_limit(np.full(fade.size, w_lo), beta[below], self.g,
+                                                          self.depth)) * fade[:, None])
         above = omega > w_hi
         if np.any(above):
             x = np.clip((omega[above] - w_hi) / ((TAPER_END - 1.0) * w_hi), 0.0, 1.0)
@@ -144,13 +153,15 @@ def _locate(grid: np.ndarray, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 def make_table(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: np.ndarray, *,
                reference_point=(0.0, 0.0, 0.0), rho: float = 1025.0, g: float = G, source: str = "",
-               source_format: str = "", notes: tuple[str, ...] = ()) -> RaoTable:
+               source_format: str = "", notes: tuple[str, ...] = (), depth: float = math.inf) -> RaoTable:
     """Validate and complete an RAO table already in the internal convention.
 
     ``values`` has shape (speeds, headings, frequencies, 6). Headings (rad) either span exactly
     0..pi (completed by the port/starboard mirror, :data:`MIRROR_SIGN`) or cover the circle
-    with no gap wider than :data:`MAX_HEADING_GAP`. Raises :class:`ParameterError` otherwise.
+    with no gap wider than :data:`MAX_HEADING_GAP`. ``depth``: water depth (m, > 0; inf = deep).
+    Raises :class:`ParameterError` otherwise.
     """
+    depth = require_positive("water depth", depth, allow_infinite=True)
     omega = np.asarray(omega, dtype=float)
     beta = np.asarray(beta, dtype=float)
     speed = np.atleast_1d(np.asarray(speed, dtype=float))
@@ -188,7 +199,7 @@ def make_table(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: n
             f"RAO headings leave a gap of {math.degrees(gaps.max()):g} deg after "
             f"{math.degrees(beta[at]):g} deg: give 0..180 (mirrored to port) or the whole circle")
     return RaoTable(omega, beta, speed, values, tuple(float(v) for v in reference_point), float(rho),
-                    float(g), str(source), source_format, tuple(notes), mirrored)
+                    float(g), str(source), source_format, tuple(notes), mirrored, depth)
 
 
 def _check_amplitudes(omega: np.ndarray, beta: np.ndarray, values: np.ndarray, g: float) -> None:

@@ -90,6 +90,21 @@ class Response:
     def columns(self) -> list[str]:
         return motion_columns(self.points)
 
+    def variance_outside_table(self) -> dict[str, dict[str, float | None]]:
+        """Share of each DOF's displacement variance at the reference point that comes from wave
+        components below and above the RAO table's frequencies (where :class:`RaoTable` extends it
+        by the long-wave model and by a taper): ``{"below": {dof: share}, "above": {dof: share}}``,
+        shares in [0, 1] of ``sum |H_j a|^2 / 2`` over the components (the variance of random
+        phases), None for a DOF with no variance."""
+        power = np.abs(self.transfer * self.components.amplitude[:, None]) ** 2 / 2.0   # (n, 6)
+        total = power.sum(axis=0)
+        omega = self.components.omega
+        out: dict[str, dict[str, float | None]] = {}
+        for side, outside in (("below", omega < self.rao.omega[0]), ("above", omega > self.rao.omega[-1])):
+            part = power[outside].sum(axis=0)
+            out[side] = {dof: float(part[j] / total[j]) if total[j] > 0.0 else None for j, dof in enumerate(DOFS)}
+        return out
+
     def linear(self, times: np.ndarray) -> np.ndarray:
         """Real linear outputs at arbitrary ``times`` (s): (T, 19 + points) = 6 DOF displacement,
         velocity, acceleration (m, rad), elevation at the reference point and at each point."""
