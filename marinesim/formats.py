@@ -146,6 +146,9 @@ register(Format("capytaine", "rao", "Capytaine NetCDF dataset (.nc) with hydrody
                 options=("roll_damping",)))
 register(Format("native", "rao", "marinesim table (.csv, .txt, .rao; see marinesim/vessel/native.py)",
                 (".csv", ".txt", ".rao"), "marinesim.vessel.native:read_native", "marinesim.vessel.native:sniff"))
+register(Format("wamit-forces", "rao", "WAMIT .1, .3, .hst and .frc side by side: RAOs solved from forces and mass",
+                (".3", ".1", ".hst", ".frc"), "marinesim.vessel.wamit_forces:read_wamit_forces",
+                "marinesim.vessel.wamit_forces:sniff", options=("ulen",)))
 register(Format("gdf", "mesh", "WAMIT low-order panels, .gdf", (".gdf",), "marinesim.hull.gdf:read_gdf_mesh"))
 register(Format("stl", "mesh", "STL, .stl", (".stl",), "marinesim.hull.mesh:read_mesh"))
 register(Format("obj", "mesh", "Wavefront OBJ, .obj", (".obj",), "marinesim.hull.mesh:read_mesh"))

@@ -95,6 +95,7 @@ def check_barge_visual(path: Path, name: str) -> None:
 
 SAMPLES: dict[str, tuple[Callable[[Path], Path], Callable[[Path, str], None]]] = {
     "wamit": (lambda folder: TANKER_RAO, check_rao),
+    "wamit-forces": (lambda folder: TANKER_RAO.with_suffix(".3"), check_rao),
     "veres": (lambda folder: S175, check_rao),
     "capytaine": (capytaine_dataset, check_rao),
     "native": (native_table, check_rao),

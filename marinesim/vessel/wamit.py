@@ -1,14 +1,23 @@
-"""WAMIT ``.4`` motion RAOs (numeric output) -> :class:`RaoTable`.
+"""WAMIT ``.4`` motion RAOs (numeric output) -> :class:`RaoTable`, and what the other WAMIT readers share.
 
-Source convention, converted here once: each line is ``PER BETA I MOD PHA RE IM``; ``PER`` is
-the period in s (``IPERIO = 1``, the default), the frequency in rad/s (``IPERIO = 2``) or the
-infinite-depth wavenumber ``K ULEN`` (``IPERIO = 3``), as the ``.cfg`` beside the file says;
-``BETA`` is the direction the waves travel towards, degrees from the body x axis (already
-marinesim's ``beta_rel``); the time factor is ``exp(+i w t)`` with phase lead (marinesim's own).
-Translations are per wave amplitude A; rotations per ``A / ULEN``, so rad/m = value / ULEN.
-``ULEN`` and ``g`` come from the ``.gdf`` of the same name, ``rho`` from the ``.frc``.
-Lines with zero modulus carry a dummy phase (90 deg): only ``RE`` and ``IM`` are used. The
-reference point is the origin of WAMIT's body coordinates.
+Source convention, converted here once: each line is ``PER BETA I MOD PHA RE IM``; ``PER`` is,
+as the ``.cfg`` beside the file says (``IPEROUT``, else ``IPERIO``; WAMIT's default 1), the
+period in s (1), the frequency in rad/s (2), the infinite-depth wavenumber ``K ULEN`` with
+``K = w^2 / g`` (3) or the finite-depth wavenumber ``nu ULEN`` with ``nu tanh(nu H) = w^2 / g``
+(4; the depth ``H`` from the ``.pot``). ``IPERIN`` only says how the ``.pot`` gave them and is
+not used. ``BETA`` is the direction the waves travel towards, degrees from the body x axis
+(already marinesim's ``beta_rel``); the time factor is ``exp(+i w t)`` with phase lead
+(marinesim's own). Translations are per wave amplitude A; rotations per ``A / ULEN``, so
+rad/m = value / ULEN. ``ULEN`` and ``g`` come from the ``.gdf`` of the same name, ``rho`` from
+the ``.frc``. Lines with zero modulus carry a dummy phase (90 deg): only ``RE`` and ``IM`` are
+used. The reference point is the origin of WAMIT's body coordinates. A header line
+(``NUMHDR = 1`` in the ``.cfg``) is skipped; modes above 6 (generalised modes, other bodies)
+are ignored with a note: WAMIT solved them together, so the rigid-body RAOs are complete.
+
+A ``.3`` file (exciting forces) has the same seven columns; its values (forces per
+``rho g A ULEN^2``) are far beyond any motion RAO for a ship-sized body, which is how
+:func:`sniff` and :func:`read_wamit` tell it from a ``.4`` when the name does not say
+(:func:`looks_like_forces`); :mod:`marinesim.vessel.wamit_forces` reads it as what it is.
 """
 
 from __future__ import annotations
@@ -21,82 +30,217 @@ import numpy as np
 from marinesim.constants import G, RHO_SEAWATER
 from marinesim.errors import FileFormatError, ParameterError, require_within
 from marinesim.hull.gdf import read_gdf_header
-from marinesim.vessel.rao import ROTATIONS, RaoTable, make_table
+from marinesim.vessel.wamit_frc import read_frc
+from marinesim.vessel.rao import MAX_ROTATION_RAD_M, MAX_TRANSLATION_M_M, ROTATIONS, RaoTable, make_table
 from marinesim.tokens import parse_float, parse_int, read_text
 
 COLUMNS = "PER BETA I MOD PHA RE IM"
 ULEN_RANGE_M = (0.01, 1000.0)
 """WAMIT's length scale (m): 1 or a body dimension, from a tank model's to the largest vessel's."""
-PERIOD_KINDS = {1: "period (s)", 2: "frequency (rad/s)", 3: "wavenumber K*ULEN (infinite depth)"}
+PERIOD_KINDS = {1: "period (s)", 2: "frequency (rad/s)", 3: "wavenumber K*ULEN (infinite depth)",
+                4: "wavenumber nu*ULEN (finite depth)"}
+RIGID_MODES = 6
+MAX_FORCE_LIKE_ROTATION = MAX_ROTATION_RAD_M * ULEN_RANGE_M[1]
+"""Largest rotation value a ``.4`` can hold (per A / ULEN): the largest rotation RAO times the largest ULEN."""
 
 
 def read_wamit(path: str | Path, *, ulen: float | None = None, period_kind: int | None = None) -> RaoTable:
-    """Read a WAMIT ``.4`` file; ``ulen`` and ``period_kind`` (IPERIO) override the files beside it."""
+    """Read a WAMIT ``.4`` file; ``ulen`` and ``period_kind`` (IPEROUT) override the files beside it."""
     path = Path(path)
-    notes: list[str] = []
-    g, gdf_ulen = _gdf_settings(path.with_suffix(".gdf"))
-    if ulen is None:
-        ulen = gdf_ulen
-        if ulen is None:
-            ulen = 1.0
-            notes.append("ULEN not found (no .gdf beside the file): assumed 1 m; check the pitch "
-                         "and roll long-wave limits")
-    require_within("WAMIT ULEN", ulen, *ULEN_RANGE_M, "m")
-    if period_kind is None:
-        period_kind = _iperio(path.with_suffix(".cfg"))
-    if period_kind not in PERIOD_KINDS:
-        raise ParameterError(f"WAMIT IPERIO {period_kind} is not supported (supported: "
-                             + ", ".join(f"{k} = {v}" for k, v in PERIOD_KINDS.items()) + ")")
+    settings = Settings.beside(path, ulen=ulen, period_kind=period_kind)
+    notes = list(settings.notes)
     rho = _frc_rho(path.with_suffix(".frc"))
     if rho is None:
         rho = RHO_SEAWATER
         notes.append(f"rho not found (no .frc beside the file): assumed {RHO_SEAWATER:g} kg/m^3")
 
-    periods, headings, values = _read_rows(path)
-    if period_kind == 1:
-        omega = 2.0 * math.pi / periods
-    elif period_kind == 2:
-        omega = periods.copy()
-    else:
-        omega = np.sqrt(g * periods / ulen)
+    periods, headings, values, row_notes = read_rows(path, header_lines=settings.header_lines)
+    notes += row_notes
+    biggest = np.abs(values).max(axis=(0, 1))
+    if looks_like_forces(biggest):
+        raise FileFormatError(path, None, "values up to "
+                              + ", ".join(f"{v:.4g}" for v in biggest)
+                              + " (modes 1-6) are exciting forces, not motions: this is a WAMIT .3 file; "
+                              "name it .3 to solve the RAOs from it with the .1, .hst and .frc beside it")
+    omega = settings.omega(periods, path)
     order = np.argsort(omega)
     values = values[:, order]
-    values[..., list(ROTATIONS)] /= ulen
+    values[..., list(ROTATIONS)] /= settings.ulen
+    return table_from(path, omega[order], headings, values, rho=rho, settings=settings,
+                      notes=tuple(notes) + (settings.describe(),))
+
+
+def table_from(path: Path, omega: np.ndarray, headings_deg: np.ndarray, values: np.ndarray, *, rho: float,
+               settings: "Settings", notes: tuple[str, ...], source_format: str = "wamit") -> RaoTable:
+    """The :class:`RaoTable` of ``values`` (heading, frequency, 6; internal convention) read from ``path``;
+    a table the RAO model refuses (e.g. headings that cover part of the circle) is a :class:`FileFormatError`
+    naming the headings the file covers."""
+    extra = {"depth": settings.depth} if math.isfinite(settings.depth) else {}
     try:
-        return make_table(omega[order], np.radians(headings), [0.0], values[None], reference_point=(0.0, 0.0, 0.0),
-                          rho=rho, g=g, source=str(path), source_format="wamit",
-                          notes=tuple(notes) + (f"PER column read as {PERIOD_KINDS[period_kind]}, "
-                                                f"ULEN = {ulen:g} m, g = {g:g} m/s^2",))
+        return make_table(omega, np.radians(headings_deg), [0.0], values[None], reference_point=(0.0, 0.0, 0.0),
+                          rho=rho, g=settings.g, source=str(path), source_format=source_format, notes=notes,
+                          **extra)
     except ParameterError as error:
-        raise FileFormatError(path, None, str(error)) from None
+        message = str(error)
+        if "heading" in message:
+            message += f" (the file covers heading(s) {', '.join(f'{h:g}' for h in headings_deg)} deg only)"
+        raise FileFormatError(path, None, message) from None
+
+
+def looks_like_forces(biggest: np.ndarray) -> bool:
+    """Whether the largest |value| of each mode (6,) is beyond any motion RAO a ``.4`` can hold: then the
+    seven columns are exciting forces (a ``.3``)."""
+    return bool(np.any(biggest[:3] > MAX_TRANSLATION_M_M) or np.any(biggest[3:] > MAX_FORCE_LIKE_ROTATION))
 
 
 def sniff(head: bytes) -> bool:
-    """Whether the file's first bytes look like a ``.4`` file: a first line of seven numbers."""
-    text = head.decode("utf-8", errors="replace")
-    first = next((line for line in text.splitlines() if line.strip()), "").split()
-    try:
-        [float(part) for part in first]
-    except ValueError:
-        return False
-    return len(first) == 7
+    """Whether the file's first bytes look like a ``.4`` file: lines of seven numbers that are motions."""
+    biggest = _head_moduli(head)
+    return biggest is not None and not looks_like_forces(biggest)
 
 
-def _read_rows(path: Path) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Periods (file order, monotonic), headings (deg, increasing) and values (heading, period, 6)."""
+def sniff_forces(head: bytes) -> bool:
+    """Whether the file's first bytes look like a ``.3`` file: lines of seven numbers that are forces."""
+    biggest = _head_moduli(head)
+    return biggest is not None and looks_like_forces(biggest)
+
+
+def _head_moduli(head: bytes) -> np.ndarray | None:
+    """Largest MOD of each mode 1-6 over the complete seven-number lines of ``head``; None unless its
+    first line is seven numbers."""
+    lines = head.decode("utf-8", errors="replace").splitlines()
+    if len(head) >= 4096 and lines:
+        lines = lines[:-1]  # the last line may be cut
+    biggest = np.zeros(RIGID_MODES)
+    first = True
+    for line in lines:
+        parts = line.split()
+        if not parts:
+            continue
+        try:
+            numbers = [float(part) for part in parts]
+        except ValueError:
+            return None if first else biggest
+        if len(numbers) != 7:
+            return None if first else biggest
+        first = False
+        mode = int(numbers[2]) if numbers[2].is_integer() else 0
+        if 1 <= mode <= RIGID_MODES and math.isfinite(numbers[3]):
+            biggest[mode - 1] = max(biggest[mode - 1], abs(numbers[3]))
+    return None if first else biggest
+
+
+class Settings:
+    """What the files beside a WAMIT output say about it: g and ULEN (``.gdf``), the kind of the PER
+    column and the header lines (``.cfg``), the water depth (``.pot``)."""
+
+    def __init__(self, g: float, ulen: float, period_kind: int, period_key: str, header_lines: int,
+                 depth: float, notes: tuple[str, ...]) -> None:
+        self.g, self.ulen, self.period_kind, self.period_key = g, ulen, period_kind, period_key
+        self.header_lines, self.depth, self.notes = header_lines, depth, notes
+
+    @classmethod
+    def beside(cls, path: Path, *, ulen: float | None = None, period_kind: int | None = None) -> "Settings":
+        notes: list[str] = []
+        g, gdf_ulen = _gdf_settings(path.with_suffix(".gdf"))
+        if ulen is None:
+            ulen = gdf_ulen
+            if ulen is None:
+                ulen = 1.0
+                notes.append("ULEN not found (no .gdf beside the file): assumed 1 m; check the pitch "
+                             "and roll long-wave limits")
+        require_within("WAMIT ULEN", ulen, *ULEN_RANGE_M, "m")
+        cfg = path.with_suffix(".cfg")
+        keys = read_cfg(cfg)
+        key = "option"
+        if period_kind is None:
+            period_kind, key = output_period_kind(cfg, keys)
+        if period_kind not in PERIOD_KINDS:
+            where = f"{cfg}: {key} {period_kind}" if key != "option" else f"WAMIT IPEROUT {period_kind}"
+            raise ParameterError(f"{where} is not supported (supported: "
+                                 + ", ".join(f"{k} = {v}" for k, v in PERIOD_KINDS.items()) + ")")
+        header = 0
+        if "NUMHDR" in keys:
+            number, value = keys["NUMHDR"]
+            header = parse_int(cfg, number, value, "NUMHDR (0 or 1)")
+            if header not in (0, 1):
+                raise FileFormatError(cfg, number, f"NUMHDR must be 0 or 1, got {header}")
+        depth = _pot_depth(path.with_suffix(".pot"), keys)
+        return cls(g, ulen, period_kind, key, header, depth, tuple(notes))
+
+    def omega(self, per: np.ndarray, path: Path) -> np.ndarray:
+        """The wave frequencies (rad/s) of the PER column ``per`` (> 0) of ``path``."""
+        if self.period_kind == 1:
+            return 2.0 * math.pi / per
+        if self.period_kind == 2:
+            return per.copy()
+        wavenumber = per / self.ulen  # 1/m
+        if self.period_kind == 3:
+            return np.sqrt(self.g * wavenumber)
+        if math.isnan(self.depth):
+            raise FileFormatError(path, None, f"PER is the finite-depth wavenumber ({self.period_key} = 4): "
+                                              f"the water depth is needed and no {path.with_suffix('.pot').name} "
+                                              "beside the file gives it")
+        return np.sqrt(self.g * wavenumber * np.tanh(wavenumber * self.depth))
+
+    def describe(self) -> str:
+        depth = {True: f"{self.depth:g} m", False: "infinite"}[math.isfinite(self.depth)]
+        if math.isnan(self.depth):
+            depth = "not given (no .pot): infinite assumed"
+        return (f"PER column read as {PERIOD_KINDS[self.period_kind]} ({self.period_key}), ULEN = {self.ulen:g} m, "
+                f"g = {self.g:g} m/s^2, water depth {depth}")
+
+
+def read_cfg(cfg: Path) -> dict[str, tuple[int, str]]:
+    """``KEY = value`` lines of a WAMIT ``.cfg`` (keys upper case) -> (line number, first word of the value);
+    empty without a file."""
+    if not cfg.is_file():
+        return {}
+    keys: dict[str, tuple[int, str]] = {}
+    for number, text in enumerate(read_text(cfg).splitlines(), 1):
+        key, equals, value = text.partition("=")
+        words = value.split()
+        if equals and key.strip() and words:
+            keys[key.strip().upper()] = (number, words[0])
+    return keys
+
+
+def output_period_kind(cfg: Path, keys: dict[str, tuple[int, str]] | None = None) -> tuple[int, str]:
+    """(kind, the key that set it) of the PER column of WAMIT's outputs: ``IPEROUT``, else ``IPERIO`` (which
+    sets input and output alike in v6 and v7), else WAMIT's default 1 (period)."""
+    keys = read_cfg(cfg) if keys is None else keys
+    for key in ("IPEROUT", "IPERIO"):
+        if key in keys:
+            number, value = keys[key]
+            return parse_int(cfg, number, value, f"{key} (1..4)"), key
+    return 1, "default"
+
+
+def read_rows(path: Path, *, header_lines: int = 0, what: str = "mode") -> tuple[
+        np.ndarray, np.ndarray, np.ndarray, list[str]]:
+    """Periods (file order, monotonic), headings (deg, increasing), values (heading, period, 6) and notes
+    of a seven-column WAMIT file (``.4`` or ``.3``); ``header_lines`` (NUMHDR) first lines are skipped, as
+    is a first line that is text."""
     periods: list[float] = []
     headings: list[float] = []
     cells: dict[tuple[int, int], dict[int, complex]] = {}
     first_line: dict[tuple[int, int], int] = {}
-    for number, text in enumerate(read_text(path).splitlines(), 1):
+    ignored: set[int] = set()
+    notes: list[str] = []
+    lines = read_text(path).splitlines()
+    for number, text in enumerate(lines, 1):
         parts = text.split()
         if not parts:
+            continue
+        if number <= header_lines or (not periods and not cells and not _is_number(parts[0])
+                                      and number == _first_nonblank(lines)):
+            notes.append(f"header line {number} of {path.name} skipped")
             continue
         if len(parts) != 7:
             raise FileFormatError(path, number, f"expected 7 columns {COLUMNS}, got {len(parts)}")
         per = parse_float(path, number, parts[0], "PER (period, frequency or wavenumber)")
         beta = parse_float(path, number, parts[1], "BETA (heading, degrees)")
-        dof = parse_int(path, number, parts[2], "I (mode 1..6)")
+        dof = parse_int(path, number, parts[2], f"I ({what} number)")
         modulus, _, re, im = (parse_float(path, number, parts[k], name)
                               for k, name in zip(range(3, 7), ("MOD", "PHA", "RE", "IM")))
         if per <= 0.0:
@@ -104,8 +248,8 @@ def _read_rows(path: Path) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
                                                 f"carry no RAO), got {parts[0]}")
         if not -360.0 <= beta <= 360.0:
             raise FileFormatError(path, number, f"BETA must be a heading in -360..360 deg, got {parts[1]}")
-        if not 1 <= dof <= 6:
-            raise FileFormatError(path, number, f"I must be a rigid-body mode 1..6 (one body), got {dof}")
+        if dof < 1:
+            raise FileFormatError(path, number, f"I must be a mode number >= 1, got {dof}")
         if abs(math.hypot(re, im) - modulus) > 1e-4 * max(modulus, 1e-30):
             raise FileFormatError(path, number, f"MOD {modulus:g} disagrees with |RE + i IM| = "
                                                 f"{math.hypot(re, im):g}")
@@ -126,6 +270,9 @@ def _read_rows(path: Path) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
                 raise FileFormatError(path, number, f"BETA {parts[1]} breaks the order of the headings "
                                                     "(must increase)")
             headings.append(beta)
+        if dof > RIGID_MODES:
+            ignored.add(dof)
+            continue
         h = headings.index(beta)
         cell = cells.setdefault((p, h), {})
         first_line.setdefault((p, h), number)
@@ -134,18 +281,40 @@ def _read_rows(path: Path) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         cell[dof] = complex(re, im)
     if not periods:
         raise FileFormatError(path, None, f"no data lines ({COLUMNS})")
-    values = np.zeros((len(headings), len(periods), 6), dtype=complex)
+    values = np.zeros((len(headings), len(periods), RIGID_MODES), dtype=complex)
     for p in range(len(periods)):
         for h in range(len(headings)):
             cell = cells.get((p, h))
             if cell is None:
-                raise FileFormatError(path, None, f"no lines for PER {periods[p]:g}, BETA {headings[h]:g}")
-            missing = [m for m in range(1, 7) if m not in cell]
+                raise FileFormatError(path, None, f"no lines of modes 1-6 for PER {periods[p]:g}, "
+                                                  f"BETA {headings[h]:g}")
+            missing = [m for m in range(1, RIGID_MODES + 1) if m not in cell]
             if missing:
                 raise FileFormatError(path, first_line[(p, h)], f"modes {missing} missing for "
                                                                 f"PER {periods[p]:g}, BETA {headings[h]:g}")
-            values[h, p] = [cell[m] for m in range(1, 7)]
-    return np.array(periods), np.array(headings), values
+            values[h, p] = [cell[m] for m in range(1, RIGID_MODES + 1)]
+    if ignored:
+        notes.append(ignored_modes_note(path, ignored))
+    return np.array(periods), np.array(headings), values, notes
+
+
+def ignored_modes_note(path: Path, modes: set[int]) -> str:
+    """The note for modes above 6 read and left out of ``path``."""
+    listed = ", ".join(str(m) for m in sorted(modes)[:6]) + (", ..." if len(modes) > 6 else "")
+    return (f"{path.name}: modes {listed} (generalised modes or further bodies) ignored; "
+            "marinesim models the rigid-body modes 1-6 of one body")
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text.replace("D", "E").replace("d", "e"))
+    except ValueError:
+        return False
+    return True
+
+
+def _first_nonblank(lines: list[str]) -> int:
+    return next((n for n, text in enumerate(lines, 1) if text.strip()), 0)
 
 
 def _gdf_settings(gdf: Path) -> tuple[float, float | None]:
@@ -156,25 +325,36 @@ def _gdf_settings(gdf: Path) -> tuple[float, float | None]:
     return header.g, header.ulen
 
 
-def _iperio(cfg: Path) -> int:
-    """IPERIO from a WAMIT ``.cfg`` (``IPERIO=2``); WAMIT's default 1 (periods) without one."""
-    if not cfg.is_file():
-        return 1
-    for number, text in enumerate(read_text(cfg).splitlines(), 1):
-        key, _, value = text.partition("=")
-        if key.strip().upper() == "IPERIO":
-            return parse_int(cfg, number, value.split()[0] if value.split() else "", "IPERIO")
-    return 1
+def _pot_depth(pot: Path, cfg_keys: dict[str, tuple[int, str]]) -> float:
+    """Water depth HBOT (m) from the ``.pot`` (inf for HBOT <= 0, WAMIT's infinite depth); NaN without a
+    ``.pot``. The v6/v7 form (IALTPOT = 2) has HBOT alone on line 2; the old form (IALTPOT = 1) on the
+    first line of five numbers, HBOT XBODY(1..4)."""
+    if not pot.is_file():
+        return math.nan
+    lines = read_text(pot).splitlines()
+    old_form = cfg_keys.get("IALTPOT", (0, "2"))[1] == "1"
+    for number, text in enumerate(lines[1:], 2):
+        parts = text.split()
+        if (old_form and len(parts) == 5) or (not old_form and number == 2):
+            if not parts:
+                break
+            hbot = parse_float(pot, number, parts[0], "HBOT (water depth, m; <= 0 for infinite)")
+            return math.inf if hbot <= 0.0 else hbot
+    raise FileFormatError(pot, None, "HBOT (water depth) not found: expected it on line 2 (IALTPOT = 2) "
+                                     "or first on a line of five numbers (IALTPOT = 1)")
 
 
 def _frc_rho(frc: Path) -> float | None:
-    """RHO from the third line of a ``.frc`` (IALTFRC 1 or 2 layout), or None if there is none."""
+    """RHO of the ``.frc`` beside the file (IALTFRC 2), or None without one or in form 1 (no RHO there)."""
     if not frc.is_file():
         return None
-    lines = read_text(frc).splitlines()
-    if len(lines) < 3 or not lines[2].split():
-        raise FileFormatError(frc, 3, "expected RHO")
-    rho = parse_float(frc, 3, lines[2].split()[0], "RHO (kg/m^3)")
-    if rho <= 0:
-        raise FileFormatError(frc, 3, f"RHO must be > 0, got {rho:g}")
-    return rho
+    return read_frc(frc, frc_form(frc.with_suffix(".cfg"))).rho
+
+
+def frc_form(cfg: Path) -> int | None:
+    """IALTFRC from the ``.cfg`` (None without one: :func:`read_frc` tells it from the layout)."""
+    keys = read_cfg(cfg)
+    if "IALTFRC" not in keys:
+        return None
+    number, value = keys["IALTFRC"]
+    return parse_int(cfg, number, value, "IALTFRC (1 or 2)")
