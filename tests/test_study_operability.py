@@ -36,9 +36,14 @@ def value1() -> np.ndarray:
     return v
 
 
+def limiting() -> np.ndarray:
+    """Limiting Hs (Tp, heading, criterion) of criteria linear in Hs: limit / value at Hs 1 m."""
+    return LIMITS / value1()
+
+
 def test_a_hand_built_scatter_gives_the_percentages_summed_by_hand():
     scatter = hand_scatter()
-    result = operability(value1(), LIMITS, TP, HEADINGS, scatter, scatter.period)
+    result = operability(limiting(), TP, HEADINGS, scatter, scatter.period)
     # limiting Hs = limit / value1. Beam: heave 5, 3.33, 2.5; roll 4, 1.33, 2.67 -> 4, 1.33, 2.5 m
     np.testing.assert_allclose(result.limiting_hs_all[0], [4.0, 4.0 / 3.0, 2.5])
     assert result.governing[0].tolist() == [1, 1, 0]
@@ -52,21 +57,17 @@ def test_a_hand_built_scatter_gives_the_percentages_summed_by_hand():
     # best heading per sea state: head works wherever beam does, and more -> 36 / 45 as well
     assert result.overall_pct == pytest.approx(100 * 36 / 45)
     assert result.best_heading_deg == 180.0
-    alpha = operability(value1(), LIMITS, TP, HEADINGS, scatter, scatter.period, alpha=0.5)
-    np.testing.assert_allclose(alpha.limiting_hs_all, 0.5 * result.limiting_hs_all)
 
 
 def test_a_cell_period_outside_the_study_is_refused():
     scatter = hand_scatter()
     with pytest.raises(ParameterError, match="peak period"):
-        operability(value1(), LIMITS, TP, HEADINGS, scatter, scatter.period + 0.5)
-    with pytest.raises(ParameterError, match="alpha"):
-        operability(value1(), LIMITS, TP, HEADINGS, scatter, scatter.period, alpha=1.5)
+        operability(limiting(), TP, HEADINGS, scatter, scatter.period + 0.5)
 
 
 def test_the_study_files_read_back_as_written_and_are_reproducible(tmp_path):
     scatter = hand_scatter()
-    result = operability(value1(), LIMITS, TP, HEADINGS, scatter, scatter.period)
+    result = operability(limiting(), TP, HEADINGS, scatter, scatter.period)
     data = dataset(result, value1(), NAMES, ["m", "deg"], LIMITS, scatter, scatter.period,
                    {"scenario": "hand.toml", "scenario_sha256": "ab" * 32})
     pngs = pictures(result, scatter, scatter.period, NAMES, "hand study")
@@ -93,7 +94,7 @@ def test_the_study_files_read_back_as_written_and_are_reproducible(tmp_path):
 def test_a_file_in_place_of_the_folder_is_refused(tmp_path):
     (tmp_path / "study").write_text("x")
     scatter = hand_scatter()
-    result = operability(value1(), LIMITS, TP, HEADINGS, scatter, scatter.period)
+    result = operability(limiting(), TP, HEADINGS, scatter, scatter.period)
     data = dataset(result, value1(), NAMES, ["m", "deg"], LIMITS, scatter, scatter.period, {})
     with pytest.raises(MarinesimError, match="not a folder"):
         write_study(tmp_path / "study", data, summary_csv(result, NAMES), {})

@@ -2,13 +2,15 @@
 
 For a criterion whose value is linear in Hs (an RMS, a most probable maximum, a significant amplitude: all
 proportional to the response's standard deviation), the limiting Hs of a (Tp, heading) is
-``limit / value(Hs = 1 m)``; the operation's limiting Hs is the smallest over its criteria, and the
+``limit / value(Hs = 1 m)`` (others are solved for it); the operation's limiting Hs is the smallest over its criteria, and the
 criterion that sets it *governs*. A sea state (Hs, Tp) is workable at a heading when Hs <= that limit.
 Operability at a heading is the probability of the workable sea states; the overall figure takes, in each
 sea state, the best heading (the vessel is free to choose it). With an alpha factor (DNV-ST-N001 4.3: a
-forecast-based operation's limit is ``alpha x`` its design limit) the limits are multiplied by it first.
+forecast-based operation's limit is ``alpha x`` its design limit) the limits are multiplied by it first
+(:func:`marinesim.study.run.evaluate`).
 
-Everything is array arithmetic on ``value1`` (Tp, heading, criterion): a whole study is a few contractions.
+The limiting Hs per criterion comes from :class:`~marinesim.criteria.spectral.SpectralCriteria`; the rest
+is array arithmetic over (heading, Tp, criterion).
 """
 
 from __future__ import annotations
@@ -44,19 +46,15 @@ class Operability:
         return float(self.headings_deg[int(np.argmax(self.operability_pct))])
 
 
-def operability(value1: np.ndarray, limits: np.ndarray, tp: np.ndarray, headings_deg: np.ndarray,
-                scatter: Scatter, cell_tp: np.ndarray, alpha: float = 1.0) -> Operability:
-    """The figures of a study from each criterion's value at Hs = 1 m, ``value1`` (T, H, C) in the criterion's
-    unit, at the peak periods ``tp`` (T,) s and headings (H,) deg, against ``limits`` (C,); the cells of
-    ``scatter`` with their peak periods ``cell_tp`` (cells,), each one of ``tp``."""
-    value1, limits = np.asarray(value1, float), np.asarray(limits, float)
-    if value1.shape != (tp.size, headings_deg.size, limits.size):
-        raise ParameterError(f"value1 must be (Tp, heading, criterion) = {(tp.size, headings_deg.size, limits.size)}, "
-                             f"got {value1.shape}")
-    if not 0.0 < alpha <= 1.0:
-        raise ParameterError(f"the alpha factor must be in (0, 1], got {alpha!r}")
-    with np.errstate(divide="ignore"):
-        limiting = np.where(value1 > 0, alpha * limits / np.where(value1 > 0, value1, 1.0), np.inf)  # (T, H, C)
+def operability(limiting_hs: np.ndarray, tp: np.ndarray, headings_deg: np.ndarray, scatter: Scatter,
+                cell_tp: np.ndarray) -> Operability:
+    """The figures of a study from each criterion's limiting Hs, ``limiting_hs`` (T, H, C) m (inf where it
+    never limits), at the peak periods ``tp`` (T,) s and headings (H,) deg; the cells of ``scatter`` with their
+    peak periods ``cell_tp`` (cells,), each one of ``tp``."""
+    limiting = np.asarray(limiting_hs, float)
+    if limiting.ndim != 3 or limiting.shape[:2] != (tp.size, headings_deg.size):
+        raise ParameterError(f"limiting_hs must be (Tp, heading, criterion) with {tp.size} Tp and "
+                             f"{headings_deg.size} headings, got {limiting.shape}")
     limiting = np.moveaxis(limiting, 1, 0)                                                           # (H, T, C)
     limiting_all = limiting.min(axis=2)
     governing = limiting.argmin(axis=2)

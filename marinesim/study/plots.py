@@ -5,6 +5,7 @@ on a polar plot, the limiting-Hs curves over the scatter diagram, and the criter
 from __future__ import annotations
 
 import io
+import math
 
 import numpy as np
 
@@ -93,8 +94,8 @@ def governing_plot(result: Operability, names: list[str], title: str) -> bytes:
     from matplotlib.patches import Patch
 
     figure, ax = _figure(7.5, max(2.6, 1.2 + 0.24 * result.headings_deg.size))
-    colours = ListedColormap(["#8ecae6", "#ffb703", "#fb8500", "#219ebc", "#90be6d", "#f28482", "#b5838d",
-                              "#cdb4db"][:max(len(names), 1)])
+    colours = ListedColormap(["#4e79a7", "#f28e2b", "#59a14f", "#e15759", "#b07aa1", "#edc948", "#76b7b2",
+                              "#9c755f"][:max(len(names), 1)])
     ax.pcolormesh(_edges(result.tp), _edges(result.headings_deg), result.governing, cmap=colours,
                   vmin=-0.5, vmax=len(names) - 0.5, shading="flat")
     if result.tp.size * result.headings_deg.size <= 400:
@@ -102,13 +103,13 @@ def governing_plot(result: Operability, names: list[str], title: str) -> bytes:
             for j, tp in enumerate(result.tp):
                 hs = result.limiting_hs_all[i, j]
                 ax.text(tp, heading, "-" if not np.isfinite(hs) else f"{hs:.1f}", ha="center", va="center",
-                        fontsize=6)
+                        fontsize=6, color="white")
     handles = [Patch(color=colours(k), label=name) for k, name in enumerate(names)]
     ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False)
     if result.headings_deg.size <= 24:
         ax.set_yticks(result.headings_deg, labels=[f"{h:g}" for h in result.headings_deg], fontsize=7)
-    if result.tp.size <= 30:
-        ax.set_xticks(result.tp, labels=[f"{t:g}" for t in result.tp], fontsize=7)
+    shown = result.tp[::max(1, int(math.ceil(result.tp.size / 12)))]
+    ax.set_xticks(shown, labels=[f"{t:g}" for t in shown], fontsize=7)
     ax.set_xlabel("peak period Tp (s)")
     ax.set_ylabel("relative heading (deg)")
     ax.set_title(f"{title}: governing criterion and limiting Hs (m)", fontsize=9)

@@ -23,9 +23,10 @@ from marinesim.sea.seastate import SeaState, WaveSystem
 from marinesim.vessel.rao import RaoTable
 from marinesim.vessel.response import Response, Track
 
-TILES, RESOLUTION = 3, 64
-"""The ocean each task synthesises: three cascades of 64^2 components (the response needs far fewer
-components than a picture)."""
+TILES, RESOLUTION = 3, 128
+"""The ocean each task synthesises: three cascades of 128^2 cells (about 10 000 components; 99.9 % of a
+JONSWAP sea's variance). At 64^2 too few distinct frequencies remain (cells on one |k| ring share one):
+a 3 h record's RMS scatters by 10 % from seed to seed, against 4 % here."""
 MAX_ROWS = 2_000_000
 """The longest record a task may synthesise (rows of dt)."""
 

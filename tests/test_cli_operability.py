@@ -1,0 +1,119 @@
+"""``marinesim operability`` end to end, as a user runs it: a vessel that follows the sea over a hand-made
+scatter gives the percentages summed by hand; the shipped crane lift over the shipped North Sea table
+writes its files reproducibly; the time-domain check runs on a real LocalCluster and resumes; bad input is
+one line and exit 2."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pandas as pd
+import pytest
+import xarray as xr
+
+from conftest import ROOT, cli, write
+from marinesim.cli import main
+from test_criteria_spectral import constant_heave
+
+HAND_SCATTER = "# by hand\nhs_m,tp_s,count\n1,6,10\n1,10,20\n2,6,30\n2,10,15\n3,10,25\n"
+"""Cells: Hs 1 m (30 of 100), 2 m (45), 3 m (25)."""
+
+FOLLOWER = """
+[[sea]]
+type = "jonswap"
+hs_m = 2.0
+tp_s = 8.0
+gamma = 3.3
+from_deg = 0.0
+spreading_s = 8.0
+
+[vessel]
+rao = "heave.csv"
+heading_deg = 0.0
+
+[[criteria]]
+name = "heave"
+quantity = "heave_rms_m"
+limit = {limit}
+"""
+
+
+@pytest.fixture
+def follower(tmp_path):
+    """A scenario whose vessel heaves exactly with the sea (heave RAO 1), its limit given."""
+    constant_heave(tmp_path)  # writes tmp_path / "heave.csv"
+    (tmp_path / "site.csv").write_text(HAND_SCATTER)
+    return lambda limit: write(tmp_path, FOLLOWER.format(limit=limit))
+
+
+@pytest.mark.parametrize("limit,expected", [(0.5, 75.0), (0.3, 30.0), (0.2, 0.0), (0.75, 100.0)])
+def test_a_vessel_that_follows_the_sea_is_workable_below_four_times_its_heave_limit(follower, tmp_path, capsys,
+                                                                                       limit, expected):
+    """Limiting Hs = 4 x the heave RMS limit at every Tp and heading, so the operability is the probability of
+    the cells with Hs <= 4 L: 0.5 m -> Hs 2 m -> 30 + 45 of 100; 0.3 -> 1.2 m -> 30; 0.2 -> 0.8 m -> none."""
+    scenario = follower(limit)
+    assert main(["operability", str(scenario), "--scatter", str(tmp_path / "site.csv"), "--out",
+                 str(tmp_path / "out"), "--headings", "0,90,180", "--json"]) == 0
+    result = json.loads(capsys.readouterr().out)
+    assert result["operability_pct"] == {"0": expected, "90": expected, "180": expected}
+    assert result["overall_pct"] == expected
+    with xr.open_dataset(tmp_path / "out" / "operability.nc", engine="scipy") as data:
+        np.testing.assert_allclose(data["limiting_hs_m_all"], 4 * limit, rtol=2e-4)
+
+
+def test_the_crane_lift_over_the_north_sea_writes_the_same_files_twice(tmp_path):
+    args = ["operability", str(ROOT / "configs" / "training" / "crane_lift.toml"), "--scatter",
+            str(ROOT / "configs" / "scatter" / "northern_north_sea.csv"), "--headings", "0:360:30"]
+    first = cli(*args, "--out", str(tmp_path / "a"))
+    assert first.returncode == 0, first.stderr
+    assert "overall" in first.stdout and "governing" in first.stdout
+    assert cli(*args, "--out", str(tmp_path / "b")).returncode == 0
+    for name in ("operability.nc", "summary.csv", "operability_polar.png", "limiting_hs.png", "governing.png"):
+        assert (tmp_path / "a" / name).read_bytes() == (tmp_path / "b" / name).read_bytes(), name
+    table = pd.read_csv(tmp_path / "a" / "summary.csv")
+    with xr.open_dataset(tmp_path / "a" / "operability.nc", engine="scipy") as data:
+        by_heading = table.groupby("heading_deg")["operability_pct"].first()
+        np.testing.assert_allclose(by_heading.values, data["operability_pct"].values, atol=5e-4)
+        head, beam = data["operability_pct"].sel(heading_deg=180.0), data["operability_pct"].sel(heading_deg=90.0)
+        assert head > beam + 10, "the supply vessel rolls in beam seas: lifting is easier head to sea"
+        assert data.attrs["scatter_sha256"] and data.attrs["scenario_sha256"]
+
+
+def test_the_time_domain_check_runs_on_a_cluster_and_resumes(follower, tmp_path, capsys):
+    """Two seeds of two cells at two headings on a LocalCluster of two processes; the follower's heave RMS
+    over each 3 h record must be Hs/4 within the records' scatter, and a second run reopens the same store."""
+    scenario = follower(0.5)
+    args = ["operability", str(scenario), "--scatter", str(tmp_path / "site.csv"), "--out", str(tmp_path / "out"),
+            "--headings", "90,180", "--time-domain", "2", "--cells", "0,4", "--workers", "2", "--quiet"]
+    assert main(args) == 0
+    text = capsys.readouterr().out
+    assert "time-domain check" in text
+    with xr.open_dataset(tmp_path / "out" / "operability.nc", engine="scipy") as data:
+        mean, spectral = data["time_domain_mean"].values, data["spectral_value"].values
+        np.testing.assert_allclose(spectral[..., 0], [[0.25, 0.25], [0.75, 0.75]], rtol=2e-4)
+        np.testing.assert_allclose(mean[..., 0], spectral[..., 0], rtol=0.1)
+    store = tmp_path / "out" / "time_domain.zarr"
+    assert store.is_dir()
+    again = cli(*args[:-1], cwd=tmp_path)
+    assert again.returncode == 0, again.stderr
+
+
+@pytest.mark.parametrize("args,words", [
+    (["--scatter", "missing.csv"], "missing.csv"),
+    (["--scatter", "site.csv", "--headings", "0:360:0"], "--headings"),
+    (["--scatter", "site.csv", "--alpha", "1.5"], "--alpha"),
+    (["--scatter", "site.csv", "--duration-h", "0"], "--duration-h"),
+])
+def test_bad_input_is_one_line_and_exit_2(follower, tmp_path, args, words):
+    scenario = follower(0.5)
+    run = cli("operability", str(scenario), "--out", str(tmp_path / "out"), *args, cwd=tmp_path)
+    assert run.returncode == 2 and words in run.stderr and len(run.stderr.strip().splitlines()) == 1, run.stderr
+    assert "Traceback" not in run.stderr
+
+
+def test_a_scenario_without_criteria_is_refused(tmp_path):
+    (tmp_path / "site.csv").write_text(HAND_SCATTER)
+    run = cli("operability", str(ROOT / "configs" / "default.toml"), "--scatter", str(tmp_path / "site.csv"),
+              "--out", str(tmp_path / "out"))
+    assert run.returncode == 2 and "no [[criteria]]" in run.stderr, run.stderr
