@@ -43,15 +43,17 @@ _REGISTRY: dict[str, Format] = {}
 
 
 def register(fmt: Format) -> Format:
-    """Add ``fmt``; a name or, within its kind, an extension already registered is refused."""
+    """Add ``fmt``; a name already registered is refused, and within its kind an extension already registered
+    unless both formats have a sniffer (their content then tells them apart)."""
     if fmt.kind not in KINDS:
         raise ValueError(f"format {fmt.name!r}: kind must be one of {', '.join(KINDS)}, got {fmt.kind!r}")
     if fmt.name in _REGISTRY:
         raise ValueError(f"format {fmt.name!r} is already registered")
     for other in formats(fmt.kind):
         shared = set(fmt.extensions) & set(other.extensions)
-        if shared:
-            raise ValueError(f"format {fmt.name!r}: {', '.join(sorted(shared))} already read as {other.name!r}")
+        if shared and not (fmt.sniffer and other.sniffer):
+            raise ValueError(f"format {fmt.name!r}: {', '.join(sorted(shared))} already read as {other.name!r} "
+                             f"(an extension may be shared only by formats that both sniff their content)")
     _REGISTRY[fmt.name] = fmt
     return fmt
 
@@ -76,7 +78,8 @@ def get(name: str, kind: str) -> Format:
 
 
 def detect(path: Path, kind: str, what: str | None = None) -> Format:
-    """The format of the file ``path``: by its extension, else by the sniffers on its first bytes.
+    """The format of the file ``path``: by its extension (the sniffers deciding between the formats that share
+    it), else by the sniffers on its first bytes.
 
     :class:`FileFormatError` lists the supported formats when neither decides; ``what`` names the
     file in that message (default: the kind's name, e.g. "RAO"). A path that is not a regular file is
@@ -85,9 +88,16 @@ def detect(path: Path, kind: str, what: str | None = None) -> Format:
     check_file(path)
     candidates = formats(kind)
     suffix = path.suffix.lower()
-    for fmt in candidates:
-        if suffix in fmt.extensions:
-            return fmt
+    by_extension = [fmt for fmt in candidates if suffix in fmt.extensions]
+    if len(by_extension) == 1:
+        return by_extension[0]
+    if by_extension:
+        head = _head(path)
+        for fmt in by_extension:
+            if _function(fmt.sniffer)(head):
+                return fmt
+        raise FileFormatError(path, None, f"a {path.suffix} file, but none of "
+                              + ", ".join(f"{f.name} ({f.description})" for f in by_extension))
     sniffable = [f for f in candidates if f.sniffer]
     if sniffable:
         head = _head(path)
@@ -149,6 +159,10 @@ register(Format("native", "rao", "marinesim table (.csv, .txt, .rao; see marines
 register(Format("wamit-forces", "rao", "WAMIT .1, .3, .hst and .frc side by side: RAOs solved from forces and mass",
                 (".3", ".1", ".hst", ".frc"), "marinesim.vessel.wamit_forces:read_wamit_forces",
                 "marinesim.vessel.wamit_forces:sniff", options=("ulen",)))
+register(Format("hydrostar", "rao", "HydroStar/HAMS .rao motion RAOs (one DOF per file, the six side by side)",
+                (".rao",), "marinesim.vessel.hydrostar:read_hydrostar", "marinesim.vessel.hydrostar:sniff"))
+register(Format("orcaflex", "rao", "OrcaFlex vessel type displacement RAOs (.yml, .yaml)", (".yml", ".yaml"),
+                "marinesim.vessel.orcaflex:read_orcaflex", "marinesim.vessel.orcaflex:sniff"))
 register(Format("gdf", "mesh", "WAMIT low-order panels, .gdf", (".gdf",), "marinesim.hull.gdf:read_gdf_mesh"))
 register(Format("stl", "mesh", "STL, .stl", (".stl",), "marinesim.hull.mesh:read_mesh"))
 register(Format("obj", "mesh", "Wavefront OBJ, .obj", (".obj",), "marinesim.hull.mesh:read_mesh"))

@@ -99,6 +99,9 @@ SAMPLES: dict[str, tuple[Callable[[Path], Path], Callable[[Path, str], None]]] =
     "veres": (lambda folder: S175, check_rao),
     "capytaine": (capytaine_dataset, check_rao),
     "native": (native_table, check_rao),
+    "hydrostar": (lambda folder: ROOT / "tests" / "data" / "hams" / "cylinder" / "Output" / "Hydrostar_format"
+                  / "Motion_3.rao", check_rao),
+    "orcaflex": (lambda folder: ROOT / "tests" / "data" / "orcaflex" / "cylinder_vessel_type.yml", check_rao),
     "gdf": (lambda folder: ROOT / "hulls" / "tanker.gdf", check_tanker_gdf),
     "stl": (lambda folder: WIGLEY, check_wigley),
     "obj": (exported_wigley(".obj"), check_wigley),

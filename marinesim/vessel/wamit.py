@@ -33,20 +33,24 @@ from marinesim.hull.gdf import read_gdf_header
 from marinesim.vessel.wamit_frc import read_frc
 from marinesim.vessel.rao import MAX_ROTATION_RAD_M, MAX_TRANSLATION_M_M, ROTATIONS, RaoTable, make_table
 from marinesim.tokens import parse_float, parse_int, read_text
+from marinesim.vessel.wamit_rows import RIGID_MODES, read_rows
 
-COLUMNS = "PER BETA I MOD PHA RE IM"
 ULEN_RANGE_M = (0.01, 1000.0)
 """WAMIT's length scale (m): 1 or a body dimension, from a tank model's to the largest vessel's."""
 PERIOD_KINDS = {1: "period (s)", 2: "frequency (rad/s)", 3: "wavenumber K*ULEN (infinite depth)",
                 4: "wavenumber nu*ULEN (finite depth)"}
-RIGID_MODES = 6
 MAX_FORCE_LIKE_ROTATION = MAX_ROTATION_RAD_M * ULEN_RANGE_M[1]
 """Largest rotation value a ``.4`` can hold (per A / ULEN): the largest rotation RAO times the largest ULEN."""
 
 
 def read_wamit(path: str | Path, *, ulen: float | None = None, period_kind: int | None = None) -> RaoTable:
-    """Read a WAMIT ``.4`` file; ``ulen`` and ``period_kind`` (IPEROUT) override the files beside it."""
+    """Read a WAMIT ``.4`` file; ``ulen`` and ``period_kind`` (IPEROUT) override the files beside it. HAMS's
+    WAMIT-format ``.4`` (motions over rho g, conjugated) is recognised and read as HAMS wrote it, with a note."""
     path = Path(path)
+    from marinesim.vessel.hydrostar import is_hams_output, read_hams_wamit  # it reads rows as this module does
+
+    if is_hams_output(path):
+        return read_hams_wamit(path)
     settings = Settings.beside(path, ulen=ulen, period_kind=period_kind)
     notes = list(settings.notes)
     rho = _frc_rho(path.with_suffix(".frc"))
@@ -214,107 +218,6 @@ def output_period_kind(cfg: Path, keys: dict[str, tuple[int, str]] | None = None
             number, value = keys[key]
             return parse_int(cfg, number, value, f"{key} (1..4)"), key
     return 1, "default"
-
-
-def read_rows(path: Path, *, header_lines: int = 0, what: str = "mode") -> tuple[
-        np.ndarray, np.ndarray, np.ndarray, list[str]]:
-    """Periods (file order, monotonic), headings (deg, increasing), values (heading, period, 6) and notes
-    of a seven-column WAMIT file (``.4`` or ``.3``); ``header_lines`` (NUMHDR) first lines are skipped, as
-    is a first line that is text."""
-    periods: list[float] = []
-    headings: list[float] = []
-    cells: dict[tuple[int, int], dict[int, complex]] = {}
-    first_line: dict[tuple[int, int], int] = {}
-    ignored: set[int] = set()
-    notes: list[str] = []
-    lines = read_text(path).splitlines()
-    for number, text in enumerate(lines, 1):
-        parts = text.split()
-        if not parts:
-            continue
-        if number <= header_lines or (not periods and not cells and not _is_number(parts[0])
-                                      and number == _first_nonblank(lines)):
-            notes.append(f"header line {number} of {path.name} skipped")
-            continue
-        if len(parts) != 7:
-            raise FileFormatError(path, number, f"expected 7 columns {COLUMNS}, got {len(parts)}")
-        per = parse_float(path, number, parts[0], "PER (period, frequency or wavenumber)")
-        beta = parse_float(path, number, parts[1], "BETA (heading, degrees)")
-        dof = parse_int(path, number, parts[2], f"I ({what} number)")
-        modulus, _, re, im = (parse_float(path, number, parts[k], name)
-                              for k, name in zip(range(3, 7), ("MOD", "PHA", "RE", "IM")))
-        if per <= 0.0:
-            raise FileFormatError(path, number, f"PER must be > 0 (zero and infinite frequency rows "
-                                                f"carry no RAO), got {parts[0]}")
-        if not -360.0 <= beta <= 360.0:
-            raise FileFormatError(path, number, f"BETA must be a heading in -360..360 deg, got {parts[1]}")
-        if dof < 1:
-            raise FileFormatError(path, number, f"I must be a mode number >= 1, got {dof}")
-        if abs(math.hypot(re, im) - modulus) > 1e-4 * max(modulus, 1e-30):
-            raise FileFormatError(path, number, f"MOD {modulus:g} disagrees with |RE + i IM| = "
-                                                f"{math.hypot(re, im):g}")
-        if not periods or per != periods[-1]:
-            if per in periods:
-                raise FileFormatError(path, number, f"PER {parts[0]} appears again after other periods "
-                                                    "(duplicate or unsorted)")
-            if len(periods) >= 2 and (per - periods[-1]) * (periods[-1] - periods[-2]) < 0:
-                raise FileFormatError(path, number, f"PER {parts[0]} breaks the order of the periods "
-                                                    "(must be monotonic)")
-            periods.append(per)
-        p = len(periods) - 1
-        if beta not in headings:
-            if p > 0:
-                raise FileFormatError(path, number, f"BETA {parts[1]} was not among the headings of the "
-                                                    "first period")
-            if headings and beta < headings[-1]:
-                raise FileFormatError(path, number, f"BETA {parts[1]} breaks the order of the headings "
-                                                    "(must increase)")
-            headings.append(beta)
-        if dof > RIGID_MODES:
-            ignored.add(dof)
-            continue
-        h = headings.index(beta)
-        cell = cells.setdefault((p, h), {})
-        first_line.setdefault((p, h), number)
-        if dof in cell:
-            raise FileFormatError(path, number, f"mode {dof} given twice for PER {parts[0]}, BETA {parts[1]}")
-        cell[dof] = complex(re, im)
-    if not periods:
-        raise FileFormatError(path, None, f"no data lines ({COLUMNS})")
-    values = np.zeros((len(headings), len(periods), RIGID_MODES), dtype=complex)
-    for p in range(len(periods)):
-        for h in range(len(headings)):
-            cell = cells.get((p, h))
-            if cell is None:
-                raise FileFormatError(path, None, f"no lines of modes 1-6 for PER {periods[p]:g}, "
-                                                  f"BETA {headings[h]:g}")
-            missing = [m for m in range(1, RIGID_MODES + 1) if m not in cell]
-            if missing:
-                raise FileFormatError(path, first_line[(p, h)], f"modes {missing} missing for "
-                                                                f"PER {periods[p]:g}, BETA {headings[h]:g}")
-            values[h, p] = [cell[m] for m in range(1, RIGID_MODES + 1)]
-    if ignored:
-        notes.append(ignored_modes_note(path, ignored))
-    return np.array(periods), np.array(headings), values, notes
-
-
-def ignored_modes_note(path: Path, modes: set[int]) -> str:
-    """The note for modes above 6 read and left out of ``path``."""
-    listed = ", ".join(str(m) for m in sorted(modes)[:6]) + (", ..." if len(modes) > 6 else "")
-    return (f"{path.name}: modes {listed} (generalised modes or further bodies) ignored; "
-            "marinesim models the rigid-body modes 1-6 of one body")
-
-
-def _is_number(text: str) -> bool:
-    try:
-        float(text.replace("D", "E").replace("d", "e"))
-    except ValueError:
-        return False
-    return True
-
-
-def _first_nonblank(lines: list[str]) -> int:
-    return next((n for n, text in enumerate(lines, 1) if text.strip()), 0)
 
 
 def _gdf_settings(gdf: Path) -> tuple[float, float | None]:

@@ -29,8 +29,8 @@ from marinesim.constants import RHO_SEAWATER
 from marinesim.errors import FileFormatError
 from marinesim.tokens import parse_float, parse_int, read_text
 from marinesim.vessel.rao import DOFS, RaoTable
-from marinesim.vessel.wamit import (RIGID_MODES, Settings, frc_form, ignored_modes_note, read_rows,
-                                    sniff_forces, table_from)
+from marinesim.vessel.wamit import Settings, frc_form, sniff_forces, table_from
+from marinesim.vessel.wamit_rows import RIGID_MODES, ignored_modes_note, read_rows
 from marinesim.vessel.wamit_frc import ForceControl, read_frc
 
 SET = (".1", ".3", ".hst", ".frc")
