@@ -24,7 +24,12 @@ def add(commands: argparse._SubParsersAction) -> None:
     p.add_argument("--plot", type=Path, metavar="PATH", help="draw amplitude and phase against period (PNG)")
     p.add_argument("--headings", default="180,135,90,45,0",
                    help="relative headings to plot, deg, waves towards (180 = head seas; default 180,135,90,45,0)")
-    p.add_argument("--speed-kn", type=float, default=0.0, help="speed for the plot, kn (default 0)")
+    p.add_argument("--speed-kn", type=float,
+                   help="speed, kn: for the plot (default 0), and the one speed --write puts in a .4 (a .4 has no "
+                        "speed column: a table of several speeds needs it)")
+    p.add_argument("--write", type=Path, metavar="PATH",
+                   help="write the table as PATH: .4 (WAMIT numeric output: periods, ULEN 1, phase lead) or .csv "
+                        "(marinesim's native table, every speed), for another program to read")
     p.add_argument("--ulen", type=float, help="WAMIT length scale ULEN, m (default: from the .gdf beside)")
     p.add_argument("--roll-damping-pct", type=float, default=0.0,
                    help="Capytaine: extra linear roll damping, %% of critical (default 0)")
@@ -37,14 +42,23 @@ def handle(args: argparse.Namespace) -> int:
     from marinesim.vessel import read_rao
     from marinesim.vessel.plot import plot_rao
     from marinesim.vessel.summary import format_rao_summary, rao_summary
+    from marinesim.vessel.write import check_extension, write_rao
 
     headings = number_list("--headings", args.headings, "degrees")
+    speed = None if args.speed_kn is None else require_finite("speed", args.speed_kn) * KNOT
+    if args.write:
+        check_extension(args.write)  # before reading a large file
     table = read_rao(args.file, ulen=args.ulen, roll_damping=require_finite("roll damping", args.roll_damping_pct) / 100)
+    notes = write_rao(table, args.write, speed=speed) if args.write else ()  # refused before anything is printed
     report = rao_summary(table)
+    if args.write:
+        report["written"] = {"path": str(args.write), "notes": list(notes)}
     print(json_text(report) if args.json else format_rao_summary(report))
     if args.plot:
         with atomic_path(args.plot) as temp:
-            plot_rao(table, temp, headings, require_finite("speed", args.speed_kn) * KNOT)
+            plot_rao(table, temp, headings, speed or 0.0)
         if not args.json:
             print(f"wrote {args.plot}")
+    if args.write and not args.json:
+        print(f"wrote {args.write}" + "".join(f"\nnote: {note}" for note in notes))
     return 0

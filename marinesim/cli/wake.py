@@ -42,9 +42,10 @@ def handle(args: argparse.Namespace) -> int:
 
     from marinesim.atomic import atomic_path
     from marinesim.constants import KNOT
+    from marinesim.hull import hydrostatics
     from marinesim.progress import reporting
     from marinesim.wake.cache import cached_wake
-    from marinesim.wake.compute import WakeGrid, compute_wake
+    from marinesim.wake.compute import WakeGrid, compute_wake, thin_ship_note
     from marinesim.wake.plot import plot_wake
 
     speeds = number_list("--speed-kn", args.speed_kn, "knots")
@@ -55,6 +56,7 @@ def handle(args: argparse.Namespace) -> int:
             raise ParameterError(f"cannot write {path}: folder {path.resolve().parent} does not exist")
     grid = WakeGrid(args.nx, args.ny, args.spacing)
     hull = hull_from_args(args)
+    thin = thin_ship_note(hydrostatics(hull))  # from the hull, not the wake: a cached wake may predate the note
     reports = []
     for speed_kn in speeds:
         started = time.perf_counter()
@@ -67,6 +69,8 @@ def handle(args: argparse.Namespace) -> int:
                                                   "wave_resistance_coefficient", "kelvin_half_angle_deg",
                                                   "transverse_wavelength_m", "measured_transverse_wavelength_m")}
         report |= {key: wake.info[key] for key in ("validity_note", "grid_note", "measurement_note") if key in wake.info}
+        if thin:
+            report["thin_ship_note"] = thin
         report |= {"seconds": time.perf_counter() - started, "cached": cached,
                    "seconds_computing": sum(wake.timings.values())}  # 0 from the cache; never in a file
         for flag, suffix in ((args.out, ".npz"), (args.plot, ".png")):
@@ -95,6 +99,7 @@ def _format_wake(r: dict, notes: tuple[str, ...]) -> str:
              f"  transverse wavelength {r['transverse_wavelength_m']:.2f} m (2 pi U^2 / g)",
              f"  {r['seconds']:.2f} s" + (" (from the cache)" if r["cached"] else "")]
     lines += [f"  wrote {r[key]}" for key in ("out", "plot") if key in r]
-    lines += [f"note: {r[key]}" for key in ("validity_note", "grid_note", "measurement_note") if r.get(key)]
+    lines += [f"note: {r[key]}" for key in ("thin_ship_note", "validity_note", "grid_note", "measurement_note")
+              if r.get(key)]
     lines += [f"note: {note}" for note in notes]
     return "\n".join(lines)

@@ -23,7 +23,7 @@ from marinesim.atomic import atomic_path
 from marinesim.constants import G, KNOT, RHO_SEAWATER
 from marinesim.errors import (FileFormatError, MarinesimError, ParameterError, require_at_least, require_memory,
                               require_positive)
-from marinesim.hull import Hull, hydrostatics
+from marinesim.hull import Hull, Hydrostatics, hydrostatics
 from marinesim.wake.amplitude import (hull_reach, resistance_from_amplitude, resistance_quadrature, tuck_amplitude,
                                       wavenumber)
 from marinesim.wake.field import wake_spectrum
@@ -33,6 +33,10 @@ CELLS_PER_WAVELENGTH = 16
 AHEAD_CELLS = 8
 MIN_FROUDE = 0.03  # below: waves of a few cm, costly (nodes grow as 1 / Fn^2) and outside thin-ship theory
 QUALITATIVE_BELOW_FROUDE = 0.1  # thin-ship waves of blunt and transom hulls are far too large below
+THIN_SHIP_MAX_BEAM_LENGTH = 0.15
+"""Largest waterline beam / length for which the wave resistance is reported without a caveat (thin_ship_note)."""
+THIN_SHIP_MAX_BLOCK_COEFFICIENT = 0.7
+"""Largest block coefficient V / (L B T) reported without a caveat (:func:`thin_ship_note`)."""
 PLOTTED_ANGLES = 400  # A(theta) samples kept in the result, for plots
 BYTES_PER_CELL = 48  # the field's half and whole (float64), the fade, the float32 copy, the measurements' work
 WAKE_FORMAT = 3
@@ -152,6 +156,39 @@ def compute_wake(hull: Hull, speed_m_s: float, grid: WakeGrid = WakeGrid(), *, r
     kept = slice(None, None, max(1, len(sec) // PLOTTED_ANGLES))
     return Wake(elevation.astype(np.float32), x, y, sec[kept], a[kept], info,
                 {"amplitude": amplitude_seconds, "field": field_seconds})
+
+
+def thin_ship_note(statics: Hydrostatics) -> str | None:
+    """A note when the hull is outside thin-ship validity, else None: waterline beam / length above
+    :data:`THIN_SHIP_MAX_BEAM_LENGTH` or block coefficient ``Cb = V / (L B T)`` (L, B at the waterline, T the
+    draft; m, m^3) above :data:`THIN_SHIP_MAX_BLOCK_COEFFICIENT`. None for a body that does not cross the
+    waterline (no waterline beam to judge by). ``marinesim wake`` reports it from the hull, so it is not kept in
+    the wake's ``info`` (a cached wake would otherwise lack it).
+
+    Source: Michell's integral (Michell 1898, Phil. Mag. (5) 45, 106-123) linearises the hull boundary
+    condition about the centreplane, so it needs hull slopes ``dY/dx`` small: a thin ship, B/L -> 0 (Tuck
+    1989, J. Austral. Math. Soc. Ser. B 30, 365-377, who finds it "quite reasonable as an engineering tool"
+    for slender hulls). No published paper we found gives a sharp limit; the two numbers are marinesim's
+    choice: the hulls thin-ship results are usually compared with in tanks are slender and fine, Wigley's
+    (B/L 0.10, Cb 0.44) and Series 60 (B/L 0.133 at Cb 0.60), so B/L 0.15 is just above them; Cb 0.7 is
+    the usual boundary between moderate and full forms, whose blunt bows (hull slopes of order one) are the
+    opposite of Michell's assumption. Outside them marinesim's own numbers are implausible: Cw 0.057 for a
+    box barge and 0.099 at B/L 0.5, tens of times the order 1e-3 of real hulls.
+    """
+    length, beam, draft = statics.waterline_length_m, statics.waterline_beam_m, statics.draft_m
+    if length <= 0.0 or beam <= 0.0 or draft <= 0.0:
+        return None
+    ratio = beam / length
+    block = statics.volume_m3 / (length * beam * draft)
+    outside = []
+    if ratio > THIN_SHIP_MAX_BEAM_LENGTH:
+        outside.append(f"B/L {ratio:.3g} > {THIN_SHIP_MAX_BEAM_LENGTH:g}")
+    if block > THIN_SHIP_MAX_BLOCK_COEFFICIENT:
+        outside.append(f"block coefficient {block:.3g} > {THIN_SHIP_MAX_BLOCK_COEFFICIENT:g}")
+    if not outside:
+        return None
+    return (f"this hull is outside thin-ship validity ({' and '.join(outside)}): Michell's wave resistance and "
+            "the wake assume a thin, fine hull and may be many times too large; treat them as qualitative")
 
 
 def _bow_fade(x: np.ndarray, bow: float, stern: float) -> np.ndarray:
