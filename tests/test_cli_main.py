@@ -56,6 +56,17 @@ def loading(pid: int, library: str) -> bool:
         return False
 
 
+def test_the_command_line_itself_imports_no_numerics():
+    """``marinesim`` parses its arguments before it loads numpy, scipy or the physics, and loads them with
+    Ctrl-C held (``cli._load``). A command module that imports numpy at its top puts numpy's import outside
+    the hold: a Ctrl-C there ends in numpy's own ImportError traceback (seen: "PyCapsule_Import could not
+    import module datetime"), and every ``--help`` pays for the import."""
+    code = ("import sys, marinesim.cli; print(sorted({m.split('.')[0] for m in sys.modules} & "
+            "{'numpy', 'scipy', 'pandas', 'trimesh', 'xarray', 'moderngl', 'pyglet'}))")
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert result.stdout.strip() == "[]"
+
+
 @pytest.mark.parametrize("after_s", [0.0, 0.2, 0.5])
 def test_ctrl_c_while_the_command_loads_gives_one_line(tmp_path, after_s):
     """Ctrl-C while a command imports what it needs (numpy, scipy, the ocean: the first second or so) used to

@@ -4,15 +4,14 @@ diagram, in the frequency domain, optionally checked in the time domain on Dask.
 from __future__ import annotations
 
 import argparse
+import math
 import sys
 from pathlib import Path
-
-import numpy as np
 
 from marinesim.cli.common import bars, json_text, number_list
 from marinesim.errors import ParameterError
 
-NEEDS = ("marinesim.scenario", "marinesim.study.run")
+NEEDS = ("numpy", "marinesim.scenario", "marinesim.study.run")
 """The modules the command loads before it starts (Ctrl-C is held until they are in)."""
 
 
@@ -43,7 +42,7 @@ def add(commands: argparse._SubParsersAction) -> None:
     p.set_defaults(handler=handle)
 
 
-def headings(text: str) -> np.ndarray:
+def headings(text: str) -> list[float]:
     """``"0:360:15"`` or ``"90,180"`` as degrees; ParameterError otherwise."""
     if ":" in text:
         try:
@@ -52,16 +51,20 @@ def headings(text: str) -> np.ndarray:
             raise ParameterError(f"--headings must be START:STOP:STEP or a comma list, got {text!r}") from None
         if not step > 0 or not stop > start or (stop - start) / step > 360:
             raise ParameterError(f"--headings {text!r}: STEP must be > 0, STOP > START, at most 360 headings")
-        return np.arange(start, stop - 1e-9, step)
-    return np.array(number_list("--headings", text, "degrees"))
+        count = math.ceil((stop - start) / step - 1e-9)
+        return [start + i * step for i in range(count)]
+    return list(number_list("--headings", text, "degrees"))
 
 
 def handle(args: argparse.Namespace) -> int:
+    import numpy as np
+
     from marinesim.progress import reporting
     from marinesim.scenario import load_scenario
     from marinesim.study import run
 
-    study = run.prepare(load_scenario(args.scenario), args.scatter, headings(args.headings), args.duration_h)
+    study = run.prepare(load_scenario(args.scenario), args.scatter, np.array(headings(args.headings)),
+                        args.duration_h)
     log = (lambda line: print(line, file=sys.stderr)) if args.json else print
     estimates, result = run.evaluate(study, args.alpha)
     attrs = run.attributes(study, args.alpha)
@@ -91,6 +94,8 @@ def handle(args: argparse.Namespace) -> int:
 
 def table(study, result) -> list[str]:
     """Operability per heading with the governing criterion where it most often limits."""
+    import numpy as np
+
     lines = [f"{study.scenario.name}: {study.scatter.hs.size} sea states of {study.scatter.source}, "
              f"{result.headings_deg.size} headings",
              f"{'heading':>8}  {'operability':>11}  governing (most of the lost probability)"]
