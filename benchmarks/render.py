@@ -1,14 +1,22 @@
-"""Benchmark: the viewer's frame time, split into simulation, upload and draw (issue 6).
+"""Benchmark: the viewer's frame, with the cascades synthesised on the CPU and on the GPU (issues 6, 23).
 
 The underway default scenario (the WAMIT tanker at 14 kn, so the Kelvin wake is drawn) with
-4 x 256^2 cascades, the wake and, with ``--solver``, the 512^2 local solver, orbit camera, HUD
-on, frames of 1/60 s of simulated time. Each stage is timed with the GPU finished
-(``ctx.finish()``) so that the split is true; the frame time is their sum. Figures are printed
-as milliseconds and as ratios to a baseline measured in the same run: the sky-only full-screen
-pass at the same size (the cheapest frame the window can draw) and the raw inverse FFTs of the
-cascades (the floor of the simulation stage).
+4 x 256^2 cascades, the wake, optionally the 512^2 local solver (``--solver``), orbit camera, HUD on;
+frames of 1/60 s of simulated time, each what the window does per frame: ``Scene.step`` (the
+exercise, the pose, the solver's sub-steps, the cascades) and ``Scene.draw``. Per frame:
 
-Run: ``python benchmarks/render.py [--size 1280x720] [--frames 20] [--solver]``.
+- step CPU: the calling thread's CPU time for ``Scene.step`` (simulation, the cascades' synthesis or
+  its submission, upload), the GPU's work not waited for, and every thread's (the CPU synthesis runs
+  its FFTs on worker threads; a driver or llvmpipe may work on threads of its own);
+- draw CPU: the same for ``Scene.draw``'s submission (on a software renderer, llvmpipe, this thread
+  also runs the vertex shaders; the rest of the GPU's work runs on other threads of the same CPU, so
+  there the wall time says what a frame costs);
+- wall: the same with the GPU's work finished (``ctx.finish()``), i.e. frames/s drawing flat out.
+
+Baselines timed in the same run: one raw pyfftw update of the cascades (the 16 inverse FFTs the CPU
+synthesis does per frame, wall time, every CPU) and the sky-only full-screen pass at the same size.
+
+Run: ``python benchmarks/render.py [--size 1280x720] [--frames 60] [--solver] [--cascades cpu,gpu]``.
 """
 
 from __future__ import annotations
@@ -16,6 +24,7 @@ from __future__ import annotations
 import argparse
 import platform
 import sys
+import tempfile
 import time
 from pathlib import Path
 
@@ -29,6 +38,8 @@ from marinesim.render.renderer import RenderOptions  # noqa: E402
 from marinesim.scenario import load_scenario  # noqa: E402
 from marinesim.sea.fft import InverseFFT2  # noqa: E402
 
+FRAME_S = 1.0 / 60.0
+
 
 def underway(folder: Path) -> Path:
     text = (ROOT / "configs" / "default.toml").read_text().replace("speed_kn = 4.0", "speed_kn = 14.0")
@@ -37,62 +48,83 @@ def underway(folder: Path) -> Path:
     return path
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--size", default="1280x720")
-    parser.add_argument("--frames", type=int, default=20)
-    parser.add_argument("--solver", action="store_true", help="with the 512^2 local solver")
-    args = parser.parse_args()
-    size = parse_size(args.size)
-    import tempfile
-
-    with tempfile.TemporaryDirectory() as folder:
-        scenario = load_scenario(underway(Path(folder)))
-    view = Offscreen(scenario, size, solver="on" if args.solver else "off", options=RenderOptions())
+def frames(view: Offscreen, count: int) -> dict[str, float]:
+    """Median seconds over ``count`` frames, each stepped, drawn and finished: ``step`` and ``draw`` (the
+    calling thread's CPU), ``step_process`` (every thread's CPU during the step) and ``wall``."""
     scene, ctx = view.scene, view.ctx
-    view.go_to(1.0)
-    view.frame()
-    stages = {"simulation": [], "upload": [], "draw": []}
-    for _ in range(args.frames):
-        scene.sim.advance(1.0 / 60.0)
-        times = scene.renderer.update(sync=True)
+    times: dict[str, list[float]] = {"step": [], "step_process": [], "draw": [], "wall": []}
+    for _ in range(count):
+        start_thread, start_process, start = time.thread_time(), time.process_time(), time.perf_counter()
+        scene.step(FRAME_S)
+        stepped_thread, stepped_process = time.thread_time(), time.process_time()
         view.bind()
-        start = time.perf_counter()
-        scene.draw(size)
+        scene.draw(view.size)
+        times["step"].append(stepped_thread - start_thread)
+        times["step_process"].append(stepped_process - start_process)
+        times["draw"].append(time.thread_time() - stepped_thread)
         ctx.finish()
-        stages["simulation"].append(times.simulation)
-        stages["upload"].append(times.upload)
-        stages["draw"].append(time.perf_counter() - start)
-    sky_view = scene.renderer.view(scene.camera.eye(scene.sim.pose()), size)
-    sky = []
-    for _ in range(args.frames):
+        times["wall"].append(time.perf_counter() - start)
+    return {name: float(np.median(values)) for name, values in times.items()}
+
+
+def sky_pass(view: Offscreen, count: int) -> float:
+    """Median seconds of the sky-only pass (the cheapest full-screen frame) at the view's size."""
+    scene, ctx = view.scene, view.ctx
+    sky_view = scene.renderer.view(scene.camera.eye(scene.sim.pose()), view.size)
+    times = []
+    for _ in range(count):
         start = time.perf_counter()
         ctx.clear()
         scene.renderer.sky.draw(sky_view)
         ctx.finish()
-        sky.append(time.perf_counter() - start)
-    ocean = scene.sim.ocean
-    fft = InverseFFT2((len(ocean.tiles), 4, ocean.resolution, ocean.resolution))  # the cascades' transforms
-    raw = []
-    for _ in range(args.frames):
+        times.append(time.perf_counter() - start)
+    return float(np.median(times))
+
+
+def raw_fft(tiles: int, n: int, count: int) -> float:
+    """Median wall seconds of one raw pyfftw update of ``tiles`` cascades (4 transforms of n^2 each)."""
+    fft = InverseFFT2((tiles, 4, n, n))
+    fft()
+    times = []
+    for _ in range(count):
         start = time.perf_counter()
         fft()
-        raw.append(time.perf_counter() - start)
-    median = {name: float(np.median(v)) for name, v in stages.items()}
-    frame = sum(median.values())
-    print(f"machine: {platform.processor() or platform.machine()}, {ctx.info['GL_RENDERER']}")
-    print(f"frame {size[0]}x{size[1]}, {len(scene.sim.ocean.tiles)} x {scene.sim.ocean.resolution}^2 cascades, "
-          f"wake {'on' if scene.sim.wakes() else 'off'}, solver "
-          f"{scene.sim.solver.config.size if scene.sim.solver else 'off'}; median of {args.frames} frames")
-    for name, value in median.items():
-        print(f"  {name:10s} {1000 * value:8.2f} ms")
-    print(f"  frame      {1000 * frame:8.2f} ms  ({1 / frame:.1f} frames/s)")
-    print(f"  draw / sky-only pass        {median['draw'] / np.median(sky):6.1f}  "
-          f"(sky pass {1000 * np.median(sky):.2f} ms)")
-    print(f"  simulation / raw cascade FFTs {median['simulation'] / np.median(raw):6.2f}  "
-          f"(FFTs {1000 * np.median(raw):.2f} ms)")
-    view.release()
+        times.append(time.perf_counter() - start)
+    return float(np.median(times))
 
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--size", default="1280x720")
+    parser.add_argument("--frames", type=int, default=60)
+    parser.add_argument("--solver", action="store_true", help="with the 512^2 local solver")
+    parser.add_argument("--cascades", default="cpu,gpu", help="where the cascades are synthesised, comma list")
+    args = parser.parse_args()
+    size = parse_size(args.size)
+    with tempfile.TemporaryDirectory() as folder:
+        scenario = load_scenario(underway(Path(folder)))
+    rows = []
+    for where in args.cascades.split(","):
+        with Offscreen(scenario, size, solver="on" if args.solver else "off",
+                       options=RenderOptions(cascades=where)) as view:
+            view.go_to(1.0)
+            frames(view, 5)  # warm: shaders compiled, FFTW planned, buffers allocated
+            measured = frames(view, args.frames)
+            sky = sky_pass(view, 10)
+            ocean, sim = view.scene.sim.ocean, view.scene.sim
+            info = view.ctx.info["GL_RENDERER"]
+            solver = f"{sim.solver.config.size}^2" if sim.solver else "off"
+            rows.append((where, measured, sky))
+    fft = raw_fft(len(ocean.tiles), ocean.resolution, args.frames)
+    print(f"machine: {platform.processor() or platform.machine()}, {info}")
+    print(f"frame {size[0]}x{size[1]}, {len(ocean.tiles)} x {ocean.resolution}^2 cascades, wake "
+          f"{'on' if sim.wakes() else 'off'}, solver {solver}, HUD on; median of {args.frames} frames of 1/60 s")
+    print(f"raw pyfftw cascade update {1000 * fft:.2f} ms (baseline)")
+    print(f"{'cascades':>8} {'step CPU ms':>12} {'/ raw FFT':>10} {'all threads':>12} {'draw CPU ms':>12} "
+          f"{'wall ms':>8} {'frames/s':>9} {'wall / sky':>11}")
+    for where, m, sky in rows:
+        print(f"{where:>8} {1000 * m['step']:12.2f} {m['step'] / fft:10.2f} {1000 * m['step_process']:12.2f} "
+              f"{1000 * m['draw']:12.2f} {1000 * m['wall']:8.2f} {1 / m['wall']:9.1f} {m['wall'] / sky:11.1f}")
 
 if __name__ == "__main__":
     main()

@@ -97,6 +97,15 @@ def walkthrough(tmp_path: Path) -> None:
         assert sim.time == before, "paused, the simulation must not move"
         press(key.SPACE, " ")
 
+        viewer.scene.clock.restart()                      # a window drawing 2.5 frames/s at "time x1"
+        for i in range(4):
+            viewer.tick(0.4)
+            viewer.draw(wall_s=1000.0 + 0.4 * i)
+        lines = viewer.scene.hud_lines()
+        clock_line = next(line for line in lines if line.startswith("camera"))
+        assert any(line.startswith("time x1 ") for line in lines)
+        assert "frame 400.0 ms (   2 frames/s)   real time x0.25" in clock_line, clock_line  # 0.1 s a frame
+
         cameras = []
         for symbol, text in ((key._2, "2"), (key.H, "h"), (key._3, "3"), (key.W, "w"), (key._1, "1")):
             press(symbol, text)

@@ -67,13 +67,16 @@ def test_screenshots_are_the_same_bytes_whatever_the_cache(tmp_path):
 def test_headless_hud_has_no_clock_time_and_the_window_keeps_it(gl_context):
     """If this fails, a headless frame shows measured times (so no two renders match), or the live viewer
     lost its frame-time line."""
+    from marinesim.render.clock import FrameClock
     from marinesim.render.offscreen import Offscreen
     from marinesim.scenario import load_scenario
 
     with Offscreen(load_scenario(DEFAULT), (64, 64), solver="off") as view:
         view.frame()
         assert not [line for line in view.scene.hud_lines() if " ms" in line]
-        view.scene.frame_seconds = 0.0167  # what the window sets every tick
+        view.scene.clock = FrameClock()  # what the window gives its scene
+        view.scene.clock.draw(0.0, 0.0)
+        view.scene.clock.draw(0.0167, 0.0167)
         assert "frame  16.7 ms" in view.scene.hud_lines()[-1]
 
 

@@ -10,7 +10,7 @@ from typing import Any
 
 from marinesim.errors import ParameterError, require_finite
 from marinesim.progress import Bar, Reporter
-from marinesim.render import CAMERAS
+from marinesim.render import CAMERAS, CASCADES
 
 
 def json_text(value: Any, indent: int | None = None) -> str:
@@ -71,6 +71,9 @@ def add_view_options(p: argparse.ArgumentParser) -> None:
     g.add_argument("--camera", choices=CAMERAS, default="orbit", help="orbit (default), bridge or free")
     g.add_argument("--solver", choices=("auto", "on", "off"), default="auto",
                    help="the local wave solver around the hull: auto = on with a GPU, off on a software renderer")
+    g.add_argument("--cascades", choices=CASCADES, default="auto",
+                   help="where the ocean's waves are synthesised each frame: auto = gpu with a GPU, cpu (pyfftw) "
+                        "on a software renderer")
     g.add_argument("--no-wake", action="store_true", help="do not draw the Kelvin wake")
 
 
@@ -78,4 +81,4 @@ def render_options(args: argparse.Namespace):
     """The renderer's options from the view options."""
     from marinesim.render.renderer import RenderOptions
 
-    return RenderOptions(wake=not args.no_wake)
+    return RenderOptions(wake=not args.no_wake, cascades=args.cascades)

@@ -98,5 +98,7 @@ def _video(scenario, out_dir: Path, args: argparse.Namespace) -> dict[str, Path]
           f"(camera {args.camera})")
     result = render_video(scenario, out_dir / "video.mp4", seconds, size, video["fps"], args.camera, args.solver,
                           render_options(args), motions=False)
-    print(f"the local wave solver was {'on' if result.solver else 'off (software renderer; --solver on forces it)'}")
+    solver = "on" if result.solver else "off (software renderer; --solver on forces it)"
+    cascades = "GPU" if result.gpu_cascades else "CPU (software renderer; --cascades gpu forces the GPU)"
+    print(f"the local wave solver was {solver}; the ocean's waves were synthesised on the {cascades}")
     return {"video": result.video}

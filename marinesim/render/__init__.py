@@ -2,3 +2,5 @@
 
 CAMERAS = ("orbit", "bridge", "free")
 """The cameras a view can look through: orbiting the vessel, on its bridge, flying free."""
+CASCADES = ("auto", "gpu", "cpu")
+"""Where the ocean's cascades are synthesised each frame (``RenderOptions.cascades``)."""

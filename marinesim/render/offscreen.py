@@ -38,6 +38,7 @@ class VideoResult:
     frames: int
     fps: float
     solver: bool
+    gpu_cascades: bool  # the ocean's waves synthesised on the GPU (else on the CPU)
 
 
 def parse_size(text: str) -> tuple[int, int]:
@@ -152,7 +153,7 @@ def render_video(scenario: Scenario, out: Path, seconds: float = 20.0, size: tup
                     bar.update(1)
         finally:
             writer.close()
-        solver_on = view.solver_on
+        solver_on, gpu_cascades = view.solver_on, view.scene.renderer.synthesis is not None
         if motions and scenario.vessel is not None:
             table = export_motions(view.scene.sim.assembly, out.with_suffix(".csv"), duration_s=seconds).table
-    return VideoResult(out, table, frames, fps, solver_on)
+    return VideoResult(out, table, frames, fps, solver_on, gpu_cascades)

@@ -2,8 +2,9 @@
 
 The renderer composes the layers of :mod:`marinesim.render.layers`, each owning its GL resources.
 Per frame, :meth:`Renderer.update` brings the layers that change with time up to the simulation's
-time (the cascades' fields uploaded with mipmaps, then the foam's compute pass; the local solver,
-which the simulation steps, and the wakes are read as they are when drawn) and :meth:`Renderer.draw`
+time: the cascades' fields, synthesised on the GPU (:mod:`~marinesim.render.layers.synthesis`) or by the
+ocean's FFTs on the CPU and uploaded, then their mipmaps and the foam's compute pass; the local solver,
+which the simulation steps, and the wakes are read as they are when drawn and :meth:`Renderer.draw`
 draws a camera's view into the bound framebuffer:
 
 1. the sky (a full-screen pass: analytic sky, sun, haze below the horizon);
@@ -18,12 +19,14 @@ Everything is in the Earth frame (m); the shaders state their inputs' units.
 from __future__ import annotations
 
 import math
-import time
 from dataclasses import dataclass
 
 import moderngl
 
 from marinesim.angles import compass_to_math
+from marinesim.errors import ParameterError
+from marinesim.gl import is_software
+from marinesim.render import CASCADES
 from marinesim.render.camera import Eye
 from marinesim.render.layers.base import View
 from marinesim.render.layers.cascades import CascadeLayer
@@ -31,6 +34,7 @@ from marinesim.render.layers.foam import FoamLayer
 from marinesim.render.layers.hull_mask import HullMaskLayer
 from marinesim.render.layers.ocean import OceanLayer
 from marinesim.render.layers.sky import SkyLayer
+from marinesim.render.layers.synthesis import CascadeSynthesis
 from marinesim.render.layers.solver_field import SolverFieldLayer
 from marinesim.render.layers.vessel import VesselLayer, drawn_mesh
 from marinesim.render.layers.wake import WakeLayer
@@ -40,9 +44,11 @@ from marinesim.session.timeline import Simulation
 @dataclass(frozen=True)
 class RenderOptions:
     """What to draw: the Kelvin wake, foam, the vessel, the local solver (``solver_size`` cells a side), the sun
-    (compass azimuth and elevation, deg) and the visibility (m) that sets the haze. ``reproducible``: the
-    ocean's fields by numpy.fft, the same pixels whatever the FFTW plans in the cache (headless renders;
-    about 20 ms more a frame at 4 x 256^2, so not the window's)."""
+    (compass azimuth and elevation, deg) and the visibility (m) that sets the haze. ``cascades``: where the
+    ocean's fields are synthesised each frame, ``"gpu"`` (compute shaders), ``"cpu"`` (the ocean's FFTs,
+    uploaded) or ``"auto"`` (the GPU where there is one; the CPU on a software renderer, where the compute
+    shaders run 10x slower than FFTW). ``reproducible``: the CPU's fields by numpy.fft, the same pixels
+    whatever the FFTW plans in the cache (headless renders; about 20 ms more a frame at 4 x 256^2)."""
 
     wake: bool = True
     foam: bool = True
@@ -52,6 +58,7 @@ class RenderOptions:
     sun_azimuth_deg: float = 200.0
     sun_elevation_deg: float = 30.0
     visibility_m: float = 15_000.0
+    cascades: str = "auto"
     reproducible: bool = False
 
     def sun(self) -> tuple[float, float, float]:
@@ -59,14 +66,11 @@ class RenderOptions:
         return (math.cos(elevation) * math.cos(azimuth), math.cos(elevation) * math.sin(azimuth), math.sin(elevation))
 
 
-@dataclass(frozen=True)
-class FrameTimes:
-    """Seconds spent in the last update and draw: simulation (the ocean's FFTs),
-    upload (textures, mipmaps, foam pass) and draw. GPU work is asynchronous unless ``sync`` was asked."""
-
-    simulation: float
-    upload: float
-    draw: float = 0.0
+def gpu_cascades(ctx: moderngl.Context, choice: str) -> bool:
+    """Whether the cascades are synthesised on the GPU for ``choice`` (one of :data:`CASCADES`) on ``ctx``."""
+    if choice not in CASCADES:
+        raise ParameterError(f"cascades must be one of {', '.join(CASCADES)}, got {choice!r}")
+    return choice == "gpu" or (choice == "auto" and not is_software(ctx))
 
 
 class Renderer:
@@ -76,11 +80,13 @@ class Renderer:
     def __init__(self, ctx: moderngl.Context, sim: Simulation, options: RenderOptions = RenderOptions()) -> None:
         self.ctx, self.sim, self.options = ctx, sim, options
         self._last_time: float | None = None
-        self.times = FrameTimes(0.0, 0.0)
         tiles, n = sim.ocean.tiles, sim.ocean.resolution
         self.mesh = drawn_mesh(sim)
         self.sky = SkyLayer(ctx)
         self.cascades = CascadeLayer(ctx, len(tiles), n)
+        on_gpu = gpu_cascades(ctx, options.cascades)
+        self.synthesis = CascadeSynthesis(ctx, sim.ocean, self.cascades) if on_gpu else None
+        """The GPU synthesis of the cascades, or None: the ocean's FFTs on the CPU, uploaded."""
         self.foam = FoamLayer(ctx, len(tiles), n)
         self.wake = WakeLayer(ctx, sim, shown=options.wake)
         self.solver_field = SolverFieldLayer(ctx, sim)
@@ -88,32 +94,25 @@ class Renderer:
         self.ocean = OceanLayer(ctx, tiles, n, foam_on=options.foam)
         self.vessel = VesselLayer(ctx, self.mesh, shown=options.vessel)
 
-    def update(self, sync: bool = False) -> FrameTimes:
-        """Bring the GPU to the simulation's time: fields and foam. ``sync`` waits for the GPU
-        after each stage so that the times split truly (for benchmarks)."""
+    def update(self) -> None:
+        """Bring the GPU to the simulation's time: the cascades' fields, their mipmaps and the foam."""
         t = self.sim.time
         dt = 0.0 if self._last_time is None else max(t - self._last_time, 0.0)
         self._last_time = t
-        start = time.perf_counter()
-        fields = self.sim.ocean.fields(t, self.options.reproducible)
-        if sync:
-            self.ctx.finish()
-        simulated = time.perf_counter()
-        self.cascades.upload(fields)
+        if self.synthesis is not None:
+            self.synthesis.run(t)
+            self.cascades.build_mipmaps()
+        else:
+            self.cascades.upload(self.sim.ocean.fields(t, self.options.reproducible))
         self.foam.update(self.cascades, dt)
-        if sync:
-            self.ctx.finish()
-        self.times = FrameTimes(simulated - start, time.perf_counter() - simulated)
-        return self.times
 
     def view(self, eye: Eye, size: tuple[int, int]) -> View:
         """The view of ``eye`` into a target of ``size`` (w, h) px, with this renderer's sun and haze."""
         width, height = size
         return View(eye, eye.view_projection(width / height), self.options.sun(), self.options.visibility_m)
 
-    def draw(self, eye: Eye, size: tuple[int, int], sync: bool = False) -> float:
-        """Draw the view of ``eye`` into the bound framebuffer of ``size`` (w, h) px; returns seconds."""
-        start = time.perf_counter()
+    def draw(self, eye: Eye, size: tuple[int, int]) -> None:
+        """Draw the view of ``eye`` into the bound framebuffer of ``size`` (w, h) px."""
         view = self.view(eye, size)
         self.ctx.enable_only(moderngl.DEPTH_TEST)
         self.ctx.clear(0.0, 0.0, 0.0, 1.0, depth=1.0)
@@ -121,13 +120,10 @@ class Renderer:
         pose = self.sim.pose()
         self.ocean.draw(view, pose, (self.cascades, self.foam, self.wake, self.solver_field, self.hull_mask))
         self.vessel.draw(view, pose)
-        if sync:
-            self.ctx.finish()
-        seconds = time.perf_counter() - start
-        self.times = FrameTimes(self.times.simulation, self.times.upload, seconds)
-        return seconds
 
     def release(self) -> None:
+        if self.synthesis is not None:
+            self.synthesis.release()
         for layer in (self.sky, self.cascades, self.foam, self.wake, self.solver_field, self.hull_mask, self.ocean,
                       self.vessel):
             layer.release()

@@ -18,6 +18,7 @@ from marinesim.errors import ParameterError
 from marinesim.gl import is_software
 from marinesim.render import CAMERAS
 from marinesim.render.camera import BridgeCamera, FreeCamera, OrbitCamera
+from marinesim.render.clock import FrameClock
 from marinesim.render.hud import ALARM_COLOR, LEVEL_COLORS, Banner, Hud, Slider, StripHistory
 from marinesim.render.renderer import Renderer, RenderOptions
 from marinesim.scenario import Scenario
@@ -70,8 +71,8 @@ class Scene:
         self.camera_name = camera
         self.history = StripHistory([name for name, _, _ in CHARTED])
         self._next_sample = 0.0
-        self.frame_seconds: float | None = None
-        """The window's last frame time (s), shown with the renderer's timings; None (a headless render):
+        self.clock: FrameClock | None = None
+        """The window's frame clock (measured frame time and real-time factor); None (a headless render):
         no clock time in the picture, so that the same scenario gives the same pixels."""
         self.status: list[str] = []
         self.replay: Replay | None = None
@@ -166,10 +167,8 @@ class Scene:
             lines.append(f"roll {math.degrees(m[3]):+6.2f}  pitch {math.degrees(m[4]):+6.2f}  "
                          f"yaw {math.degrees(m[5]):+6.2f} deg")
         line = f"camera {self.camera_name}"
-        if self.frame_seconds is not None:
-            times = self.renderer.times
-            line += (f"   frame {1000 * self.frame_seconds:5.1f} ms (sim {1000 * times.simulation:4.1f}, "
-                     f"upload {1000 * times.upload:4.1f}, draw {1000 * times.draw:4.1f})")
+        if self.clock is not None:
+            line += f"   {self.clock.line()}"
         return lines + [line] + self.status
 
     def release(self) -> None:

@@ -15,6 +15,7 @@ from pathlib import Path
 
 from marinesim.errors import MarinesimError
 from marinesim.gl import GL_VERSION, GraphicsError
+from marinesim.render.clock import FrameClock
 from marinesim.render.controls import HELP, Controls
 from marinesim.render.renderer import RenderOptions
 from marinesim.render.scene import Scene, solver_wanted
@@ -118,6 +119,7 @@ class Viewer:
 
     def _new_scene(self) -> Scene:
         scene = Scene(*self._scene_args, log=print)
+        scene.clock = FrameClock()
         if self.replay_log is not None:
             scene.replay = Replay(scene.exercise, self.replay_log)
         return scene
@@ -146,7 +148,6 @@ class Viewer:
         wall = now - self._last if dt is None else dt
         self._last = now
         self.controls.frame(wall, self.held)
-        self.scene.frame_seconds = wall
         alarms = len(self.scene.exercise.alarms)
         if alarms > self._alarms_heard and self.scene.replay is None:
             self._sound()
@@ -163,7 +164,9 @@ class Viewer:
         except Exception:  # noqa: BLE001 (no audio driver, no device: the alarm is still shown)
             pass
 
-    def draw(self) -> None:
+    def draw(self, wall_s: float | None = None) -> None:
+        """Draw the frame; the clock notes it at ``wall_s`` (s; default now)."""
+        self.scene.clock.draw(time.perf_counter() if wall_s is None else wall_s, self.scene.sim.time)
         self.ctx.screen.use()
         size = self.window.get_framebuffer_size()
         self.ctx.screen.viewport = (0, 0, *size)

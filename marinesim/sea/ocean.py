@@ -330,16 +330,44 @@ class Ocean:
         Only the newest states stay in memory, so live changes do not add up: a time before the
         last two ramps costs recomputing its states (``cell_variances``), to the same bits.
         """
+        before, after, weight = self.blend(t)
+        state = self._states.get(after, len(self._ramps))
+        if before == after:
+            return state
+        earlier = self._states.get(before, len(self._ramps))
+        return earlier + weight * (state - earlier)
+
+    def blend(self, t: float) -> tuple[int, int, float]:
+        """The amplitudes at ``t`` (s) as states: ``(before, after, weight)``, the amplitudes being
+        ``state[before] + weight (state[after] - state[before])``; a state is the amplitudes after that many
+        ramps, and ``before == after`` (weight 0) outside a ramp."""
         started = sum(1 for ramp in self._ramps if t > ramp.start)
-        after = self._states.get(started, len(self._ramps))
         if started == 0:
-            return after
+            return 0, 0, 0.0
         ramp = self._ramps[started - 1]
         s = (t - ramp.start) / ramp.duration
         if s >= 1.0:
-            return after
-        before = self._states.get(started - 1, len(self._ramps))
-        return before + smoothstep(s) * (after - before)
+            return started, started, 0.0
+        return started - 1, started, float(smoothstep(s))
+
+    def spectrum_state(self, state: int) -> np.ndarray:
+        """The cosine and sine parts of every cell's ``C[q]`` (see :meth:`_half_amplitudes`) after ``state`` ramps,
+        on the full grid (mirror cells ``C[-q] = conj(C[q])`` included): float32 (tiles, N, N, 4) of
+        ``(even.real, even.imag, odd.real, odd.imag)``, m. What the GPU synthesis takes at a sea change."""
+        amplitude = self._states.get(state, len(self._ramps))
+        plus, minus = 0.5 * mirrored(amplitude), 0.5 * np.conj(amplitude)
+        even, odd = plus + minus, 1j * (plus - minus)
+        return np.stack([even.real, even.imag, odd.real, odd.imag], axis=-1).astype(np.float32)
+
+    @property
+    def states(self) -> int:
+        """States so far: the initial sea and one after each ramp."""
+        return len(self._ramps) + 1
+
+    def grid_omega(self) -> np.ndarray:
+        """Circular frequency ``w(|q|)`` of every cell of every tile (rad/s), float64 (tiles, N, N)."""
+        return np.stack([omega_from_k(np.hypot(*tile.wavenumbers()), self.sea.depth, self.sea.g)
+                         for tile in self.tiles])
 
     def _settled(self, t: float) -> bool:
         """Whether ``t`` (s) is after the last ramp (or there is none): the amplitudes no longer change."""

@@ -2,7 +2,7 @@
 
 Per sub-step (shaders/): the hull is drawn into a float texture of displaced depth
 (``hull_depth.vert/.frag``, additive blending); then five compute passes: FFT of the rows with the
-depth added (``solver_fft.comp`` ADD_DEPTH), FFT of the columns, the rotation in k-space
+depth added (``fft.comp`` ADD_DEPTH), FFT of the columns, the rotation in k-space
 (``solver_rotate.comp``), inverse FFT of the columns, inverse FFT of the rows with the depth taken
 off, the sponge/obstacle factor and the non-finite check (FINISH). Scrolling is
 ``solver_shift.comp``. The state stays on the GPU; :attr:`GpuSolver.height_texture` is what the
@@ -44,9 +44,9 @@ class GpuSolver(LocalSolver):
         ctx, n = self.ctx, self.config.size
         threads = min(n // 2, MAX_THREADS)
         fft = {"SIZE": f"{n}u", "THREADS": threads}
-        self._fft = ctx.compute_shader(shader_source("solver_fft.comp", **fft))
-        self._fft_in = ctx.compute_shader(shader_source("solver_fft.comp", ADD_DEPTH=1, **fft))
-        self._fft_out = ctx.compute_shader(shader_source("solver_fft.comp", FINISH=1, **fft))
+        self._fft = ctx.compute_shader(shader_source("fft.comp", **fft))
+        self._fft_in = ctx.compute_shader(shader_source("fft.comp", ADD_DEPTH=1, **fft))
+        self._fft_out = ctx.compute_shader(shader_source("fft.comp", FINISH=1, **fft))
         self._rotate = ctx.compute_shader(shader_source("solver_rotate.comp", SIZE=f"{n}u"))
         self._shift_cs = ctx.compute_shader(shader_source("solver_shift.comp", SIZE=n))
         self._raster = ctx.program(vertex_shader=shader_source("hull_depth.vert"),
@@ -106,7 +106,9 @@ class GpuSolver(LocalSolver):
         self._twiddle.bind_to_storage_buffer(2)
         shader["line_stride"].value = n if rows else 1
         shader["element_stride"].value = 1 if rows else n
+        shader["batch_stride"].value = 0
         shader["inverse"].value = inverse
+        shader["scale"].value = 1.0 / n if inverse else 1.0
         shader.run(n)
         self.ctx.memory_barrier()
 

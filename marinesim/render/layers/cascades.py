@@ -1,5 +1,6 @@
 """The ocean's cascades on the GPU: each tile's displacement, height and Jacobian, and its slopes,
-as texture arrays with mipmaps (one layer per tile)."""
+as texture arrays with mipmaps (one layer per tile), written by the GPU synthesis
+(:mod:`~marinesim.render.layers.synthesis`) or uploaded from the CPU's fields."""
 
 from __future__ import annotations
 
@@ -33,6 +34,10 @@ class CascadeLayer:
             slopes[i, ..., 0], slopes[i, ..., 1] = f.slope_x, f.slope_y
         self.fields.write(packed)  # buffer protocol: no copy
         self.slopes.write(slopes)
+        self.build_mipmaps()
+
+    def build_mipmaps(self) -> None:
+        """The mip levels of both arrays from their level 0 (on the GPU)."""
         self.fields.build_mipmaps()
         self.slopes.build_mipmaps()
 

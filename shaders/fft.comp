@@ -1,7 +1,9 @@
 #version 430
-// One pass of a 2-D FFT: a radix-2 Stockham FFT of every row (or every column) of a SIZE x SIZE
-// complex field, one work group per line, the line held in shared memory (marinesim/solver/gpu.py).
-// Defines: SIZE (power of two), THREADS, and optionally
+// One pass of a 2-D FFT: a radix-2 Stockham FFT of every row (or every column) of SIZE x SIZE complex
+// fields, one work group per line (gl_WorkGroupID.x) and field (gl_WorkGroupID.y, fields batch_stride
+// apart), the line held in shared memory. The one FFT of the GPU side: the local solver's transforms
+// (marinesim/solver/gpu.py) and the ocean's cascades (marinesim/render/layers/synthesis.py).
+// Defines: SIZE (power of two), THREADS, and optionally (the solver's, one field)
 //   ADD_DEPTH: add the displaced depth to the real part while loading (u = h + d, first pass),
 //   FINISH:    on storing, h = u - d, both fields times the sponge/obstacle factor, non-finite
 //              values zeroed and counted, h also written to the height image (last pass).
@@ -21,7 +23,9 @@ layout(r32f, binding = 1) uniform writeonly image2D height;               // h, 
 
 uniform uint line_stride;     // between lines: SIZE for rows, 1 for columns
 uniform uint element_stride;  // along a line: 1 for rows, SIZE for columns
-uniform bool inverse;         // conjugate twiddles and scale by 1 / SIZE
+uniform uint batch_stride;    // between fields (SIZE * SIZE), 0 for one field
+uniform bool inverse;         // conjugate twiddles: exp(+2 pi i n m / SIZE)
+uniform float scale;          // every output times this (1 / SIZE per pass for a normalised inverse)
 
 shared vec2 line[2][SIZE];
 
@@ -30,7 +34,7 @@ vec2 cmul(vec2 a, vec2 b) {
 }
 
 void main() {
-    uint first = gl_WorkGroupID.x * line_stride;
+    uint first = gl_WorkGroupID.y * batch_stride + gl_WorkGroupID.x * line_stride;
     for (uint i = gl_LocalInvocationID.x; i < SIZE; i += THREADS) {
         vec2 value = source[first + i * element_stride];
 #ifdef ADD_DEPTH
@@ -62,7 +66,6 @@ void main() {
         shift += 1u;
     }
 
-    float scale = inverse ? 1.0 / float(SIZE) : 1.0;
     for (uint i = gl_LocalInvocationID.x; i < SIZE; i += THREADS) {
         uint index = first + i * element_stride;
         vec2 value = line[from][i] * scale;
