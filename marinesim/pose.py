@@ -2,8 +2,8 @@
 
 Roll about body x, pitch about y (positive bow down), yaw about z (positive bow to port). A body
 point ``p`` (m, body frame) is at ``track + Rz(heading) (motion_xyz + R p)`` in the Earth frame
-(x east, y north, z up). :func:`body_rotation` is the matrix (through scipy's rotations: intrinsic
-z-y-x Euler angles are exactly Rz Ry Rx); :class:`RotationKinematics` applies R with its exact first
+(x east, y north, z up). :func:`body_rotation` is the matrix written out (scipy's intrinsic z-y-x
+Euler rotation is the same, tests/test_pose.py); :class:`RotationKinematics` applies R with its exact first
 and second time derivatives, per time step, for the velocities and accelerations of points on board.
 """
 
@@ -13,7 +13,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.spatial.transform import Rotation
 
 
 def rotation_y(angle: float) -> np.ndarray:
@@ -24,7 +23,11 @@ def rotation_y(angle: float) -> np.ndarray:
 
 def body_rotation(roll: float, pitch: float, yaw: float) -> np.ndarray:
     """``R = Rz(yaw) Ry(pitch) Rx(roll)`` (3, 3): body vectors to the steady vessel frame (angles in rad)."""
-    return Rotation.from_euler("ZYX", [yaw, pitch, roll]).as_matrix()
+    cr, sr, cp, sp = math.cos(roll), math.sin(roll), math.cos(pitch), math.sin(pitch)
+    cy, sy = math.cos(yaw), math.sin(yaw)
+    return np.array([[cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
+                     [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
+                     [-sp, cp * sr, cp * cr]])
 
 
 @dataclass(frozen=True)
@@ -52,11 +55,11 @@ class Pose:
 
     def matrix(self) -> np.ndarray:
         """4 x 4 transform of body-frame points (m) to the E frame: ``[Rz(heading) R, t; 0 1]``."""
-        roll, pitch, yaw = self.motion[3:]
-        heading = Rotation.from_euler("Z", self.heading).as_matrix()
+        surge, sway, heave, roll, pitch, yaw = self.motion
+        c, s = math.cos(self.heading), math.sin(self.heading)
         out = np.eye(4)
-        out[:3, :3] = heading @ body_rotation(roll, pitch, yaw)
-        out[:3, 3] = heading @ np.array(self.motion[:3]) + np.array([self.x, self.y, 0.0])
+        out[:3, :3] = body_rotation(roll, pitch, self.heading + yaw)  # Rz(heading) Rz(yaw) = Rz(heading + yaw)
+        out[:3, 3] = (self.x + c * surge - s * sway, self.y + s * surge + c * sway, heave)
         return out
 
     def world(self, body: np.ndarray) -> np.ndarray:

@@ -4,7 +4,7 @@
 //   C[q] = even cos(w t) + odd sin(w t),   even, odd blended between two sea states by u_weight,
 // times the four packing multipliers (height + i dDx/dy, Dx + i Dy, slopes, 1 + dDx/dx + i(1 + dDy/dy)),
 // written as the four transforms' inputs [tile][transform][iy][ix]. The phase w t is reduced to
-// [0, 2 pi) in double precision, so a long run keeps float32 trigonometry exact.
+// [-pi, pi] in double precision, so a long run keeps float32 trigonometry exact.
 // Defines: SIZE (cells a side, power of two), TILES.
 layout(local_size_x = 16, local_size_y = 16) in;
 
@@ -29,7 +29,7 @@ void main() {
     uint cell = (at.z * SIZE + at.y) * SIZE + at.x;
     vec4 state = before[cell] + u_weight * (after[cell] - before[cell]);
     double phase = omega[cell] * u_time;
-    float p = float(phase - floor(phase / TWO_PI) * TWO_PI);
+    float p = float(phase - round(phase / TWO_PI) * TWO_PI);  // [-pi, pi]: where GPUs' sin and cos are exact
     vec2 c = state.xy * cos(p) + state.zw * sin(p);
 
     ivec2 n = ivec2(at.xy) - ivec2(greaterThanEqual(at.xy, uvec2(SIZE / 2))) * int(SIZE);  // fftfreq order

@@ -29,8 +29,13 @@ def rz(a):
 
 @pytest.mark.parametrize("roll, pitch, yaw", [(0.1, 0.0, 0.0), (0.0, 0.2, 0.0), (0.0, 0.0, 0.3), (0.3, -0.2, 0.7)])
 def test_body_rotation_is_rz_ry_rx_in_that_order(roll, pitch, yaw):
-    """scipy's intrinsic z-y-x Euler angles give exactly Rz(yaw) Ry(pitch) Rx(roll), not the reverse order."""
+    """The written-out matrix is Rz(yaw) Ry(pitch) Rx(roll) (not the reverse order), and so is scipy's
+    intrinsic z-y-x Euler rotation, a second method."""
+    from scipy.spatial.transform import Rotation
+
     assert body_rotation(roll, pitch, yaw) == pytest.approx(rz(yaw) @ ry(pitch) @ rx(roll), abs=1e-14)
+    assert body_rotation(roll, pitch, yaw) == pytest.approx(
+        Rotation.from_euler("ZYX", [yaw, pitch, roll]).as_matrix(), abs=1e-14)
     assert rotation_y(pitch) == pytest.approx(ry(pitch), abs=1e-15)
 
 

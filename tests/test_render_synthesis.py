@@ -103,7 +103,8 @@ def test_a_frame_drawn_from_gpu_cascades_is_the_frame_drawn_from_the_cpus(gl_con
     scenario = load_scenario(DEFAULT)
     frames = {}
     for where in ("cpu", "gpu"):
-        with Offscreen(scenario, (160, 90), solver="off", options=RenderOptions(cascades=where, reproducible=True)) as view:
+        options = RenderOptions(cascades=where, reproducible=True)
+        with Offscreen(scenario, (160, 90), solver="off", options=options) as view:
             assert (view.scene.renderer.synthesis is not None) == (where == "gpu")
             view.go_to(3.0)
             frames[where] = view.frame(hud=False).astype(int)

@@ -12,7 +12,7 @@ from marinesim.hull.mesh import load_hull
 from marinesim.hull.shapes import wigley_hull
 from marinesim.pose import Pose
 from marinesim.solver import SolverConfig
-from marinesim.solver.footprint import displaced_depth, hull_triangles
+from marinesim.solver.footprint import displaced_depth, hull_triangles, to_grid
 from marinesim.solver.gpu import GpuSolver
 
 
@@ -31,11 +31,12 @@ def test_the_displaced_depth_holds_the_hulls_volume_in_any_pose(ctx):
     for heading in (0.0, 0.5, 2.0):
         pose = Pose(0.3, -0.2, heading)
         gpu = GpuSolver(config, hull, pose, ctx=ctx)
-        reference = displaced_depth(hull_triangles(hull, [(pose, 1.0)], gpu.origin, config.cell_m), config.size)
+        placed = [(to_grid(pose, gpu.origin, config.cell_m), 1.0)]
+        reference = displaced_depth(hull_triangles(hull, placed), config.size)
         assert np.abs(gpu.depth - reference).max() <= 1e-4 * reference.max()
         assert reference.sum() * config.cell_m ** 2 == pytest.approx(statics.volume_m3, rel=0.005)
         sunk = Pose(0.3, -0.2, heading, (0.0, 0.0, -0.1, 0.0, 0.0, 0.0))
-        deeper = displaced_depth(hull_triangles(hull, [(sunk, 1.0)], gpu.origin, config.cell_m), config.size)
+        deeper = displaced_depth(hull_triangles(hull, [(to_grid(sunk, gpu.origin, config.cell_m), 1.0)]), config.size)
         added = (deeper.sum() - reference.sum()) * config.cell_m ** 2
         assert added == pytest.approx(0.1 * statics.waterplane_area_m2, rel=0.03)
         gpu.release()

@@ -10,9 +10,11 @@ which is an orthographic render from above with additive blending, one fragment 
 A wetted-surface-only mesh (a WAMIT .gdf, open at the waterline) gives the same: its missing lid
 lies at z >= 0 and would add nothing.
 
-The GPU rasterises; :func:`displaced_depth` is the same render in NumPy. Both see the same vertex
-positions, snapped here to 1/SUBPIXEL of a cell (the rasteriser's own sub-pixel grid), and the
-NumPy coverage test is exact integer arithmetic on them, so the two cover the same cells. A cell
+The GPU rasterises; :func:`displaced_depth` is the same render in NumPy. Both place the hull's body
+vertices with the same (4, 4) map in double precision (:func:`to_grid`; on the GPU in the vertex
+shader, so a sub-step uploads a matrix, not the mesh) and snap them to 1/SUBPIXEL of a cell (the
+rasteriser's own sub-pixel grid); the NumPy coverage test is exact integer arithmetic on them, so
+the two cover the same cells (a snap could differ only at an exact tie, in the last bit). A cell
 centre exactly on an edge shared by two faces is given to exactly one (a top-left rule); the
 GPU's own tie rule may pick the other, which changes nothing because the two faces meet there.
 """
@@ -28,50 +30,58 @@ from marinesim.pose import Pose
 from marinesim.solver.spectral import SUBPIXEL
 
 
+Placement = tuple[np.ndarray, float]
+"""The hull in one pose on the grid: the (4, 4) map of :func:`to_grid` and the pose's weight (+1, or -1 for a
+pose whose depth is subtracted)."""
+
+
+def to_grid(pose: Pose, origin: tuple[float, float], cell: float) -> np.ndarray:
+    """(4, 4) float64: a body point (m) in ``pose`` to ``(x, y, z, 1)``, x and y in grid units times SUBPIXEL
+    on the grid whose corner (0, 0) is at ``origin`` (m, E frame) with cells of ``cell`` m, z the world z (m).
+    Snapping x and y to integers (round half to even) gives the corners both renders use."""
+    scale = np.diag([SUBPIXEL / cell, SUBPIXEL / cell, 1.0, 1.0])
+    scale[:2, 3] = -np.asarray(origin, float) * SUBPIXEL / cell
+    return scale @ pose.matrix()
+
+
 @dataclass(frozen=True)
 class Triangles:
-    """Faces ready to rasterise: corners in grid units snapped to 1/SUBPIXEL (integers), their
-    world z (m), and a weight per face (+1, or -1 for a pose whose depth is subtracted)."""
+    """Faces ready to rasterise in NumPy, indexed: corners in grid units snapped to 1/SUBPIXEL (integers),
+    their world z (m) and the weight of the pose they belong to, and the faces as three corner indices."""
 
-    xy: np.ndarray  # (t, 3, 2) int64, grid units * SUBPIXEL; cell (i, j) is centred at (i + 1/2, j + 1/2)
-    z: np.ndarray  # (t, 3) m
-    weight: np.ndarray  # (t,)
-
-    def vertex_data(self) -> np.ndarray:
-        """(3 t, 4) float32 rows ``x, y, z, weight`` per corner, x and y in cells (exact in float32)."""
-        t = len(self.z)
-        rows = np.empty((t, 3, 4), dtype=np.float32)
-        rows[..., :2] = self.xy / SUBPIXEL
-        rows[..., 2] = self.z
-        rows[..., 3] = self.weight[:, None]
-        return rows.reshape(-1, 4)
+    xy: np.ndarray  # (v, 2) int64, grid units * SUBPIXEL; cell (i, j) is centred at (i + 1/2, j + 1/2)
+    z: np.ndarray  # (v,) m
+    weight: np.ndarray  # (v,)
+    faces: np.ndarray  # (t, 3) indices into the corners
 
 
-def hull_triangles(hull: Hull, poses: list[tuple[Pose, float]], origin: tuple[float, float],
-                   cell: float) -> Triangles:
-    """The hull's faces in each ``(pose, weight)`` placed on the grid whose corner (0, 0) is at
-    ``origin`` (m, E frame). Faces wholly above z = 0 are dropped (they add nothing)."""
-    xy, z, weight = [], [], []
-    for pose, w in poses:
-        corners = pose.world(hull.vertices)[hull.faces]                  # (t, 3, 3)
-        wet = corners[..., 2].min(axis=1) < 0.0
-        corners = corners[wet]
-        grid = (corners[..., :2] - np.asarray(origin)) / cell
-        xy.append(np.rint(grid * SUBPIXEL).astype(np.int64))
-        z.append(corners[..., 2].astype(np.float32))
-        weight.append(np.full(len(corners), w, dtype=np.float32))
-    return Triangles(np.concatenate(xy), np.concatenate(z), np.concatenate(weight))
+def hull_triangles(hull: Hull, placements: list[Placement]) -> Triangles:
+    """The hull's faces in each placement: the body vertices through its :func:`to_grid` map, as the GPU's
+    vertex shader does (``hull_depth.vert``, in double precision). Faces wholly above z = 0 are dropped
+    (they add nothing)."""
+    xy, z, weight, faces = [], [], [], []
+    count = len(hull.vertices)
+    for k, (matrix, w) in enumerate(placements):
+        grid = hull.vertices @ matrix[:3, :3].T + matrix[:3, 3]          # (v, 3)
+        corner_z = grid[:, 2][hull.faces]
+        wet = np.minimum(np.minimum(corner_z[:, 0], corner_z[:, 1]), corner_z[:, 2]) < 0.0
+        xy.append(np.rint(grid[:, :2]).astype(np.int64))
+        z.append(grid[:, 2].astype(np.float32))
+        weight.append(np.full(count, w, dtype=np.float32))
+        faces.append(hull.faces[wet] + k * count)
+    return Triangles(np.concatenate(xy), np.concatenate(z), np.concatenate(weight), np.concatenate(faces))
 
 
 def displaced_depth(triangles: Triangles, size: int) -> np.ndarray:
     """The render of :mod:`footprint` in NumPy: (size, size) displaced depth (m), rows y, columns x."""
     depth = np.zeros((size, size))
-    p = triangles.xy
+    p = triangles.xy[triangles.faces]
     area = ((p[:, 1, 0] - p[:, 0, 0]) * (p[:, 2, 1] - p[:, 0, 1])
             - (p[:, 1, 1] - p[:, 0, 1]) * (p[:, 2, 0] - p[:, 0, 0]))
     keep = area != 0
     up = area[keep] > 0                                       # counter-clockwise from above: facing up
-    p, z, weight = p[keep].copy(), triangles.z[keep].astype(float), triangles.weight[keep] * np.where(up, 1.0, -1.0)
+    z, weight = triangles.z[triangles.faces][keep].astype(float), triangles.weight[triangles.faces[keep, 0]]
+    p, weight = p[keep].copy(), weight * np.where(up, 1.0, -1.0)
     p[~up] = p[~up][:, [0, 2, 1]]                             # every face counter-clockwise
     z[~up] = z[~up][:, [0, 2, 1]]
     half = SUBPIXEL // 2

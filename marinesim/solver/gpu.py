@@ -22,7 +22,7 @@ import numpy as np
 from marinesim.gl import shader_source, standalone_context
 from marinesim.hull.mesh import Hull
 from marinesim.pose import Pose
-from marinesim.solver.footprint import Triangles
+from marinesim.solver.footprint import Placement
 from marinesim.solver.local import LocalSolver, SolverConfig
 from marinesim.solver.spectral import SUBPIXEL
 
@@ -49,7 +49,7 @@ class GpuSolver(LocalSolver):
         self._fft_out = ctx.compute_shader(shader_source("fft.comp", FINISH=1, **fft))
         self._rotate = ctx.compute_shader(shader_source("solver_rotate.comp", SIZE=f"{n}u"))
         self._shift_cs = ctx.compute_shader(shader_source("solver_shift.comp", SIZE=n))
-        self._raster = ctx.program(vertex_shader=shader_source("hull_depth.vert"),
+        self._raster = ctx.program(vertex_shader=shader_source("hull_depth.vert", SUBPIXEL=SUBPIXEL),
                                    fragment_shader=shader_source("hull_depth.frag"))
         self._raster["size"].value = float(n)
         bits = int(ctx.info.get("GL_SUBPIXEL_BITS", 0))
@@ -76,27 +76,29 @@ class GpuSolver(LocalSolver):
         self._depth_fbo.clear(0.0, 0.0, 0.0, 0.0)
         self.height_texture = ctx.texture((n, n), 1, dtype="f4")
         self.height_texture.write(np.zeros((n, n), np.float32).tobytes())
-        self._vertices = None
-        self._vao = None
+        self._vertices = self._indices = self._hull = None
+        if self.hull is not None:  # the mesh goes up once; each sub-step sets only its placements' maps
+            self._vertices = ctx.buffer(np.ascontiguousarray(self.hull.vertices, dtype=np.float64).tobytes())
+            self._indices = ctx.buffer(np.ascontiguousarray(self.hull.faces, dtype=np.uint32).tobytes())
+            self._hull = ctx.vertex_array(self._raster, [(self._vertices, "3f8", "in_body")], self._indices,
+                                          index_element_size=4)
 
     # --- passes -----------------------------------------------------------------------------
     def _set_keep(self, keep: np.ndarray) -> None:
         self._keep.write(keep.astype(np.float32).tobytes())
 
-    def _draw_depth(self, triangles: Triangles | None) -> None:
+    def _draw_depth(self, placements: list[Placement] | None) -> None:
         with self.ctx.scope(self._depth_fbo, enable_only=moderngl.BLEND):
             self._depth_fbo.viewport = (0, 0, self.config.size, self.config.size)
             self._depth_fbo.clear(0.0, 0.0, 0.0, 0.0)
-            if triangles is None or len(triangles.z) == 0:
+            if placements is None:
                 return
-            data = triangles.vertex_data().tobytes()
-            if self._vertices is None or self._vertices.size < len(data):
-                self._vertices = self.ctx.buffer(reserve=max(len(data), 2 * (self._vertices.size if self._vertices else 0)))
-                self._vao = self.ctx.vertex_array(self._raster, [(self._vertices, "2f 1f 1f", "in_cell", "in_z", "in_weight")])
-            self._vertices.write(data)
             self.ctx.blend_func = moderngl.ONE, moderngl.ONE
             self.ctx.blend_equation = moderngl.FUNC_ADD
-            self._vao.render(moderngl.TRIANGLES, vertices=3 * len(triangles.z))
+            for matrix, weight in placements:
+                self._raster["to_grid"].write(np.ascontiguousarray(matrix.T, dtype=np.float64).tobytes())
+                self._raster["weight_in"].value = weight
+                self._hull.render(moderngl.TRIANGLES)
             self.ctx.blend_func = moderngl.DEFAULT_BLENDING
 
     def _pass_lines(self, shader: moderngl.ComputeShader, source, target, rows: bool, inverse: bool) -> None:
@@ -112,10 +114,10 @@ class GpuSolver(LocalSolver):
         shader.run(n)
         self.ctx.memory_barrier()
 
-    def _advance(self, triangles: Triangles | None) -> None:
+    def _advance(self, placements: list[Placement] | None) -> None:
         n = self.config.size
         first, second = self._work
-        self._draw_depth(triangles)
+        self._draw_depth(placements)
         self._depth.bind_to_image(0, read=True, write=False)
         self._pass_lines(self._fft_in, self._state, first, rows=True, inverse=False)
         self._pass_lines(self._fft, first, second, rows=False, inverse=False)
@@ -130,8 +132,8 @@ class GpuSolver(LocalSolver):
         self.height_texture.bind_to_image(1, read=False, write=True)
         self._pass_lines(self._fft_out, second, self._state, rows=True, inverse=True)
 
-    def _start_at_rest(self, triangles: Triangles) -> None:
-        self._draw_depth(triangles)
+    def _start_at_rest(self, placements: list[Placement]) -> None:
+        self._draw_depth(placements)
         depth = np.frombuffer(self._depth.read(), dtype=np.float32).reshape(self.config.size, -1)
         keep = np.frombuffer(self._keep.read(), dtype=np.float32).reshape(depth.shape)
         self._write(-depth * keep, np.zeros_like(depth))
@@ -173,6 +175,6 @@ class GpuSolver(LocalSolver):
         """Free the GPU objects (the context stays)."""
         for thing in (self._fft, self._fft_in, self._fft_out, self._rotate, self._shift_cs, self._raster,
                       self._state, *self._work, self._twiddle, self._coefficients, self._keep, self._counter,
-                      self._depth_fbo, self._depth, self.height_texture, self._vertices, self._vao):
+                      self._depth_fbo, self._depth, self.height_texture, self._hull, self._vertices, self._indices):
             if thing is not None:
                 thing.release()

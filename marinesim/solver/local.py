@@ -46,7 +46,7 @@ from marinesim.hull.mesh import Hull
 from marinesim.hull.waterplane import inside
 from marinesim.pose import Pose
 from marinesim.solver import spectral
-from marinesim.solver.footprint import Triangles, hull_triangles
+from marinesim.solver.footprint import Placement, to_grid
 
 log = logging.getLogger("marinesim.solver")
 
@@ -180,7 +180,7 @@ class LocalSolver:
             self.steps += 1
             now = start_pose.toward(target, (self.time - start_time) / dt)
             self._follow(now)
-            self._advance(self._triangles(now))
+            self._advance(self._placements(now))
             taken += 1
         self._pose = target
         bad = self._take_nonfinite()
@@ -202,7 +202,7 @@ class LocalSolver:
         """Water at rest about the hull where the grid now is (h = -d in full forcing, else 0)."""
         self._clear()
         if self.hull is not None and self.config.forcing == "full":
-            self._start_at_rest(self._triangles(self._grid_pose))
+            self._start_at_rest(self._placements(self._grid_pose))
 
     def release(self) -> None:
         """Free what the backend holds (GPU buffers); nothing for the NumPy reference."""
@@ -218,11 +218,13 @@ class LocalSolver:
         if self.obstacles:
             self._load_keep()
 
-    def _triangles(self, pose: Pose) -> Triangles | None:
+    def _placements(self, pose: Pose) -> list[Placement] | None:
+        """The hull on the grid in ``pose`` (and minus its steady pose, unless the forcing is full); None without
+        a hull."""
         if self.hull is None:
             return None
         poses = [(pose, 1.0)] if self.config.forcing == "full" else [(pose, 1.0), (pose.steady(), -1.0)]
-        return hull_triangles(self.hull, poses, self.origin, self.config.cell_m)
+        return [(to_grid(p, self.origin, self.config.cell_m), w) for p, w in poses]
 
     def _load_keep(self) -> None:
         keep = self.sponge * ~inside(self.obstacles, *self.cell_centres()) if self.obstacles else self.sponge
@@ -235,10 +237,10 @@ class LocalSolver:
     def _set_keep(self, keep: np.ndarray) -> None:
         raise NotImplementedError
 
-    def _start_at_rest(self, triangles: Triangles) -> None:
+    def _start_at_rest(self, placements: list[Placement]) -> None:
         raise NotImplementedError
 
-    def _advance(self, triangles: Triangles | None) -> None:
+    def _advance(self, placements: list[Placement] | None) -> None:
         raise NotImplementedError
 
     def _shift(self, shift: tuple[int, int]) -> None:

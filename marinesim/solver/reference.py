@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from marinesim.sea.fft import mirrored
-from marinesim.solver.footprint import Triangles, displaced_depth
+from marinesim.solver.footprint import Placement, displaced_depth, hull_triangles
 from marinesim.solver.local import LocalSolver
 
 
@@ -26,16 +26,18 @@ class ReferenceSolver(LocalSolver):
     def _set_keep(self, keep: np.ndarray) -> None:
         self._keep = keep
 
-    def _depth_of(self, triangles: Triangles | None) -> np.ndarray:
-        return np.zeros_like(self._depth) if triangles is None else displaced_depth(triangles, self.config.size)
+    def _depth_of(self, placements: list[Placement] | None) -> np.ndarray:
+        if placements is None:
+            return np.zeros_like(self._depth)
+        return displaced_depth(hull_triangles(self.hull, placements), self.config.size)
 
-    def _start_at_rest(self, triangles: Triangles) -> None:
-        self._depth = self._depth_of(triangles)
+    def _start_at_rest(self, placements: list[Placement]) -> None:
+        self._depth = self._depth_of(placements)
         self._z = -self._depth * self._keep + 0j
 
-    def _advance(self, triangles: Triangles | None) -> None:
+    def _advance(self, placements: list[Placement] | None) -> None:
         a, b = self.coefficients
-        self._depth = self._depth_of(triangles)
+        self._depth = self._depth_of(placements)
         spectrum = np.fft.fft2(self._z + self._depth)
         z = np.fft.ifft2(a * spectrum + b * np.conj(mirrored(spectrum)))
         z = (z - self._depth) * self._keep

@@ -47,7 +47,8 @@ def tile_texture_array(ctx: moderngl.Context, n: int, tiles: int, components: in
     texture.filter = (moderngl.LINEAR_MIPMAP_LINEAR, moderngl.LINEAR)
     texture.repeat_x = texture.repeat_y = True
     texture.anisotropy = 1.0 if is_software(ctx) else 8.0  # llvmpipe filters anisotropically at a crawl
-    return texture
+    texture.build_mipmaps()  # every level allocated: a compute pass may store into level 0 before any upload (an
+    return texture           # incomplete texture drops image stores on NVIDIA, leaving garbage in the first frame)
 
 
 def blank_texture(ctx: moderngl.Context) -> moderngl.Texture:
