@@ -163,6 +163,11 @@ register(Format("hydrostar", "rao", "HydroStar/HAMS .rao motion RAOs (one DOF pe
                 (".rao",), "marinesim.vessel.hydrostar:read_hydrostar", "marinesim.vessel.hydrostar:sniff"))
 register(Format("orcaflex", "rao", "OrcaFlex vessel type displacement RAOs (.yml, .yaml)", (".yml", ".yaml"),
                 "marinesim.vessel.orcaflex:read_orcaflex", "marinesim.vessel.orcaflex:sniff"))
+register(Format("aqwa", "rao", "ANSYS AQWA listing (.lis): position RAOs of structure 1", (".lis",),
+                "marinesim.vessel.aqwa:read_aqwa", "marinesim.vessel.aqwa:sniff"))
+register(Format("nemoh", "rao", "NEMOH v2/v3 project, given by its Nemoh.cal: Motion/RAO.dat, or RAOs solved from "
+                "its forces, coefficients and mass", (".cal",), "marinesim.vessel.nemoh:read_nemoh",
+                "marinesim.vessel.nemoh:sniff"))
 register(Format("gdf", "mesh", "WAMIT low-order panels, .gdf", (".gdf",), "marinesim.hull.gdf:read_gdf_mesh"))
 register(Format("stl", "mesh", "STL, .stl", (".stl",), "marinesim.hull.mesh:read_mesh"))
 register(Format("obj", "mesh", "Wavefront OBJ, .obj", (".obj",), "marinesim.hull.mesh:read_mesh"))

@@ -102,6 +102,8 @@ SAMPLES: dict[str, tuple[Callable[[Path], Path], Callable[[Path, str], None]]] =
     "hydrostar": (lambda folder: ROOT / "tests" / "data" / "hams" / "cylinder" / "Output" / "Hydrostar_format"
                   / "Motion_3.rao", check_rao),
     "orcaflex": (lambda folder: ROOT / "tests" / "data" / "orcaflex" / "cylinder_vessel_type.yml", check_rao),
+    "aqwa": (lambda folder: ROOT / "tests" / "data" / "aqwa" / "cylinder_excerpt.LIS", check_rao),
+    "nemoh": (lambda folder: ROOT / "tests" / "data" / "nemoh" / "oc3_hywind" / "Nemoh.cal", check_rao),
     "gdf": (lambda folder: ROOT / "hulls" / "tanker.gdf", check_tanker_gdf),
     "stl": (lambda folder: WIGLEY, check_wigley),
     "obj": (exported_wigley(".obj"), check_wigley),

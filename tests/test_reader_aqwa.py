@@ -79,10 +79,13 @@ def test_conversion_function():
     assert h[0] == pytest.approx(-1j) and h[3] == pytest.approx(1.0)
 
 
-def test_partial_heading_set_is_refused_naming_what_it_covers():
-    """Only 0 and 180 deg: no table of the whole circle can be made; the message says what the listing covers."""
-    with pytest.raises(FileFormatError, match="covers direction.*0, 180 deg only"):
-        read_aqwa(CYLINDER)
+def test_the_partial_heading_set_makes_a_table_of_what_it_covers(cylinder):
+    """Only 0 and 180 deg: a partial table covering each +-15 deg, answering head seas with the listing's own
+    180 deg RAOs (a sea it does not cover is refused when a run meets it: test_rao_partial_headings.py)."""
+    table = read_aqwa(CYLINDER)
+    assert table.covered_text() == "165..195 deg (tabulated 180), 345..15 deg (tabulated 0)"
+    head = list(cylinder.headings_deg).index(180.0)
+    np.testing.assert_allclose(table(cylinder.omega, np.full(cylinder.omega.size, math.pi)), cylinder.values[head])
 
 
 def test_sniff():

@@ -113,9 +113,11 @@ def test_no_mass_is_refused(project):
         read_nemoh_raos(project)
 
 
-def test_single_heading_is_refused_naming_it():
-    with pytest.raises(FileFormatError, match="cover heading.*0 deg only"):
-        read_nemoh(SPAR / "results" / "ExcitationForce.tec")
+def test_the_single_heading_makes_a_partial_table(spar):
+    """NEMOH ran the spar at 0 deg only: the table covers 345..15 deg and answers with those RAOs."""
+    table = read_nemoh(SPAR / "results" / "ExcitationForce.tec")
+    assert table.covered_text() == "345..15 deg (tabulated 0)"
+    np.testing.assert_allclose(table(spar.omega, np.zeros(spar.omega.size)), spar.values[0])
 
 
 def test_sniff():

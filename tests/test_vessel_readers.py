@@ -230,8 +230,8 @@ def test_bad_veres_and_native_files(tmp_path):
 def test_table_checks():
     omega, beta = np.array([0.5, 1.0]), np.radians([0.0, 90.0, 180.0])
     values = np.ones((1, 3, 2, 6), complex)
-    with pytest.raises(ParameterError, match="gap of 180 deg"):
-        make_table(omega, np.radians([0.0, 180.0, 200.0]), [0.0], values)
+    partial = make_table(omega, np.radians([0.0, 180.0, 200.0]), [0.0], values)  # a 160 deg gap: a partial table
+    assert partial.covered_text() == "165..215 deg (tabulated 180..200), 345..15 deg (tabulated 0)"
     with pytest.raises(ParameterError, match="strictly increasing"):
         make_table(omega[::-1], beta, [0.0], values)
     with pytest.raises(ParameterError, match="finite"):

@@ -20,10 +20,12 @@ from marinesim.criteria import spectral
 from marinesim.errors import ParameterError, ScenarioError
 from marinesim.scenario import Scenario
 from marinesim.sea.seastate import SeaState, WaveSystem
+from marinesim.sea.spreading import LongCrested
 from marinesim.session.sidecar import sha256
 from marinesim.study import results
 from marinesim.study.operability import Operability, operability
 from marinesim.study.scatter import Scatter, read_scatter
+from marinesim.vessel.response import OUTSIDE_HEADINGS_SHARE
 
 MAX_TASKS = 1_000_000
 """The most time-domain tasks one study may ask for."""
@@ -82,7 +84,27 @@ def prepare(scenario: Scenario, scatter_path: Path, headings_deg: np.ndarray, du
     system = systems[0]
     cell_tp = scatter.period if scatter.period_kind == "tp" else scatter.period / tz_over_tp(system, scenario.sea.depth)
     tp = np.unique(cell_tp)
+    _check_covered(scenario, system, np.sort(headings), float(np.median(tp)))
     return Study(scenario, scatter, system, scenario.sea.depth, cell_tp, tp, np.sort(headings), duration)
+
+
+def _check_covered(scenario: Scenario, system: WaveSystem, headings_deg: np.ndarray, tp: float) -> None:
+    """A partial RAO table answers only the headings it covers: refuse a study heading whose waves (the sea's
+    spreading about it, at the peak frequency of the middle Tp) put more than the share a run allows outside."""
+    rao = scenario.vessel.rao
+    if rao.covered is None:
+        return
+    if isinstance(system.spreading, LongCrested):
+        offsets, weights = np.zeros(1), np.ones(1)
+    else:
+        offsets = spectral.SPREAD
+        weights = system.spreading.density(offsets, np.full(offsets.size, 2.0 * math.pi / tp))
+    refused = [h for h in headings_deg
+               if weights[~rao.covers(math.radians(h) + offsets)].sum() > OUTSIDE_HEADINGS_SHARE * weights.sum()]
+    if refused:
+        raise ParameterError(f"the RAO table covers relative wave headings {rao.covered_text()} only: the sea's "
+                             f"waves at --headings {', '.join(f'{h:g}' for h in refused)} deg meet the vessel "
+                             "outside them (give headings inside, or a long-crested sea)")
 
 
 def tz_over_tp(system: WaveSystem, depth_m: float) -> float:

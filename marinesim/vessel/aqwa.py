@@ -107,7 +107,7 @@ def aqwa_to_internal(amplitude: np.ndarray, phase_lag_deg: np.ndarray) -> np.nda
 
 def read_aqwa_raos(path: str | Path, *, structure: int = 1) -> AqwaRaos:
     """The position RAO tables of ``structure`` in marinesim's convention, headings as the listing gives
-    them (a partial set is returned as is; :func:`read_aqwa` makes the table of the whole circle)."""
+    them (:func:`read_aqwa` makes the table: a partial one where the headings leave a gap)."""
     path = Path(path)
     if isinstance(structure, bool) or not isinstance(structure, int) or structure < 1:
         raise ParameterError(f"AQWA structure must be a number >= 1, got {structure!r}")

@@ -37,7 +37,11 @@ MIRROR_SIGN = np.array([1.0, -1.0, 1.0, -1.0, 1.0, -1.0])
 TAPER_END = 1.5
 """Above the table, RAOs taper to zero at this multiple of the highest frequency."""
 MAX_HEADING_GAP = math.pi / 2
-"""Largest gap between tabulated headings (after mirroring) that interpolation may bridge."""
+"""Largest gap between tabulated headings (after mirroring) that interpolation may bridge; a wider gap makes
+the table partial (it covers arcs of headings, :attr:`RaoTable.covered`)."""
+HEADING_MARGIN = math.radians(15.0)
+"""A partial table stands for headings up to this beyond the ends of each arc it covers (its end values
+held): one step of the usual 15 deg table, so a table at 180 deg only serves head seas 165..195 deg."""
 MAX_TRANSLATION_M_M = 50.0
 """Largest |RAO| of surge, sway, heave (m/m): resonant heave peaks of floating bodies stay under 10."""
 MAX_ROTATION_RAD_M = 1.0
@@ -68,13 +72,16 @@ def long_wave_limit(omega: np.ndarray, beta: np.ndarray, g: float = G, depth: fl
 
 @dataclass(frozen=True)
 class RaoTable:
-    """Tabulated RAOs in the internal convention, headings covering the whole circle.
+    """Tabulated RAOs in the internal convention.
 
     ``values[s, b, w, j]``: speed ``speed[s]`` (m/s), heading ``beta[b]`` (rad, increasing in
     [0, 2 pi)), frequency ``omega[w]`` (rad/s, increasing), DOF j in :data:`DOFS` order.
     ``depth`` (m, inf = deep water) is the water depth the table was computed for: the long-wave
     limits and the extension below the table use it. Build with :func:`make_table`, which
-    completes half-range tables by symmetry.
+    completes half-range tables by symmetry. ``covered`` is None for a table of the whole circle,
+    else the arcs ``(first, last)`` (rad, counter-clockwise from first to last) its headings cover
+    with no gap over :data:`MAX_HEADING_GAP` (a partial table: a single heading, or headings on one
+    side only), each good to :data:`HEADING_MARGIN` beyond its ends.
     """
 
     omega: np.ndarray
@@ -89,6 +96,7 @@ class RaoTable:
     notes: tuple[str, ...] = field(default=())
     mirrored: bool = False
     depth: float = math.inf
+    covered: tuple[tuple[float, float], ...] | None = None
 
     def __call__(self, omega: np.ndarray, beta: np.ndarray, speed: float = 0.0) -> np.ndarray:
         """Interpolated RAOs, shape (n, 6), at wave frequencies ``omega`` (rad/s, > 0) and
@@ -97,6 +105,8 @@ class RaoTable:
         beta = np.mod(np.asarray(beta, dtype=float).ravel(), 2.0 * math.pi)
         table = self._at_speed(speed)
         w_lo, w_hi = self.omega[0], self.omega[-1]
+        if self.covered is not None:
+            beta = self._nearest_covered(beta)
         inside = _bilinear(self.omega, self._beta_wrapped, table, np.clip(omega, w_lo, w_hi), beta)
         below = omega < w_lo
         if np.any(below):
@@ -110,6 +120,42 @@ class RaoTable:
             x = np.clip((omega[above] - w_hi) / ((TAPER_END - 1.0) * w_hi), 0.0, 1.0)
             inside[above] *= (np.cos(0.5 * math.pi * x) ** 2)[:, None]
         return inside
+
+    def _nearest_covered(self, beta: np.ndarray) -> np.ndarray:
+        """``beta`` (rad, in [0, 2 pi)) moved to the nearest heading of the covered arcs (its end values held
+        beyond an arc's ends; interpolation never bridges a gap)."""
+        best, moved = np.full(beta.shape, np.inf), beta.copy()
+        for first, last in self.covered:
+            length = np.mod(last - first, 2.0 * math.pi)
+            offset = np.mod(beta - first, 2.0 * math.pi)
+            after = offset - length                        # > 0: beyond the last heading
+            before = 2.0 * math.pi - offset                # to the first heading, going back
+            inside = offset <= length
+            distance = np.where(inside, 0.0, np.minimum(after, before))
+            target = np.where(inside, beta, np.where(after <= before, last, first))
+            closer = distance < best
+            best, moved = np.where(closer, distance, best), np.where(closer, target, moved)
+        return np.mod(moved, 2.0 * math.pi)
+
+    def covers(self, beta: np.ndarray) -> np.ndarray:
+        """Whether each relative heading ``beta`` (rad, any range) is within the table's headings (a table of
+        the whole circle covers every one; a partial table its arcs and :data:`HEADING_MARGIN` beyond them)."""
+        beta = np.mod(np.asarray(beta, dtype=float), 2.0 * math.pi)
+        if self.covered is None:
+            return np.ones(beta.shape, dtype=bool)
+        return np.abs(np.angle(np.exp(1j * (self._nearest_covered(beta) - beta)))) <= HEADING_MARGIN + 1e-9
+
+    def covered_text(self) -> str:
+        """The covered headings in words, e.g. ``"165..195 deg (tabulated 180)"``."""
+        if self.covered is None:
+            return "0..360 deg"
+        margin = math.degrees(HEADING_MARGIN)
+        arcs = []
+        for first, last in self.covered:
+            a, b = round(math.degrees(first), 6), round(math.degrees(last), 6)
+            tabulated = f"{a:g}" if a == b else f"{a:g}..{b:g}"
+            arcs.append(f"{(a - margin) % 360:g}..{(b + margin) % 360:g} deg (tabulated {tabulated})")
+        return ", ".join(arcs)
 
     @property
     def _beta_wrapped(self) -> np.ndarray:
@@ -156,10 +202,10 @@ def make_table(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: n
                source_format: str = "", notes: tuple[str, ...] = (), depth: float = math.inf) -> RaoTable:
     """Validate and complete an RAO table already in the internal convention.
 
-    ``values`` has shape (speeds, headings, frequencies, 6). Headings (rad) either span exactly
-    0..pi (completed by the port/starboard mirror, :data:`MIRROR_SIGN`) or cover the circle
-    with no gap wider than :data:`MAX_HEADING_GAP`. ``depth``: water depth (m, > 0; inf = deep).
-    Raises :class:`ParameterError` otherwise.
+    ``values`` has shape (speeds, headings, frequencies, 6). Headings (rad) spanning exactly
+    0..pi are completed by the port/starboard mirror (:data:`MIRROR_SIGN`); headings that leave a
+    gap wider than :data:`MAX_HEADING_GAP` make a partial table (:attr:`RaoTable.covered`).
+    ``depth``: water depth (m, > 0; inf = deep). Raises :class:`ParameterError` on anything else.
     """
     depth = require_positive("water depth", depth, allow_infinite=True)
     omega = np.asarray(omega, dtype=float)
@@ -193,13 +239,14 @@ def make_table(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: n
         raise ParameterError(f"RAO heading {math.degrees(beta[same[0]]):g} deg is given twice "
                              "(after wrapping to 0..360)")
     gaps = np.diff(np.append(beta, beta[0] + 2.0 * math.pi))
-    if gaps.max() > MAX_HEADING_GAP + eps:
-        at = int(np.argmax(gaps))
-        raise ParameterError(
-            f"RAO headings leave a gap of {math.degrees(gaps.max()):g} deg after "
-            f"{math.degrees(beta[at]):g} deg: give 0..180 (mirrored to port) or the whole circle")
+    wide = gaps > MAX_HEADING_GAP + eps
+    covered = None
+    if wide.any():
+        ends = np.flatnonzero(wide)                      # the gap after these headings is too wide to bridge
+        starts = (ends + 1) % beta.size
+        covered = tuple((float(beta[a]), float(beta[b])) for a, b in zip(starts, np.roll(ends, -1), strict=True))
     return RaoTable(omega, beta, speed, values, tuple(float(v) for v in reference_point), float(rho),
-                    float(g), str(source), source_format, tuple(notes), mirrored, depth)
+                    float(g), str(source), source_format, tuple(notes), mirrored, depth, covered)
 
 
 def _check_amplitudes(omega: np.ndarray, beta: np.ndarray, values: np.ndarray, g: float) -> None:

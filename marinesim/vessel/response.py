@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Iterator
 
 import numpy as np
@@ -29,6 +30,9 @@ from marinesim.pose import RotationKinematics
 from marinesim.sea.ocean import Components
 from marinesim.vessel.rao import DOFS, RaoTable
 
+OUTSIDE_HEADINGS_SHARE = 0.01
+"""Largest share of the sea's variance a partial RAO table may meet outside its headings (those components
+take the nearest covered heading's RAO); more is refused."""
 BLOCK = 512
 """Time steps per matrix product."""
 CHUNK = 1024
@@ -46,6 +50,23 @@ class Track:
     speed: float = 0.0
     x0: float = 0.0
     y0: float = 0.0
+
+
+def _check_headings(rao: RaoTable, beta_rel: np.ndarray, power: np.ndarray) -> None:
+    """Refuse waves that a partial RAO table does not cover (more than :data:`OUTSIDE_HEADINGS_SHARE` of the
+    variance ``power`` at relative headings ``beta_rel``, rad), naming what it covers and where they come from."""
+    if rao.covered is None or power.sum() <= 0.0:
+        return
+    outside = ~rao.covers(beta_rel)
+    share = float(power[outside].sum() / power.sum())
+    if share > OUTSIDE_HEADINGS_SHARE:
+        mean = math.degrees(np.angle(np.sum(power[outside] * np.exp(1j * beta_rel[outside])))) % 360.0
+        name = f" {Path(rao.source).name}" if rao.source else ""
+        raise ParameterError(
+            f"the RAO table{name} covers relative wave headings {rao.covered_text()} only: "
+            f"{100 * share:.0f} % of this sea's variance meets the vessel at other headings (around {mean:.0f} deg; "
+            "0 following, 90 from starboard, 180 head seas). Choose a course or a long-crested sea inside them, "
+            "or an RAO file with more headings")
 
 
 def motion_columns(points: dict[str, tuple[float, float, float]]) -> list[str]:
@@ -73,6 +94,7 @@ class Response:
                 raise ParameterError(f"point {name!r} must be three finite numbers (m, body frame), got {p.tolist()}")
         c, psi = components, track.heading
         beta_rel = np.arctan2(c.ky, c.kx) - psi
+        _check_headings(rao, beta_rel, np.abs(c.amplitude) ** 2)
         along = c.kx * math.cos(psi) + c.ky * math.sin(psi)
         self.omega_e = c.omega - track.speed * along
         self.transfer = rao(c.omega, beta_rel, track.speed)              # (n, 6)

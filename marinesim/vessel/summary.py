@@ -7,7 +7,7 @@ import math
 import numpy as np
 
 from marinesim.constants import KNOT
-from marinesim.vessel.rao import DOFS, RaoTable, long_wave_limit
+from marinesim.vessel.rao import DOFS, MAX_HEADING_GAP, RaoTable, long_wave_limit
 
 LIMIT_TOLERANCE = 0.15
 """A long-wave ratio within this of 1 is reported ``ok``; otherwise ``check`` (units, ULEN, depth...) or,
@@ -30,7 +30,8 @@ def long_wave_check(table: RaoTable) -> dict[str, dict]:
     frequency w0 (first speed).
 
     Surge and pitch in head seas, sway and roll in beam seas (waves towards port), heave as the
-    mean over all headings; yaw has limit 0 and is not checked. A ratio within
+    mean over all headings; yaw has limit 0 and is not checked, nor is a DOF whose heading a partial table
+    does not cover. A ratio within
     :data:`LIMIT_TOLERANCE` of 1 is ``ok``. One further off is :data:`RESONANCE_NEAR_END` (with
     ``resonance_period_s``) where the DOF's ratio, taken at every tabulated frequency, shows a
     resonance wn within :data:`RESONANCE_SPAN` of w0 (:func:`_resonance_near_end`), else ``check``.
@@ -38,6 +39,9 @@ def long_wave_check(table: RaoTable) -> dict[str, dict]:
     omega = table.omega
     out = {}
     for dof, beta in CHECK_HEADINGS.items():
+        if beta is not None and not table.covers(np.array([beta]))[0]:
+            out[dof] = {"ratio": None, "status": f"not tabulated at {math.degrees(beta):g} deg"}
+            continue
         ratio = _ratio_curve(table, dof, beta)
         entry: dict = {"ratio": float(ratio[0]), "status": "ok" if abs(ratio[0] - 1.0) <= LIMIT_TOLERANCE else "check"}
         natural = _resonance_near_end(omega, ratio) if entry["status"] == "check" else None
@@ -97,10 +101,14 @@ def _vertex(omega: np.ndarray, amp: np.ndarray, i: int) -> float:
 
 def resonance_periods(table: RaoTable) -> dict[str, float | None]:
     """Period (s) of the largest interior peak of |H| for heave, roll and pitch at zero/first speed,
-    refined by a parabola through the peak and its neighbours; None where there is no peak."""
+    refined by a parabola through the peak and its neighbours; None where there is no peak, or where a
+    partial table does not cover the DOF's heading."""
     out: dict[str, float | None] = {}
     for dof, heading in RESONANCE_HEADINGS.items():
         j = DOFS.index(dof)
+        if not table.covers(np.array([math.radians(heading)]))[0]:
+            out[dof] = None
+            continue
         amp = np.abs(table(table.omega, np.full(table.omega.size, math.radians(heading)), table.speed[0])[:, j])
         inner = np.flatnonzero((amp[1:-1] > amp[:-2]) & (amp[1:-1] >= amp[2:])) + 1
         if inner.size == 0:
@@ -122,7 +130,8 @@ def rao_summary(table: RaoTable) -> dict:
         "omega_rad_s": [float(table.omega[0]), float(table.omega[-1])],
         "period_s": [float(2 * math.pi / table.omega[-1]), float(2 * math.pi / table.omega[0])],
         "headings": int(table.beta.size),
-        "heading_step_deg": float(np.degrees(np.max(np.diff(np.append(table.beta, table.beta[0] + 2 * math.pi))))),
+        "heading_step_deg": _heading_step_deg(table),
+        "headings_covered": None if table.covered is None else table.covered_text(),
         "mirrored_from_half_range": table.mirrored,
         "speeds_kn": [float(s / KNOT) for s in table.speed],
         "reference_point_m": list(table.reference_point),
@@ -135,14 +144,23 @@ def rao_summary(table: RaoTable) -> dict:
     }
 
 
+def _heading_step_deg(table: RaoTable) -> float | None:
+    """The widest step between tabulated headings that interpolation bridges (deg); None for a single heading."""
+    steps = np.diff(np.append(table.beta, table.beta[0] + 2 * math.pi))
+    bridged = steps[steps <= MAX_HEADING_GAP + 1e-9]
+    return float(np.degrees(bridged.max())) if bridged.size else None
+
+
 def format_rao_summary(s: dict) -> str:
     """Human-readable form of :func:`rao_summary`."""
     lines = [f"RAO table   {s['source']} ({s['format']})",
              f"DOFs        {', '.join(s['dofs'])}",
              f"frequencies {s['frequencies']}: {s['omega_rad_s'][0]:.4g}..{s['omega_rad_s'][1]:.4g} rad/s "
              f"(periods {s['period_s'][0]:.3g}..{s['period_s'][1]:.4g} s)",
-             f"headings    {s['headings']} over the circle, step <= {s['heading_step_deg']:g} deg"
-             + (" (0..180 mirrored to port)" if s["mirrored_from_half_range"] else ""),
+             (f"headings    {s['headings']} over the circle, step <= {s['heading_step_deg']:g} deg"
+              + (" (0..180 mirrored to port)" if s["mirrored_from_half_range"] else "")
+              if s["headings_covered"] is None else
+              f"headings    {s['headings']}, a partial table: it covers {s['headings_covered']} only"),
              f"speeds      {', '.join(f'{v:.3g}' for v in s['speeds_kn'])} kn",
              f"reference   {', '.join(f'{v:g}' for v in s['reference_point_m'])} m; rho {s['rho_kg_m3']:g} kg/m^3, "
              f"g {s['g_m_s2']:g} m/s^2; water depth "
