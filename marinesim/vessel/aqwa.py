@@ -225,6 +225,9 @@ def _rao_rows(path: Path, lines: list[str], structure: int) -> tuple[list[tuple[
             freq = parse_float(path, number, parts[1], "FREQ (rad/s)")
             parts = parts[2:]
         elif len(parts) != 13:
+            if not any(line.strip() for line in lines[number:]):
+                raise FileFormatError(path, number, f"the listing ends inside the RAO table: {len(parts)} numbers "
+                                                    "where a row has 13 or 15 (a file cut short?)")
             in_table = False  # the table ended (another section follows on the page)
             continue
         if math.isnan(freq):

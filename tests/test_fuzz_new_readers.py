@@ -1,0 +1,81 @@
+"""The readers of AQWA, NEMOH, HAMS/HydroStar and OrcaFlex files fuzzed from their real files (the hardening rule:
+whatever the bytes, a table or the project's one error, never another exception), and one damaged file of each
+through the command line: exit 2, one line naming the file, no traceback."""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from conftest import cli
+from marinesim.errors import MarinesimError
+from marinesim.vessel import read_rao
+
+DATA = Path(__file__).parent / "data"
+SOURCES = {
+    "aqwa": (DATA / "aqwa", "cylinder_excerpt.LIS", "cylinder_excerpt.LIS"),
+    "nemoh": (DATA / "nemoh" / "oc3_hywind", "results/ExcitationForce.tec", "Nemoh.cal"),
+    "nemoh-cal": (DATA / "nemoh" / "oc3_hywind", "Nemoh.cal", "Nemoh.cal"),
+    "hydrostar": (DATA / "hams" / "cylinder" / "Output" / "Hydrostar_format", "Motion_3.rao", "Motion_3.rao"),
+    "orcaflex": (DATA / "orcaflex", "cylinder_vessel_type.yml", "cylinder_vessel_type.yml"),
+}
+"""Per reader: the folder it reads from, the file mutated in a copy of it, the file given to the reader."""
+
+
+def mutate(text: str, edits: list[tuple[int, str, str]]) -> str:
+    lines = text.splitlines()
+    for index, kind, junk in edits:
+        if not lines:
+            break
+        index %= len(lines)
+        if kind == "drop":
+            del lines[index]
+        elif kind == "cut":
+            lines[index] = lines[index][: len(lines[index]) // 2]
+        elif kind == "junk":
+            lines[index] += junk
+        elif kind == "dup":
+            lines.insert(index, lines[index])
+        elif kind == "nan":
+            lines[index] = lines[index].replace("0", "nan", 1)
+        else:
+            lines[index] = lines[index].replace(" ", "", 2)
+    return "\n".join(lines) + "\n"
+
+
+EDITS = st.lists(st.tuples(st.integers(0, 10_000), st.sampled_from(["drop", "cut", "junk", "dup", "nan", "squash"]),
+                           st.text(max_size=8)), min_size=1, max_size=4)
+
+
+@pytest.mark.parametrize("name", sorted(SOURCES))
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(edits=EDITS)
+def test_mutated_files_give_a_table_or_the_projects_error(tmp_path_factory, name, edits):
+    """If this fails, a damaged file of that program escapes the reader as a Python exception (a traceback
+    for the user) instead of a FileFormatError naming the file and line."""
+    folder, mutated, given_file = SOURCES[name]
+    copy = tmp_path_factory.mktemp(name) / "project"
+    shutil.copytree(folder, copy)
+    target = copy / mutated
+    target.write_bytes(mutate(target.read_text(errors="replace"), edits).encode("utf-8", "surrogatepass"))
+    try:
+        read_rao(copy / given_file)
+    except MarinesimError:
+        pass
+
+
+@pytest.mark.parametrize("name", ["aqwa", "nemoh", "hydrostar", "orcaflex"])
+def test_a_cut_file_is_one_line_at_the_command_line(tmp_path, name):
+    folder, mutated, given_file = SOURCES[name]
+    copy = tmp_path / "project"
+    shutil.copytree(folder, copy)
+    target = copy / mutated
+    target.write_bytes(target.read_bytes()[: len(target.read_bytes()) // 3])
+    result = cli("rao", str(copy / given_file), "--json", cwd=tmp_path)
+    assert result.returncode == 2 and "Traceback" not in result.stderr, result.stderr
+    lines = result.stderr.strip().splitlines()
+    assert len(lines) == 1 and "project" in lines[0], result.stderr
