@@ -26,7 +26,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from marinesim.constants import G
+from marinesim.constants import G, KNOT
 from marinesim.errors import ParameterError, require_positive
 from marinesim.sea.dispersion import k_from_omega
 
@@ -47,6 +47,13 @@ MAX_TRANSLATION_M_M = 50.0
 MAX_ROTATION_RAD_M = 1.0
 """Largest |RAO| of roll, pitch, yaw (rad/m) at full scale: 57 deg per metre of wave amplitude, beyond any
 ship's resonant roll; a model-scale table may reach :data:`MAX_ROTATION_SLOPES` times the wave slope k."""
+SURGE_SPEED_FACTOR = 1.5
+"""A surge RAO at forward speed above this multiple of the same table's largest surge at zero speed is noted
+as implausible (no restoring force, no resonance to amplify it: strip-theory surge at speed, as VERES gives
+it, is the usual cause)."""
+MAX_ORBIT_FACTOR = 3.0
+"""A surge or sway RAO above this multiple of the wave orbit's horizontal amplitude (``1 / tanh(kh)`` m/m) is
+noted as implausible (couplings near a resonance reach about twice it: the HAMS cylinder's 2.1)."""
 MAX_ROTATION_SLOPES = 50.0
 """Largest rotation |RAO| as a multiple of the wave slope per amplitude, k = w^2 / g (rad/m)."""
 
@@ -245,8 +252,39 @@ def make_table(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: n
         ends = np.flatnonzero(wide)                      # the gap after these headings is too wide to bridge
         starts = (ends + 1) % beta.size
         covered = tuple((float(beta[a]), float(beta[b])) for a, b in zip(starts, np.roll(ends, -1), strict=True))
+    notes = tuple(notes) + _implausible(omega, beta, speed, values, g, depth)
     return RaoTable(omega, beta, speed, values, tuple(float(v) for v in reference_point), float(rho),
-                    float(g), str(source), source_format, tuple(notes), mirrored, depth, covered)
+                    float(g), str(source), source_format, notes, mirrored, depth, covered)
+
+
+def _implausible(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: np.ndarray, g: float,
+                 depth: float) -> tuple[str, ...]:
+    """Notes on surge and sway RAOs a floating body does not have (:data:`SURGE_SPEED_FACTOR`,
+    :data:`MAX_ORBIT_FACTOR`): each names where the largest is and what it was compared with."""
+    def where(index: tuple) -> str:
+        s, b, w = index
+        return f"{speed[s] / KNOT:.3g} kn, heading {math.degrees(beta[b]):g} deg, T {2 * math.pi / omega[w]:.3g} s"
+
+    notes = []
+    k = k_from_omega(omega, depth, g)
+    orbit = np.ones_like(k) if math.isinf(depth) else 1.0 / np.tanh(k * depth)
+    for j, dof in ((0, "surge"), (1, "sway")):
+        ratio = np.abs(values[..., j]) / orbit
+        peak = np.unravel_index(int(np.argmax(ratio)), ratio.shape)
+        if ratio[peak] > MAX_ORBIT_FACTOR:
+            notes.append(f"implausible {dof} RAO: {abs(values[peak + (j,)]):.3g} m/m at {where(peak)}, "
+                         f"{ratio[peak]:.2g} times the wave orbit; check the file's units and reference point")
+    at_rest = np.flatnonzero(np.abs(speed) < 1e-9)
+    if at_rest.size and speed.size > 1:
+        surge = np.abs(values[..., 0])
+        still = surge[at_rest].max()
+        peak = np.unravel_index(int(np.argmax(surge)), surge.shape)
+        if still > 0.0 and surge[peak] > SURGE_SPEED_FACTOR * still:
+            notes.append(f"implausible surge RAO at speed: {surge[peak]:.3g} m/m at {where(peak)}, "
+                         f"{surge[peak] / still:.2g} times the largest at 0 kn ({still:.3g} m/m); surge has no "
+                         "restoring force to resonate with, so this is the source's (strip-theory surge at "
+                         "speed is unreliable): treat surge at this speed with caution")
+    return tuple(notes)
 
 
 def _check_amplitudes(omega: np.ndarray, beta: np.ndarray, values: np.ndarray, g: float) -> None:

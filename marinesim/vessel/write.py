@@ -25,6 +25,7 @@ a round trip (read -> write -> read) is exact to the precision written:
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -130,8 +131,7 @@ def _one_speed(table: RaoTable, speed: float | None, where: str) -> RaoTable:
     if abs(table.speed[i] - speed) > SPEED_MATCH_M_S:
         raise ParameterError(f"speed {speed / KNOT:g} kn is not one of the table's speeds ({listed} kn): "
                              f"{where} takes a tabulated speed, not an interpolated one")
-    return RaoTable(table.omega, table.beta, table.speed[i:i + 1], table.values[i:i + 1], table.reference_point,
-                    table.rho, table.g, table.source, table.source_format, table.notes, table.mirrored, table.depth)
+    return replace(table, speed=table.speed[i:i + 1], values=table.values[i:i + 1])
 
 
 def _unwritten(table: RaoTable, path: Path) -> list[str]:
