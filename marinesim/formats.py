@@ -169,6 +169,7 @@ register(Format("nemoh", "rao", "NEMOH v2/v3 project, given by its Nemoh.cal: Mo
                 "its forces, coefficients and mass", (".cal",), "marinesim.vessel.nemoh:read_nemoh",
                 "marinesim.vessel.nemoh:sniff"))
 register(Format("gdf", "mesh", "WAMIT low-order panels, .gdf", (".gdf",), "marinesim.hull.gdf:read_gdf_mesh"))
+register(Format("pnl", "mesh", "HAMS panel mesh, .pnl", (".pnl",), "marinesim.hull.pnl:read_pnl_mesh"))
 register(Format("stl", "mesh", "STL, .stl", (".stl",), "marinesim.hull.mesh:read_mesh"))
 register(Format("obj", "mesh", "Wavefront OBJ, .obj", (".obj",), "marinesim.hull.mesh:read_mesh"))
 register(Format("ply", "mesh", "Stanford PLY, .ply", (".ply",), "marinesim.hull.mesh:read_mesh"))

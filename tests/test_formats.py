@@ -86,6 +86,11 @@ def check_tanker_gdf(path: Path, name: str) -> None:
     assert hydrostatics(load_hull(path)).waterplane_area_m2 == pytest.approx(hst[3, 3], rel=1e-5)
 
 
+def check_hams_cylinder(path: Path, name: str) -> None:
+    """HAMS's cylinder displaces its 1604 kg of mass over rho (HAMS's Hydrostatic.in; tests/test_hull_pnl.py)."""
+    assert hydrostatics(load_hull(path)).volume_m3 == pytest.approx(1604.0 / 1025.0, rel=1e-4)
+
+
 def check_barge_visual(path: Path, name: str) -> None:
     """The barge's visual mesh (cm, y up): 100 m long, 25 m mast on top, with its vertex colours."""
     mesh = load_visual_mesh(path, units="cm", axes="x,-z,y", offset=(-50.0, 0.0, -5.0))
@@ -105,6 +110,8 @@ SAMPLES: dict[str, tuple[Callable[[Path], Path], Callable[[Path, str], None]]] =
     "aqwa": (lambda folder: ROOT / "tests" / "data" / "aqwa" / "cylinder_excerpt.LIS", check_rao),
     "nemoh": (lambda folder: ROOT / "tests" / "data" / "nemoh" / "oc3_hywind" / "Nemoh.cal", check_rao),
     "gdf": (lambda folder: ROOT / "hulls" / "tanker.gdf", check_tanker_gdf),
+    "pnl": (lambda folder: ROOT / "tests" / "data" / "hams" / "cylinder" / "Input" / "HullMesh.pnl",
+            check_hams_cylinder),
     "stl": (lambda folder: WIGLEY, check_wigley),
     "obj": (exported_wigley(".obj"), check_wigley),
     "ply": (exported_wigley(".ply"), check_wigley),

@@ -1,6 +1,6 @@
-"""The readers of AQWA, NEMOH, HAMS/HydroStar and OrcaFlex files fuzzed from their real files (the hardening rule:
-whatever the bytes, a table or the project's one error, never another exception), and one damaged file of each
-through the command line: exit 2, one line naming the file, no traceback."""
+"""The readers of AQWA, NEMOH, HAMS/HydroStar, OrcaFlex files and HAMS meshes fuzzed from their real files (the
+hardening rule: whatever the bytes, a table or the project's one error, never another exception), and one damaged
+file of each through the command line: exit 2, one line naming the file, no traceback."""
 
 from __future__ import annotations
 
@@ -13,6 +13,7 @@ from hypothesis import strategies as st
 
 from conftest import cli
 from marinesim.errors import MarinesimError
+from marinesim.hull import load_hull
 from marinesim.vessel import read_rao
 
 DATA = Path(__file__).parent / "data"
@@ -22,6 +23,7 @@ SOURCES = {
     "nemoh-cal": (DATA / "nemoh" / "oc3_hywind", "Nemoh.cal", "Nemoh.cal"),
     "hydrostar": (DATA / "hams" / "cylinder" / "Output" / "Hydrostar_format", "Motion_3.rao", "Motion_3.rao"),
     "orcaflex": (DATA / "orcaflex", "cylinder_vessel_type.yml", "cylinder_vessel_type.yml"),
+    "pnl": (DATA / "hams" / "cylinder" / "Input", "HullMesh.pnl", "HullMesh.pnl"),
 }
 """Per reader: the folder it reads from, the file mutated in a copy of it, the file given to the reader."""
 
@@ -63,19 +65,19 @@ def test_mutated_files_give_a_table_or_the_projects_error(tmp_path_factory, name
     target = copy / mutated
     target.write_bytes(mutate(target.read_text(errors="replace"), edits).encode("utf-8", "surrogatepass"))
     try:
-        read_rao(copy / given_file)
+        (load_hull if name == "pnl" else read_rao)(copy / given_file)
     except MarinesimError:
         pass
 
 
-@pytest.mark.parametrize("name", ["aqwa", "nemoh", "hydrostar", "orcaflex"])
+@pytest.mark.parametrize("name", ["aqwa", "nemoh", "hydrostar", "orcaflex", "pnl"])
 def test_a_cut_file_is_one_line_at_the_command_line(tmp_path, name):
     folder, mutated, given_file = SOURCES[name]
     copy = tmp_path / "project"
     shutil.copytree(folder, copy)
     target = copy / mutated
     target.write_bytes(target.read_bytes()[: len(target.read_bytes()) // 3])
-    result = cli("rao", str(copy / given_file), "--json", cwd=tmp_path)
+    result = cli("hull" if name == "pnl" else "rao", str(copy / given_file), "--json", cwd=tmp_path)
     assert result.returncode == 2 and "Traceback" not in result.stderr, result.stderr
     lines = result.stderr.strip().splitlines()
     assert len(lines) == 1 and "project" in lines[0], result.stderr
