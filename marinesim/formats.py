@@ -170,6 +170,8 @@ register(Format("nemoh", "rao", "NEMOH v2/v3 project, given by its Nemoh.cal: Mo
                 "marinesim.vessel.nemoh:sniff"))
 register(Format("gdf", "mesh", "WAMIT low-order panels, .gdf", (".gdf",), "marinesim.hull.gdf:read_gdf_mesh"))
 register(Format("pnl", "mesh", "HAMS panel mesh, .pnl", (".pnl",), "marinesim.hull.pnl:read_pnl_mesh"))
+register(Format("nemoh-mesh", "mesh", "NEMOH mesh, .dat (or Capytaine's .mar)", (".dat", ".mar"),
+                "marinesim.hull.nemoh_mesh:read_nemoh_mesh_file", "marinesim.hull.nemoh_mesh:sniff"))
 register(Format("stl", "mesh", "STL, .stl", (".stl",), "marinesim.hull.mesh:read_mesh"))
 register(Format("obj", "mesh", "Wavefront OBJ, .obj", (".obj",), "marinesim.hull.mesh:read_mesh"))
 register(Format("ply", "mesh", "Stanford PLY, .ply", (".ply",), "marinesim.hull.mesh:read_mesh"))

@@ -24,8 +24,10 @@ SOURCES = {
     "hydrostar": (DATA / "hams" / "cylinder" / "Output" / "Hydrostar_format", "Motion_3.rao", "Motion_3.rao"),
     "orcaflex": (DATA / "orcaflex", "cylinder_vessel_type.yml", "cylinder_vessel_type.yml"),
     "pnl": (DATA / "hams" / "cylinder" / "Input", "HullMesh.pnl", "HullMesh.pnl"),
+    "nemoh-mesh": (DATA / "nemoh" / "cube", "Cube.dat", "Cube.dat"),
 }
 """Per reader: the folder it reads from, the file mutated in a copy of it, the file given to the reader."""
+MESHES = ("pnl", "nemoh-mesh")
 
 
 def mutate(text: str, edits: list[tuple[int, str, str]]) -> str:
@@ -65,19 +67,19 @@ def test_mutated_files_give_a_table_or_the_projects_error(tmp_path_factory, name
     target = copy / mutated
     target.write_bytes(mutate(target.read_text(errors="replace"), edits).encode("utf-8", "surrogatepass"))
     try:
-        (load_hull if name == "pnl" else read_rao)(copy / given_file)
+        (load_hull if name in MESHES else read_rao)(copy / given_file)
     except MarinesimError:
         pass
 
 
-@pytest.mark.parametrize("name", ["aqwa", "nemoh", "hydrostar", "orcaflex", "pnl"])
+@pytest.mark.parametrize("name", ["aqwa", "nemoh", "hydrostar", "orcaflex", "pnl", "nemoh-mesh"])
 def test_a_cut_file_is_one_line_at_the_command_line(tmp_path, name):
     folder, mutated, given_file = SOURCES[name]
     copy = tmp_path / "project"
     shutil.copytree(folder, copy)
     target = copy / mutated
     target.write_bytes(target.read_bytes()[: len(target.read_bytes()) // 3])
-    result = cli("hull" if name == "pnl" else "rao", str(copy / given_file), "--json", cwd=tmp_path)
+    result = cli("hull" if name in MESHES else "rao", str(copy / given_file), "--json", cwd=tmp_path)
     assert result.returncode == 2 and "Traceback" not in result.stderr, result.stderr
     lines = result.stderr.strip().splitlines()
     assert len(lines) == 1 and "project" in lines[0], result.stderr
