@@ -87,7 +87,7 @@ def detect(path: Path, kind: str, what: str | None = None) -> Format:
     """
     check_file(path)
     candidates = formats(kind)
-    suffix = path.suffix.lower()
+    suffix = "".join(path.suffixes[-2:]).lower() if path.suffix.lower() == ".gz" else path.suffix.lower()
     by_extension = [fmt for fmt in candidates if suffix in fmt.extensions]
     if len(by_extension) == 1:
         return by_extension[0]
@@ -172,8 +172,11 @@ register(Format("gdf", "mesh", "WAMIT low-order panels, .gdf", (".gdf",), "marin
 register(Format("pnl", "mesh", "HAMS panel mesh, .pnl", (".pnl",), "marinesim.hull.pnl:read_pnl_mesh"))
 register(Format("nemoh-mesh", "mesh", "NEMOH mesh, .dat (or Capytaine's .mar)", (".dat", ".mar"),
                 "marinesim.hull.nemoh_mesh:read_nemoh_mesh_file", "marinesim.hull.nemoh_mesh:sniff"))
-register(Format("stl", "mesh", "STL, .stl", (".stl",), "marinesim.hull.mesh:read_mesh"))
-register(Format("obj", "mesh", "Wavefront OBJ, .obj", (".obj",), "marinesim.hull.mesh:read_mesh"))
-register(Format("ply", "mesh", "Stanford PLY, .ply", (".ply",), "marinesim.hull.mesh:read_mesh"))
+register(Format("stl", "mesh", "STL, .stl (or gzipped, .stl.gz)", (".stl", ".stl.gz"),
+                "marinesim.hull.mesh:read_mesh"))
+register(Format("obj", "mesh", "Wavefront OBJ, .obj (or .obj.gz)", (".obj", ".obj.gz"),
+                "marinesim.hull.mesh:read_mesh"))
+register(Format("ply", "mesh", "Stanford PLY, .ply (or .ply.gz)", (".ply", ".ply.gz"),
+                "marinesim.hull.mesh:read_mesh"))
 register(Format("gltf", "mesh", "glTF 2.0, .glb or .gltf", (".glb", ".gltf"), "marinesim.hull.mesh:read_mesh"))
 register(Format("off", "mesh", "Object File Format, .off", (".off",), "marinesim.hull.mesh:read_mesh"))

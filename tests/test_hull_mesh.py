@@ -117,3 +117,24 @@ def test_shipped_samples_are_what_their_generators_make():
         made = hydrostatics(hull)
         assert shipped.volume_m3 == pytest.approx(made.volume_m3, rel=1e-6), name
         assert shipped.wetted_area_m2 == pytest.approx(made.wetted_area_m2, rel=1e-6), name
+
+
+def test_a_gzipped_stl_is_the_stl_and_a_damaged_one_is_one_error(tmp_path):
+    """Hull files often travel gzipped (.stl.gz): read as the STL inside, to the same hydrostatics; a cut archive
+    and one that would expand beyond the bound are refused naming the file, before anything is allocated."""
+    import gzip
+
+    from marinesim.hull import mesh as mesh_module
+
+    source = ROOT / "hulls" / "wigley.stl"
+    packed = tmp_path / "wigley.stl.gz"
+    packed.write_bytes(gzip.compress(source.read_bytes()))
+    assert hydrostatics(load_hull(packed)).volume_m3 == hydrostatics(load_hull(source)).volume_m3
+    cut = tmp_path / "cut.stl.gz"
+    cut.write_bytes(packed.read_bytes()[:400])
+    with pytest.raises(FileFormatError, match=r"cut\.stl\.gz: cannot decompress"):
+        load_hull(cut)
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(mesh_module, "MAX_GUNZIPPED_BYTES", 1000)
+        with pytest.raises(FileFormatError, match="decompresses to more than"):
+            load_hull(packed)

@@ -14,10 +14,13 @@ placing it in the body frame (:func:`to_body_frame`) are shared with the visual 
 from __future__ import annotations
 
 import contextlib
+import gzip
 import hashlib
+import io
 import logging
 import math
 import warnings
+import zlib
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Iterator
@@ -32,6 +35,8 @@ from marinesim.pose import rotation_y
 
 UNITS = {"m": 1.0, "cm": 0.01, "mm": 0.001, "ft": 0.3048, "in": 0.0254}
 LENGTH_LIMITS_M = (0.5, 600.0)  # no vessel, model or full scale, lies outside these
+MAX_GUNZIPPED_BYTES = 1 << 30
+"""Largest mesh a gzipped file may decompress to (bytes)."""
 CLOSURE_TOLERANCE = 1e-4  # of the wetted area: about a quarter of one panel of the WAMIT tanker
 VOLUME_SPREAD = 1e-3
 """Largest relative difference between the volumes by x, y and z (divergence theorem) of a closed wetted surface:
@@ -126,16 +131,33 @@ def load_mesh(path: str | Path, what: str) -> tuple[Path, trimesh.Trimesh]:
 
 
 def read_mesh(path: Path) -> trimesh.Trimesh:
-    """The triangles of a file in a format trimesh reads (STL, OBJ, PLY, glTF, OFF) as one mesh, in the file's own
-    numbers and axes, with its colours or materials (``visual``); scene transforms applied, nothing merged."""
+    """The triangles of a file in a format trimesh reads (STL, OBJ, PLY, glTF, OFF; STL, OBJ and PLY also
+    gzipped, ``.stl.gz``) as one mesh, in the file's own numbers and axes, with its colours or materials
+    (``visual``); scene transforms applied, nothing merged."""
+    gzipped = path.suffix.lower() == ".gz"
+    source = io.BytesIO(_gunzip(path)) if gzipped else path
+    inner = {"file_type": Path(path.stem).suffix.lower().lstrip(".")} if gzipped else {}
     try:
         with _trimesh_quiet():
-            mesh = trimesh.load(path, force="mesh", process=False)
+            mesh = trimesh.load(source, force="mesh", process=False, **inner)
     except Exception as error:  # trimesh raises many types for unreadable files
         raise FileFormatError(path, None, f"cannot read the mesh: {error}") from None
     if not isinstance(mesh, trimesh.Trimesh):
         raise FileFormatError(path, None, "the file holds no triangle mesh")
     return mesh
+
+
+def _gunzip(path: Path) -> bytes:
+    """The decompressed bytes of a gzipped mesh, at most :data:`MAX_GUNZIPPED_BYTES` (refused beyond: a small
+    file can expand without limit)."""
+    try:
+        with gzip.open(path, "rb") as handle:
+            data = handle.read(MAX_GUNZIPPED_BYTES + 1)
+    except (OSError, EOFError, zlib.error) as error:
+        raise FileFormatError(path, None, f"cannot decompress: {error}") from None
+    if len(data) > MAX_GUNZIPPED_BYTES:
+        raise FileFormatError(path, None, f"decompresses to more than {MAX_GUNZIPPED_BYTES // 2**20} MiB")
+    return data
 
 
 @contextlib.contextmanager
