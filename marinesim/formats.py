@@ -104,8 +104,8 @@ def detect(path: Path, kind: str, what: str | None = None) -> Format:
         for fmt in sniffable:
             if _function(fmt.sniffer)(head):
                 return fmt
-    tried = "" if sniffable else f" {path.suffix!r}"  # the extension alone decided: name it
-    raise FileFormatError(path, None, f"unknown {what or KINDS[kind]} format{tried}; supported: "
+    tried = " (nor does its content match one)" if sniffable else ""
+    raise FileFormatError(path, None, f"unknown {what or KINDS[kind]} format {path.suffix!r}{tried}; supported: "
                           + "; ".join(f"{f.name} ({f.description})" for f in candidates))
 
 

@@ -23,7 +23,7 @@ def test_rao_reports_limits_and_resonances_plots_and_refuses_bad_input(tmp_path)
     assert (tmp_path / "rao.png").stat().st_size > 30_000
     text = cli("rao", str(ROOT / "rao" / "tanker" / "tanker.4")).stdout
     assert "long-wave limits" in text and re.search(r"pitch\s+1\.000\s+ok", text)
-    for args, message in ((("rao", str(scenario)), "unknown RAO format; supported"),
+    for args, message in ((("rao", str(scenario)), "unknown RAO format '.toml' (nor does its content match one)"),
                           (("rao", str(ROOT / "rao" / "s175" / "input.re1"), "--plot", "x.png", "--headings", "head"),
                            "--headings must be comma-separated degrees")):
         refused = cli(*args, cwd=tmp_path)

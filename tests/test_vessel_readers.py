@@ -171,7 +171,8 @@ def test_format_detection_by_extension_and_content(tmp_path):
     assert detect_format(sniffed) == "veres"
     unknown = tmp_path / "notes.dat"
     unknown.write_text("hello world\n")
-    with pytest.raises(FileFormatError, match="unknown RAO format; supported: wamit.*veres.*capytaine.*native"):
+    with pytest.raises(FileFormatError, match=r"unknown RAO format '\.dat' \(nor does its content match one\); "
+                                              "supported: wamit.*veres.*capytaine.*native"):
         read_rao(unknown)
 
 
