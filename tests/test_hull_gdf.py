@@ -53,3 +53,30 @@ def test_malformed_gdf_names_line_and_field(tmp_path, line, text, expected):
     assert str(path) in str(error.value) and expected in str(error.value)
     if line is not None:
         assert f"line {line}" in str(error.value)
+
+
+def test_the_iea15_semisubmersible_gdf_as_its_mesher_wrote_it(tmp_path):
+    """The IEA-15 MW VolturnUS-S panels as the reference turbine ships them for WAMIT (tests/data/iea15): a panel
+    number after each fourth vertex, a closing '0 NPAND' line, the interior free-surface panels of the irregular-
+    frequency removal at z = 0, and volumes by x and z 0.08 % apart. Read, they give the volume and waterplane
+    WAMIT printed for them (VOLZ 20132.0 m^3, C(3,3) 443.05 m^2 at ULEN 1) and its centre of buoyancy to 0.1 %;
+    a failure means a panel number read as a coordinate, the NPAND line refused, or the hull taken as open."""
+    import lzma
+    import re
+
+    data = ROOT / "tests" / "data" / "iea15"
+    path = tmp_path / "IEA-15-240-RWT.gdf"
+    path.write_bytes(lzma.decompress((data / "IEA-15-240-RWT.gdf.xz").read_bytes()))
+    printed = (data / "IEA-15-240-RWT-UMaineSemi_1stOrder.out.excerpt").read_text()
+    volz = float(re.search(r"VOLX,VOLY,VOLZ\):\s+\S+\s+\S+\s+(\S+)", printed).group(1))
+    c33 = float(re.search(r"C\(3,3\),C\(3,4\),C\(3,5\):\s+(\S+)", printed).group(1))
+    zb = float(re.search(r"\(Xb,Yb,Zb\):\s+\S+\s+\S+\s+(\S+)", printed).group(1))
+    statics = hydrostatics(load_hull(path))
+    assert statics.volume_m3 == pytest.approx(volz, abs=0.05)
+    assert statics.waterplane_area_m2 == pytest.approx(c33, abs=0.005)
+    assert statics.centre_of_buoyancy_m[2] == pytest.approx(zb, rel=1e-3)
+    lines = path.read_text().splitlines()
+    lines[-1] = "2   NPAND"
+    path.write_text("\n".join(lines) + "\n")
+    with pytest.raises(FileFormatError, match="NPAND > 0: dipole panels"):
+        read_gdf(path)

@@ -1,7 +1,8 @@
 """WAMIT low-order geometry files (``.gdf``) -> triangles in the body frame.
 
 Layout (WAMIT User Manual, section 6.1): a title line; ``ULEN GRAV``; ``ISX ISY``; ``NPAN``;
-then ``NPAN`` panels of four vertices ``X Y Z`` each, in free format. Vertices are ordered
+then ``NPAN`` panels of four vertices ``X Y Z`` each, in free format (as meshers write them, possibly
+with the panel's number after its fourth vertex, and a closing ``NPAND`` line of 0 dipole panels). Vertices are ordered
 counter-clockwise seen from the fluid, so the right-hand normal points out of the body
 (CONVENTIONS: x forward, z up, the waterline at z = 0, lengths in the file's units, usually m).
 A panel with two equal vertices is a triangle. ``ISX = 1`` means only the half ``x >= 0`` is
@@ -44,15 +45,23 @@ def read_gdf(path: str | Path) -> tuple[GdfHeader, np.ndarray, np.ndarray]:
     count = _leading(path, lines, 4, ["NPAN (number of panels)"], parse_int)[0]
     if count <= 0:
         raise FileFormatError(path, 4, f"NPAN must be > 0, got {count}")
+    last = max((i for i, line in enumerate(lines) if line.strip()), default=0)
+    if last >= 4 and "NPAND" in lines[last].upper():  # WAMIT v7's closing line: the number of dipole panels
+        if parse_int(path, last + 1, lines[last].split()[0], "NPAND (number of dipole panels)") != 0:
+            raise FileFormatError(path, last + 1, "NPAND > 0: dipole panels (thin plates) are not read")
+        lines = lines[:last]
     tokens = Tokens(path, lines, start=4)
     if 12 * count > tokens.remaining:  # refused before the panels are allocated
         raise FileFormatError(path, 4, f"file ends early: expected {12 * count} numbers for NPAN {count} panels "
                                        f"(X Y Z of 4 vertices each), the file holds {tokens.remaining}")
+    numbered = tokens.remaining == 13 * count  # a panel number after each fourth vertex
     corners = np.empty((count, 4, 3))
     for p in range(count):
         for v in range(4):
             for axis, name in enumerate("XYZ"):
                 corners[p, v, axis] = tokens.float(f"{name} of vertex {v + 1} of panel {p + 1} (of {count})")
+        if numbered:
+            tokens.int(f"the number of panel {p + 1}")
     if not tokens.at_end():
         raise FileFormatError(path, tokens.line, f"unexpected data after the {count} panels of NPAN")
     if header.isx:
