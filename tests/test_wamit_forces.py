@@ -158,16 +158,19 @@ def test_header_lines_and_modes_above_6_are_skipped(tmp_path):
     assert any("header line 1" in note for note in read.notes)
 
 
-def test_partial_heading_sets_are_refused_naming_the_headings_covered(tmp_path):
-    """A .3 computed for 0-90 deg only cannot give a sea from the other side: refused (not wrapped round the
-    circle), and the message names the headings the file covers."""
+def test_a_partial_heading_set_makes_a_table_of_what_it_covers(tmp_path):
+    """A .3 computed for 0-90 deg only cannot give a sea from the other side: the table covers 0..90 deg (and the
+    margin), is not wrapped round the circle, and within it equals the RAOs solved from the whole set."""
+    (tmp_path / "whole").mkdir()
+    whole = read_rao(copy_set(tmp_path / "whole"))
     path = copy_set(tmp_path)
     three = tmp_path / "tanker.3"
     three.write_text("\n".join(line for line in three.read_text().splitlines()
                                if float(line.split()[1]) <= 90.0) + "\n")
-    with pytest.raises(FileFormatError, match=r"gap .*covers heading\(s\) 0, 10, .*, 90 deg only") as error:
-        read_rao(path)
-    assert error.value.path == path
+    table = read_rao(path)
+    assert table.covered_text() == "345..105 deg (tabulated 0..90)"
+    beta = np.radians(np.full(table.omega.size, 45.0))
+    np.testing.assert_allclose(table(table.omega, beta), whole(table.omega, beta), rtol=1e-12, atol=1e-12)
 
 
 def test_alternative_form_1_mass_from_the_displaced_volume(tmp_path):
