@@ -110,3 +110,42 @@ def test_fuzz_capytaine_netcdf(barge, tmp_path_factory, cut, flips):
         read_rao(path)
     except MarinesimError:
         pass
+
+
+@pytest.mark.parametrize("depth, omega, dropped", [
+    (np.inf, [0.0, 0.3, 0.7, 1.0, np.inf], "omega 0 and inf (added-mass limits"),
+    (10.0, [0.01, 0.3, 0.7, 1.0], "0.01 rad/s (non-finite coefficients"),
+])
+def test_frequencies_capytaine_leaves_without_waves_or_values_are_dropped_with_a_note(tmp_path, depth, omega, dropped):
+    """Capytaine solves omega = 0 and infinity (added mass only: its excitation is NaN there) and leaves NaN
+    where its finite-depth Green function fails (kh < 0.1). Such datasets, as users have them, used to be refused
+    whole; the usable frequencies now give the RAOs the same dataset gives without the others, and a note says
+    which were dropped."""
+    mesh = capytaine.mesh_parallelepiped(size=(LENGTH, BEAM, DRAFT + 1.0), resolution=(12, 4, 3),
+                                         center=(0.0, 0.0, (1.0 - DRAFT) / 2))
+    body = capytaine.FloatingBody(mesh=mesh, dofs=capytaine.rigid_body_dofs(rotation_center=(0, 0, 0)),
+                                  center_of_mass=(0.0, 0.0, -0.5)).immersed_part()
+    body.inertia_matrix = body.compute_rigid_body_inertia(rho=1025.0)
+    body.hydrostatic_stiffness = body.compute_hydrostatic_stiffness(rho=1025.0)
+    problems = xarray.Dataset(coords={"omega": omega, "wave_direction": [0.0, math.pi],
+                                      "radiating_dof": list(body.dofs), "water_depth": [depth], "rho": [1025.0]})
+    dataset = capytaine.BEMSolver().fill_dataset(problems, body)
+    everything, usable = tmp_path / "all.nc", tmp_path / "usable.nc"
+    capytaine.export_dataset(everything, dataset)
+    capytaine.export_dataset(usable, dataset.sel(omega=[0.3, 0.7, 1.0]))
+    table, reference = read_rao(everything), read_rao(usable)
+    np.testing.assert_array_equal(table.omega, [0.3, 0.7, 1.0])
+    np.testing.assert_allclose(table.values, reference.values, rtol=1e-12, atol=1e-15)
+    assert any(note.startswith("frequencies dropped") and dropped in note for note in table.notes), table.notes
+
+
+def test_a_single_heading_dataset_is_a_partial_table(barge, tmp_path):
+    """Capytaine run for head seas only (one wave_direction): a table covering 165..195 deg whose RAOs there are
+    the full dataset's (issue 19: a single heading is allowed, the table says what it covers)."""
+    dataset, _ = barge
+    path = tmp_path / "head.nc"
+    capytaine.export_dataset(path, dataset.sel(wave_direction=[math.pi]))
+    table, whole = read_rao(path), read_rao(barge[1])
+    assert table.covered_text() == "165..195 deg (tabulated 180)"
+    head = np.full(OMEGA.size, math.pi)
+    np.testing.assert_allclose(table(OMEGA, head), whole(OMEGA, head), rtol=1e-12, atol=1e-15)

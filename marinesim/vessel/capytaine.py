@@ -95,11 +95,13 @@ def _solve(path: Path, dataset, roll_damping: float) -> RaoTable:
     damping = matrix("radiation_damping", True).real
     force = _excitation(path, dataset, frequency_dim)
     directions = np.asarray(dataset["wave_direction"].values, dtype=float)
-    for name, array in (("inertia_matrix", mass), ("hydrostatic_stiffness", stiffness), ("added_mass", added),
-                        ("radiation_damping", damping), ("excitation force", force)):
+    for name, array in (("inertia_matrix", mass), ("hydrostatic_stiffness", stiffness)):
         if not np.all(np.isfinite(array)):
             raise FileFormatError(path, None, f"{name} has non-finite values")
     notes = [f"Capytaine {dataset.attrs.get('capytaine_version', '?')}; equation of motion solved per frequency"]
+    omega, added, damping, force, dropped = _usable_frequencies(path, omega, added, damping, force)
+    if dropped:
+        notes.append(dropped)
     extra = np.zeros((6, 6))
     if roll_damping > 0.0:
         extra[3, 3] = roll_damping * _critical_roll_damping(path, omega, mass, added, stiffness)
@@ -134,6 +136,28 @@ def _solve(path: Path, dataset, roll_damping: float) -> RaoTable:
                           source=str(path), source_format="capytaine", notes=tuple(notes), depth=depth)
     except ParameterError as error:
         raise FileFormatError(path, None, str(error)) from None
+
+
+def _usable_frequencies(path: Path, omega: np.ndarray, added: np.ndarray, damping: np.ndarray,
+                        force: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, str]:
+    """The frequencies at which Capytaine gave everything an RAO needs, and a note on those dropped: omega = 0 and
+    infinity (added-mass limits; no wave there, so no excitation) and frequencies with non-finite coefficients
+    (Capytaine leaves NaN where its finite-depth Green function is not defined, kh < 0.1). Refuses a dataset
+    with none left."""
+    finite = (np.isfinite(added).all(axis=(1, 2)) & np.isfinite(damping).all(axis=(1, 2))
+              & np.isfinite(force).all(axis=(1, 2)))
+    limits = ~np.isfinite(omega) | (omega <= 0.0)
+    keep = finite & ~limits
+    if not keep.any():
+        raise FileFormatError(path, None, "no frequency with finite coefficients and excitation: nothing to solve")
+    parts = []
+    if limits.any():
+        parts.append("omega " + " and ".join(f"{w:g}" for w in omega[limits]) + " (added-mass limits, no waves)")
+    if (~finite & ~limits).any():
+        parts.append(", ".join(f"{w:.4g}" for w in omega[~finite & ~limits]) + " rad/s (non-finite coefficients, "
+                     "as Capytaine leaves them where its finite-depth Green function fails, kh < 0.1)")
+    note = f"frequencies dropped: {'; '.join(parts)}" if parts else ""
+    return omega[keep], added[keep], damping[keep], force[keep], note
 
 
 def _open(path: Path):
