@@ -153,7 +153,7 @@ register(Format("veres", "rao", "VERES/ShipX .re1 motion transfer functions", ("
                 "marinesim.vessel.veres:read_veres", "marinesim.vessel.veres:sniff"))
 register(Format("capytaine", "rao", "Capytaine NetCDF dataset (.nc) with hydrodynamic coefficients", (".nc",),
                 "marinesim.vessel.capytaine:read_capytaine", "marinesim.vessel.capytaine:sniff",
-                options=("roll_damping",)))
+                options=("roll_damping", "body")))
 register(Format("native", "rao", "marinesim table (.csv, .txt, .rao; see marinesim/vessel/native.py)",
                 (".csv", ".txt", ".rao"), "marinesim.vessel.native:read_native", "marinesim.vessel.native:sniff"))
 register(Format("wamit-forces", "rao", "WAMIT .1, .3, .hst and .frc side by side: RAOs solved from forces and mass",

@@ -149,3 +149,40 @@ def test_a_single_heading_dataset_is_a_partial_table(barge, tmp_path):
     assert table.covered_text() == "165..195 deg (tabulated 180)"
     head = np.full(OMEGA.size, math.pi)
     np.testing.assert_allclose(table(OMEGA, head), whole(OMEGA, head), rtol=1e-12, atol=1e-15)
+
+
+def test_a_body_of_a_two_body_dataset_moves_as_capytaine_solves_them_coupled(tmp_path):
+    """Two barges side by side 30 m apart, solved by Capytaine as one dataset: the table of each body is its six
+    DOFs of the coupled 12-DOF equation of motion, equal to Capytaine's own post_pro.rao for that body
+    (conjugated, and referred to the wave at the body's rotation centre); without a body name, or with an unknown
+    one, the file is refused naming its bodies."""
+    def barge(name: str, y: float):
+        mesh = capytaine.mesh_parallelepiped(size=(LENGTH, BEAM, DRAFT + 1.0), resolution=(12, 4, 3),
+                                             center=(0.0, y, (1.0 - DRAFT) / 2))
+        return capytaine.FloatingBody(mesh=mesh, dofs=capytaine.rigid_body_dofs(rotation_center=(0, y, 0)),
+                                      center_of_mass=(0.0, y, -0.5), name=name).immersed_part()
+
+    both = barge("port", 15.0) + barge("starboard", -15.0)
+    both.inertia_matrix = both.compute_rigid_body_inertia(rho=1025.0)
+    both.hydrostatic_stiffness = both.compute_hydrostatic_stiffness(rho=1025.0)
+    omega, directions = np.array([0.3, 0.6, 0.9]), np.array([0.0, math.pi / 2])
+    problems = xarray.Dataset(coords={"omega": omega, "wave_direction": directions, "radiating_dof": list(both.dofs),
+                                      "water_depth": [np.inf], "rho": [1025.0]})
+    dataset = capytaine.BEMSolver().fill_dataset(problems, both)
+    path = tmp_path / "two.nc"
+    capytaine.export_dataset(path, dataset)
+    theirs = capytaine.post_pro.rao(dataset).transpose("omega", "wave_direction", "radiating_dof")
+    for name, y in (("port", 15.0), ("starboard", -15.0)):
+        table = read_rao(path, body=name)
+        assert table.reference_point == pytest.approx((0.0, y, 0.0))
+        columns = theirs.sel(radiating_dof=[f"{name}__{d}" for d in ("Surge", "Sway", "Heave", "Roll", "Pitch",
+                                                                     "Yaw")]).values
+        k = omega**2 / 9.81
+        for b, beta in enumerate(directions):
+            shift = np.exp(1j * k * y * math.sin(beta))[:, None]
+            ours = table(omega, np.full(omega.size, beta))
+            np.testing.assert_allclose(ours, np.conj(columns[:, b, :]) * shift, rtol=1e-6, atol=1e-9)
+    with pytest.raises(FileFormatError, match="a dataset of bodies port, starboard: name the one"):
+        read_rao(path)
+    with pytest.raises(FileFormatError, match="no body 'bow'"):
+        read_rao(path, body="bow")

@@ -33,6 +33,7 @@ def add(commands: argparse._SubParsersAction) -> None:
     p.add_argument("--ulen", type=float, help="WAMIT length scale ULEN, m (default: from the .gdf beside)")
     p.add_argument("--roll-damping-pct", type=float, default=0.0,
                    help="Capytaine: extra linear roll damping, %% of critical (default 0)")
+    p.add_argument("--body", help="Capytaine: the body whose motions to read from a dataset of several bodies")
     p.set_defaults(handler=handle)
 
 
@@ -48,7 +49,8 @@ def handle(args: argparse.Namespace) -> int:
     speed = None if args.speed_kn is None else require_finite("speed", args.speed_kn) * KNOT
     if args.write:
         check_extension(args.write)  # before reading a large file
-    table = read_rao(args.file, ulen=args.ulen, roll_damping=require_finite("roll damping", args.roll_damping_pct) / 100)
+    roll_damping = require_finite("roll damping", args.roll_damping_pct) / 100
+    table = read_rao(args.file, ulen=args.ulen, roll_damping=roll_damping, body=args.body)
     notes = write_rao(table, args.write, speed=speed) if args.write else ()  # refused before anything is printed
     report = rao_summary(table)
     if args.write:

@@ -202,6 +202,8 @@ class VesselOptions(Section):
         None, description="WAMIT length scale ULEN; absent: from the .gdf beside the .4")
     roll_damping_pct: Annotated[float, Quantity("% of critical", ge=0.0, lt=100.0)] = Field(
         0.0, description="extra linear roll damping (Capytaine datasets)")
+    rao_body: str | None = Field(None, description="the body whose motions to read from a Capytaine dataset of "
+                                                   "several (solved coupled, every body free)")
     hull: str | None = Field(None, description=f"hull mesh ({', '.join(extensions('mesh'))}): the wake")
     hull_units: Literal[tuple(UNITS)] = Field("m", description="the hull mesh's length units")
     hull_scale: Annotated[float, Quantity(gt=0.0)] = Field(1.0, description="geometric scale (50 for a 1:50 model)")

@@ -183,7 +183,8 @@ def _check_speed(where: str, rao: RaoTable, speed_kn: float) -> None:
 def _vessel(path: Path, options: VesselOptions) -> Vessel:
     rao_path = _checked("vessel.rao", lambda: _file(path, options.rao))
     rao = _checked("vessel.rao", lambda: read_rao(rao_path, ulen=options.ulen_m,
-                                                   roll_damping=options.roll_damping_pct / 100.0))
+                                                   roll_damping=options.roll_damping_pct / 100.0,
+                                                   body=options.rao_body))
     _check_speed("vessel.speed_kn", rao, options.speed_kn)
     speed = options.speed_kn * KNOT
     hull_path, hull = _mesh(path, options, "hull", HULL_OPTIONS, load_hull)

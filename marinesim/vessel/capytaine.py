@@ -22,7 +22,11 @@ per unit wave at the reference point (CONVENTIONS, "Transfer functions"), whose 
 
 with ``k`` from ``w^2 = g k tanh(k h)`` in the dataset's ``water_depth`` h, which the table keeps
 (:attr:`RaoTable.depth`). Capytaine 2.x datasets store no ``rotation_center``: the mesh origin
-is then assumed (reference point (0, 0, 0), no shift) and a note says so. Needs ``xarray`` with
+is then assumed (reference point (0, 0, 0), no shift) and a note says so.
+
+A dataset of several bodies (DOFs named ``<body>__Surge`` ...) is solved as the coupled system of all
+of them, every body free, and the table is the motions of the one named by ``body`` about its own
+rotation centre. Needs ``xarray`` with
 a NetCDF engine (``pip install 'marinesim[capytaine]'``).
 """
 
@@ -50,21 +54,22 @@ def sniff(head: bytes) -> bool:
     return head.startswith((b"\x89HDF", b"CDF"))
 
 
-def read_capytaine(path: str | Path, *, roll_damping: float = 0.0) -> RaoTable:
-    """RAOs from a Capytaine dataset; ``roll_damping`` is the extra roll damping (fraction of critical)."""
+def read_capytaine(path: str | Path, *, roll_damping: float = 0.0, body: str | None = None) -> RaoTable:
+    """RAOs from a Capytaine dataset; ``roll_damping`` is the extra roll damping (fraction of critical) of the
+    body whose motions are read; ``body`` names that body in a dataset of several (required there)."""
     path = Path(path)
     if not (math.isfinite(roll_damping) and 0.0 <= roll_damping < 1.0):
         raise ParameterError(f"roll damping must be in [0, 1) of critical, got {roll_damping!r}")
     dataset = _open(path)
     try:
-        return _solve(path, dataset, roll_damping)
+        return _solve(path, dataset, roll_damping, body)
     except MarinesimError:
         raise
     except (KeyError, ValueError, IndexError, TypeError) as error:  # a dataset shaped unlike Capytaine's
         raise FileFormatError(path, None, f"unexpected dataset structure ({type(error).__name__}: {error})") from None
 
 
-def _solve(path: Path, dataset, roll_damping: float) -> RaoTable:
+def _solve(path: Path, dataset, roll_damping: float, body: str | None) -> RaoTable:
     """The RAO table from an opened dataset (see the module docstring)."""
     missing = [name for name in NEEDED if name not in dataset]
     has_excitation = "excitation_force" in dataset or {"diffraction_force", "Froude_Krylov_force"} <= set(dataset)
@@ -79,9 +84,11 @@ def _solve(path: Path, dataset, roll_damping: float) -> RaoTable:
         raise FileFormatError(path, None, "no 'omega' coordinate (angular frequency)")
     frequency_dim = dataset["omega"].dims[0]
     dataset = dataset.sortby("omega")
+    dofs = [str(v) for v in dataset["radiating_dof"].values]
+    chosen = _body_dofs(path, dofs, body)
 
     def matrix(name: str, per_frequency: bool) -> np.ndarray:
-        data = _dof_ordered(path, _complex(dataset[name]), ("influenced_dof", "radiating_dof"))
+        data = _dof_ordered(path, _complex(dataset[name]), ("influenced_dof", "radiating_dof"), dofs)
         dims = ((frequency_dim,) if per_frequency else ()) + ("influenced_dof", "radiating_dof")
         try:
             return np.asarray(data.transpose(*dims).values)
@@ -93,7 +100,7 @@ def _solve(path: Path, dataset, roll_damping: float) -> RaoTable:
     stiffness = matrix("hydrostatic_stiffness", False).real
     added = matrix("added_mass", True).real
     damping = matrix("radiation_damping", True).real
-    force = _excitation(path, dataset, frequency_dim)
+    force = _excitation(path, dataset, frequency_dim, dofs)
     directions = np.asarray(dataset["wave_direction"].values, dtype=float)
     for name, array in (("inertia_matrix", mass), ("hydrostatic_stiffness", stiffness)):
         if not np.all(np.isfinite(array)):
@@ -102,15 +109,19 @@ def _solve(path: Path, dataset, roll_damping: float) -> RaoTable:
     omega, added, damping, force, dropped = _usable_frequencies(path, omega, added, damping, force)
     if dropped:
         notes.append(dropped)
-    extra = np.zeros((6, 6))
+    extra = np.zeros_like(mass)
+    roll = chosen[3]
     if roll_damping > 0.0:
-        extra[3, 3] = roll_damping * _critical_roll_damping(path, omega, mass, added, stiffness)
+        block = np.ix_(chosen, chosen)
+        own_added = added[:, chosen][:, :, chosen]
+        extra[roll, roll] = roll_damping * _critical_roll_damping(path, omega, mass[block], own_added,
+                                                                  stiffness[block])
         notes.append(f"extra linear roll damping {100 * roll_damping:g} % of critical "
-                     f"({extra[3, 3]:.10g} N m s/rad)")
+                     f"({extra[roll, roll]:.10g} N m s/rad)")
     impedance = (-omega[:, None, None] ** 2 * (mass + added) - 1j * omega[:, None, None] * (damping + extra)
                  + stiffness)
     try:
-        motion = np.linalg.solve(impedance[:, None], force[..., None])[..., 0]  # (omega, direction, dof)
+        motion = np.linalg.solve(impedance[:, None], force[..., None])[..., 0][..., chosen]  # (omega, direction, 6)
     except np.linalg.LinAlgError:
         raise FileFormatError(path, None, "the equation of motion is singular at some frequency") from None
     rho = float(dataset["rho"]) if "rho" in dataset.coords else 1025.0
@@ -118,8 +129,13 @@ def _solve(path: Path, dataset, roll_damping: float) -> RaoTable:
     depth = float(dataset["water_depth"]) if "water_depth" in dataset.coords else math.inf
     if not depth > 0.0:
         raise FileFormatError(path, None, f"water_depth must be > 0 m (inf: deep water), got {depth:g}")
+    if len(dofs) > 6:
+        notes.append(f"body {body!r} of a dataset of {len(dofs) // 6} bodies, solved coupled with every body free")
     if "rotation_center" in dataset.coords:
-        reference = tuple(float(v) for v in dataset["rotation_center"].values)
+        centre = dataset["rotation_center"]
+        if "body" in centre.dims:
+            centre = centre.sel(body=body)
+        reference = tuple(float(v) for v in np.ravel(centre.values))
     else:
         reference = (0.0, 0.0, 0.0)
         notes.append("the dataset stores no rotation_center (Capytaine 2.x): the motions are taken as about "
@@ -196,26 +212,49 @@ def _complex(array):
     return array.sel(complex="re") + 1j * array.sel(complex="im")
 
 
-def _dof_ordered(path: Path, array, dims: tuple[str, ...]):
-    """``array`` with its DOF dimensions in :data:`DOFS` order (names matched case-insensitively)."""
+def _body_dofs(path: Path, dofs: list[str], body: str | None) -> list[int]:
+    """Indices into ``dofs`` (the dataset's, in its order) of the chosen body's surge ... yaw, in :data:`DOFS`
+    order: the six of a single body (named ``Surge`` ...), or those named ``<body>__Surge`` ... of several."""
+    lower = [name.lower() for name in dofs]
+    if sorted(lower) == sorted(DOFS):
+        if body is not None:
+            raise FileFormatError(path, None, f"the dataset holds one body: a body name ({body!r}) is for datasets "
+                                              "of several")
+        return [lower.index(d) for d in DOFS]
+    bodies = list(dict.fromkeys(name.rsplit("__", 1)[0] for name in dofs if "__" in name))
+    if len(bodies) < 2 or any("__" not in name for name in dofs):
+        raise FileFormatError(path, None, f"radiating_dof is {dofs}, expected the six rigid-body DOFs "
+                                          f"{', '.join(DOFS)} of one body, or <body>__<dof> of several")
+    if body is None or body not in bodies:
+        given = "" if body is None else f"no body {body!r}; "
+        raise FileFormatError(path, None, f"{given}a dataset of bodies {', '.join(bodies)}: name the one whose "
+                                          "motions to read (marinesim rao --body, [vessel] rao_body)")
+    own = {name.rsplit("__", 1)[1].lower(): i for i, name in enumerate(dofs) if name.rsplit("__", 1)[0] == body}
+    missing = [d for d in DOFS if d not in own]
+    if missing:
+        raise FileFormatError(path, None, f"body {body!r} has no {', '.join(missing)} DOF: six rigid-body DOFs needed")
+    return [own[d] for d in DOFS]
+
+
+def _dof_ordered(path: Path, array, dims: tuple[str, ...], dofs: list[str]):
+    """``array`` with its DOF dimensions in the order of ``dofs`` (the radiating DOFs of the dataset)."""
     for dim in dims:
         if dim not in array.dims:
             continue
-        names = [str(v).lower() for v in array[dim].values]
-        if sorted(names) != sorted(DOFS):
-            raise FileFormatError(path, None, f"{array.name}: {dim} is {names}, expected the six rigid-body "
-                                              f"DOFs {', '.join(DOFS)}")
-        array = array.isel({dim: [names.index(d) for d in DOFS]})
+        names = [str(v) for v in array[dim].values]
+        if sorted(names) != sorted(dofs):
+            raise FileFormatError(path, None, f"{array.name}: {dim} is {names}, expected {dofs}")
+        array = array.isel({dim: [names.index(d) for d in dofs]})
     return array
 
 
-def _excitation(path: Path, dataset, frequency_dim: str) -> np.ndarray:
+def _excitation(path: Path, dataset, frequency_dim: str, dofs: list[str]) -> np.ndarray:
     if "excitation_force" in dataset:
         force = _complex(dataset["excitation_force"])
     else:
         force = _complex(dataset["diffraction_force"]) + _complex(dataset["Froude_Krylov_force"])
     force.name = "excitation_force"
-    force = _dof_ordered(path, force, ("influenced_dof",))
+    force = _dof_ordered(path, force, ("influenced_dof",), dofs)
     return np.asarray(force.transpose(frequency_dim, "wave_direction", "influenced_dof").values, dtype=complex)
 
 
