@@ -7,6 +7,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from conftest import ROOT
+
 from marinesim.render.hud import AXIS_FLOOR, MARGIN, PAD, TRACE_COLOR, Hud, StripChart, StripHistory, axis_limit
 
 
@@ -106,8 +108,10 @@ def test_the_trace_spans_the_amplitude_over_the_rounded_axis_range(ctx, hud):
     assert rows.size > 0.9 * (right - plot_x) and set(rows) == {zero}
 
 
-def test_charts_stack_at_the_bottom_left(ctx, hud):
-    size = (640, 360)
+def test_charts_stack_at_the_bottom_left_as_many_as_fit(ctx, hud):
+    """Three charts stack at the bottom-left of a target tall enough for them; on a 360 px one only the first
+    two are drawn (the charts keep to the lower 45 %, clear of the vessel in the middle of the picture)."""
+    size = (640, 720)
     t = np.linspace(0.0, 60.0, 601)
     charts = [StripChart(name, "deg", t, 0.3 * np.sin(t)) for name in ("heave", "roll", "pitch")]
     mask = trace_mask(render(ctx, hud, size, charts=charts))
@@ -117,6 +121,10 @@ def test_charts_stack_at_the_bottom_left(ctx, hud):
         assert band.any() and abs(np.nonzero(band)[0].mean() + panel_y - (plot_y + half)) < 2
     assert hud.chart_plot_rect(size, 2, 3)[1] + hud.chart_size[1] == size[1] - MARGIN
     assert not mask[:, MARGIN + hud.chart_size[0]:].any()
+    small = (640, 360)
+    assert hud.charts_that_fit(small) == 2
+    rows = np.nonzero(trace_mask(render(ctx, hud, small, charts=charts)))[0]
+    assert rows.min() >= hud.chart_plot_rect(small, 0, 2)[1] and rows.min() > 0.55 * small[1] - hud.chart_size[1]
 
 
 def test_history_keeps_the_last_span_wraps_and_resets():
@@ -172,3 +180,39 @@ def test_draws_at_two_sizes_without_gl_errors_and_releases(ctx):
     hud.release()
     hud.release()
     assert ctx.error == "GL_NO_ERROR"
+
+
+def test_the_font_follows_the_target_within_its_range():
+    """14 px on a 1280 x 720 target, in proportion to the smaller ratio, never under 9 px nor over 20 px."""
+    from marinesim.render.hud import font_px_for
+
+    assert font_px_for((1280, 720)) == 14 and font_px_for((2560, 1440)) == 20 and font_px_for((1920, 1080)) == 20
+    assert font_px_for((640, 360)) == 9 and font_px_for((1280, 360)) == 9 and font_px_for((960, 540)) == 10
+
+
+@pytest.mark.slow
+def test_the_hud_leaves_the_vessel_in_view_with_an_alarm_up():
+    """The helideck exercise at 920 s (pitch alarm, red helideck light, four criteria, three charts): the HUD
+    against the same frame without it, the vessel against the frame without the vessel. What was wrong (issue
+    22): the banners sat over the hull and at 640 x 360 the HUD covered 77 % of the frame and 98 % of the rig.
+    Now the middle of the picture stays free: at most 5 % of the vessel under the HUD at 1280 x 720 and 40 %
+    (the derrick's top behind the text) at 640 x 360, both banners drawn, and no line cut by the frame's edge."""
+    from marinesim.render.offscreen import Offscreen
+    from marinesim.render.renderer import RenderOptions
+    from marinesim.scenario import load_scenario
+
+    scenario = load_scenario(ROOT / "configs" / "training" / "helideck_landing.toml")
+    for size, most in (((1280, 720), 0.05), ((640, 360), 0.40)):
+        with Offscreen(scenario, size, solver="off", options=RenderOptions(reproducible=True)) as view:
+            view.go_to(920.0)
+            banners = view.scene.banners()
+            with_hud, bare = view.frame(hud=True).astype(int), view.frame(hud=False).astype(int)
+            view.scene.renderer.vessel.shown = False
+            no_vessel = view.frame(hud=False).astype(int)
+        vessel = np.abs(bare - no_vessel).sum(axis=2) > 30
+        hud = np.abs(with_hud - bare).sum(axis=2) > 30
+        assert len(banners) == 2 and vessel.mean() > 0.01
+        assert hud[vessel].mean() <= most, f"{size}: {hud[vessel].mean():.1%} of the vessel under the HUD"
+        red = (with_hud[..., 0] > 150) & (with_hud[..., 1] < 80) & (with_hud[..., 2] < 80)
+        assert red[size[1] // 2:].sum() > 20 * red[:size[1] // 2].sum(), "the alarm banner is not at the bottom"
+        assert not hud[:, -2:].any(), f"{size}: the HUD runs into the right edge (a line cut off)"

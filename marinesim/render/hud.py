@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import moderngl
 import numpy as np
@@ -30,8 +30,15 @@ MARGIN = 8
 PAD = 6
 """Gap between a panel's edge and its text, px."""
 CHART_SIZE = (360, 70)
-"""A strip chart's panel, px (taller if the font needs it)."""
+"""A strip chart's panel at :data:`FONT_PX`, px (scaled with the font; taller if the font needs it)."""
+FONT_PX = 14
+"""The HUD's font size on a 1280 x 720 target; :func:`font_px_for` scales it with the target."""
+FONT_PX_RANGE = (9, 20)
+"""The smallest font still read at a glance and the largest worth the room it takes, px."""
 CHART_GAP = 6
+CHART_SHARE = 0.45
+"""The strip charts take at most this share of the target's height (the lowest-priority ones are left out): the
+orbit camera puts the vessel in the middle of the picture, and the charts must not reach it."""
 AXIS_FLOOR = 0.1
 """The smallest half-range of a chart's y axis, in the chart's unit (m, deg): a flat signal stays flat."""
 
@@ -166,12 +173,19 @@ class _Layer:
         self.lines.append(np.hstack([ends, np.tile(color, (len(ends), 1))]))
 
 
+def font_px_for(size: tuple[int, int]) -> int:
+    """The HUD's font size for a target of ``size`` (w, h) px: :data:`FONT_PX` at 1280 x 720, in proportion to
+    the smaller of the two ratios, within :data:`FONT_PX_RANGE` (so a small window keeps most of its view)."""
+    low, high = FONT_PX_RANGE
+    return int(min(max(round(FONT_PX * min(size[0] / 1280, size[1] / 720)), low), high))
+
+
 class Hud:
     """Draws the HUD with ``ctx`` onto whatever framebuffer is bound; ``font_px`` is the font size.
 
     ``advance`` (the monospace character width) and ``line_height`` are in pixels."""
 
-    def __init__(self, ctx: moderngl.Context, font_px: int = 14) -> None:
+    def __init__(self, ctx: moderngl.Context, font_px: int = FONT_PX) -> None:
         self.ctx = ctx
         font = ImageFont.truetype(findfont(FontProperties(family="DejaVu Sans Mono")), font_px)
         ascent, descent = font.getmetrics()
@@ -187,7 +201,9 @@ class Hud:
         self.atlas = ctx.texture(image.size, 1, image.tobytes(), alignment=1)
         self.atlas.filter = (moderngl.NEAREST, moderngl.NEAREST)
         self.atlas.repeat_x = self.atlas.repeat_y = False
-        self.chart_size = (CHART_SIZE[0], max(CHART_SIZE[1], 3 * self.line_height + 12))
+        self.font_px = font_px
+        scale = font_px / FONT_PX
+        self.chart_size = (round(CHART_SIZE[0] * scale), max(round(CHART_SIZE[1] * scale), 3 * self.line_height + 12))
 
         self.text_program = ctx.program(vertex_shader=shader_source("hud_text.vert"),
                                         fragment_shader=shader_source("hud_text.frag"))
@@ -212,15 +228,30 @@ class Hud:
         (each: a panel about 360x70 px with its title, unit, current value, the min/max of the y axis as labels,
         a zero line, and the trace as a line strip, y range symmetric about zero and rounded up to a 1-2-5 step,
         never below a small floor so a flat signal is not magnified noise); `help_lines`, when given, centred on a
-        darker panel; ``panel`` (text, level) rows at the top-right (below the text block if the two
-        would overlap), each coloured by its level (:data:`LEVEL_COLORS`); ``messages`` in amber at
-        the top-centre, below the top panels if they leave no room between them; ``banners`` centred
-        under the messages; ``slider`` along the bottom, right of the charts (:meth:`slider_rect`).
+        darker panel; ``panel`` (text, level) rows at the top-right (under the text block, on the left, if the
+        two would overlap), each coloured by its level (:data:`LEVEL_COLORS`); ``messages`` in amber at
+        the top-centre, below the top panels if they leave no room between them; ``banners`` along the
+        bottom, right of the charts, the first lowest (the middle of the picture, where the orbit camera puts
+        the vessel, stays free); ``slider`` along the bottom, right of the charts (:meth:`slider_rect`).
+        Charts that would take more than :data:`CHART_SHARE` of the height are left out (the last first), all of
+        them while a banner has no room beside them, and a line longer than the target is wide is cut with ``~``.
 
         The bound framebuffer, its viewport and the enable flags (blend, depth test, face culling) are
         restored afterwards; the blend function is left at ``moderngl.DEFAULT_BLENDING`` and texture
         unit 0 holds the glyph atlas."""
         width, height = size
+        fits = max(int((width - 2 * MARGIN - 2 * PAD) // self.advance), 1)
+
+        def clip(text: str) -> str:
+            return text if len(text) <= fits else text[:fits - 1] + "~"
+
+        lines = [clip(line) for line in lines]
+        panel = [(clip(text), level) for text, level in panel]
+        banners = [replace(banner, text=clip(banner.text)) for banner in banners]
+        charts = list(charts)[:self.charts_that_fit(size)]
+        widest = max((self._text_size([b.text], 2 * PAD)[0] for b in banners), default=0)
+        if widest > width - 3 * MARGIN - self.chart_size[0]:
+            charts = []  # a banner needs the bottom band and there is no room beside the charts: it comes first
         base = _Layer()
         if lines:
             self._text_block(base, MARGIN, MARGIN, lines, PAD, PANEL_COLOR)
@@ -231,24 +262,29 @@ class Hud:
         if panel:
             rows = [(text, LEVEL_COLORS[level]) for text, level in panel]
             right = self._text_size([text for text, _ in rows], PAD)
-            if width - MARGIN - right[0] < 2 * MARGIN + left[0]:
-                right_y = 2 * MARGIN + left[1]  # no room beside the text block: below it
-            self._text_block(base, width - MARGIN - right[0], right_y, rows, PAD, PANEL_COLOR)
-        below = MARGIN  # the top of the free space at the top-centre
+            right_x = width - MARGIN - right[0]
+            if right_x < 2 * MARGIN + left[0]:  # no room beside the text block: under it, on the left (the
+                right_x, right_y = MARGIN, 2 * MARGIN + left[1]  # middle of the picture, the vessel's, stays free)
+            self._text_block(base, right_x, right_y, rows, PAD, PANEL_COLOR)
         if messages:
+            messages = [clip(m) for m in messages]
             box_w, box_h = self._text_size(messages, PAD)
             x, y = (width - box_w) // 2, MARGIN
             if right_y > MARGIN or x < 2 * MARGIN + left[0] or x + box_w > width - 2 * MARGIN - right[0]:
                 y = MARGIN + max(left[1], right_y - MARGIN + right[1]) + MARGIN  # below the top panels
             self._text_block(base, max(x, MARGIN), y, [(m, MESSAGE_COLOR) for m in messages], PAD, PANEL_COLOR)
-            below = y + box_h + MARGIN
-        elif banners:
-            below = MARGIN + max(left[1], right_y - MARGIN + right[1]) + MARGIN
+        above = height - MARGIN  # the bottom band right of the charts, filled upwards
+        if slider is not None:
+            above -= SLIDER_HEIGHT + 2 * PAD + self.line_height + MARGIN
+        beside = MARGIN + (self.chart_size[0] + MARGIN if charts else 0)
         for banner in banners:
             box_w, box_h = self._text_size([banner.text], 2 * PAD)
-            self._text_block(base, max((width - box_w) // 2, MARGIN), below, [(banner.text, banner.color)], 2 * PAD,
-                             banner.background)
-            below += box_h + MARGIN // 2
+            x = beside + max((width - MARGIN - beside - box_w) // 2, 0)
+            if x + box_w > width - MARGIN:  # no room beside the charts: centred, over them
+                x = max((width - box_w) // 2, MARGIN)
+            above -= box_h
+            self._text_block(base, x, above, [(banner.text, banner.color)], 2 * PAD, banner.background)
+            above -= MARGIN // 2
         if slider is not None:
             self._slider(base, slider, *self.slider_rect(size, bool(charts)))
         layers = [base]
@@ -271,6 +307,10 @@ class Hud:
             for layer in layers:
                 self._render(layer)
             ctx.viewport = viewport
+
+    def charts_that_fit(self, size: tuple[int, int]) -> int:
+        """How many strip charts fit in :data:`CHART_SHARE` of the height of a target of ``size`` (w, h) px."""
+        return max(int((CHART_SHARE * size[1] - MARGIN + CHART_GAP) // (self.chart_size[1] + CHART_GAP)), 0)
 
     def chart_plot_rect(self, size: tuple[int, int], index: int, count: int) -> tuple[int, int, int, int, int]:
         """Where chart ``index`` of ``count`` is drawn, px from the top-left: ``(panel_x, panel_y,

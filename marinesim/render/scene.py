@@ -19,7 +19,7 @@ from marinesim.gl import is_software
 from marinesim.render import CAMERAS
 from marinesim.render.camera import BridgeCamera, FreeCamera, OrbitCamera
 from marinesim.render.clock import FrameClock
-from marinesim.render.hud import ALARM_COLOR, LEVEL_COLORS, Banner, Hud, Slider, StripHistory
+from marinesim.render.hud import ALARM_COLOR, LEVEL_COLORS, Banner, Hud, Slider, StripHistory, font_px_for
 from marinesim.render.renderer import Renderer, RenderOptions
 from marinesim.scenario import Scenario
 from marinesim.session.exercise import Exercise, quiet
@@ -122,6 +122,9 @@ class Scene:
         """The frame into the bound framebuffer of ``size`` (w, h) px."""
         self.renderer.draw(self.camera.eye(self.sim.pose()), size)
         if hud:
+            if font_px_for(size) != self.hud.font_px:  # the HUD keeps its share of a resized target
+                self.hud.release()
+                self.hud = Hud(self.ctx, font_px_for(size))
             charts = [self.history.chart(name, unit) for name, _, unit in CHARTED] if self.sim.vessel else []
             self.hud.draw(size, self.hud_lines(), charts, help_lines, self.criteria_panel(), self.exercise.messages(),
                           self.banners(), self.slider)
