@@ -2,6 +2,7 @@
 WAMIT one, and bad input refused in one line."""
 
 import json
+import math
 import re
 
 import pytest
@@ -29,3 +30,18 @@ def test_rao_reports_limits_and_resonances_plots_and_refuses_bad_input(tmp_path)
         refused = cli(*args, cwd=tmp_path)
         assert refused.returncode == 2 and message in refused.stderr and "Traceback" not in refused.stderr
         assert len(refused.stderr.strip().splitlines()) == 1 and not (tmp_path / "x.csv").exists()
+
+
+def test_the_rao_plot_shows_the_periods_where_the_waves_and_the_resonances_are():
+    """The tanker's table runs to 160 s: its plot ends at 30 s, where the 5-25 s of ocean waves fill the axis
+    (issue 22: the useful band was squeezed into the left edge); the semisubmersible's pitch resonance near 37 s
+    keeps its plot running past it (1.5 times the period)."""
+    from marinesim.vessel import read_rao
+    from marinesim.vessel.plot import period_axis_end
+    from marinesim.vessel.summary import resonance_periods
+
+    tanker = read_rao(ROOT / "rao" / "tanker" / "tanker.4")
+    assert 2 * math.pi / tanker.omega[0] > 150.0 and period_axis_end(tanker) == 30.0
+    semisub = read_rao(ROOT / "rao" / "semisub" / "semisub.4")
+    pitch = resonance_periods(semisub)["pitch"]
+    assert pitch > 30.0 and period_axis_end(semisub) == pytest.approx(1.5 * pitch)

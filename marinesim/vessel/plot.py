@@ -9,6 +9,7 @@ from typing import Mapping
 import numpy as np
 
 from marinesim.vessel.rao import DOFS, ROTATIONS, RaoTable
+from marinesim.vessel.summary import resonance_periods
 
 
 def _pyplot():
@@ -20,9 +21,24 @@ def _pyplot():
     return plt
 
 
+PERIOD_SHOWN_S = 30.0
+"""The period axis of an RAO plot ends here (s), where ocean waves carry little energy, unless a resonance lies
+beyond it (:func:`period_axis_end`)."""
+
+
+def period_axis_end(table: RaoTable) -> float:
+    """Where an RAO plot's period axis ends (s): :data:`PERIOD_SHOWN_S`, or 1.5 times the longest heave, roll or
+    pitch resonance period if that is longer, never beyond the table's longest period (a table to 160 s would
+    otherwise squeeze the 5-25 s where the waves are into the plot's left edge)."""
+    longest = 2 * math.pi / table.omega[0]
+    resonances = [p for p in resonance_periods(table).values() if p is not None]
+    return min(max(PERIOD_SHOWN_S, 1.5 * max(resonances, default=0.0)), longest)
+
+
 def plot_rao(table: RaoTable, path: Path, headings_deg: list[float], speed: float = 0.0) -> None:
-    """Amplitude (m/m, deg/m) and phase (deg, lead) of all six DOFs against period, one curve
-    per relative heading (deg, waves towards: 180 head seas), at ``speed`` (m/s)."""
+    """Amplitude (m/m, deg/m) and phase (deg, lead) of all six DOFs against period (to
+    :func:`period_axis_end`), one curve per relative heading (deg, waves towards: 180 head seas), at ``speed``
+    (m/s)."""
     plt = _pyplot()
     omega = np.geomspace(table.omega[0], table.omega[-1], 400)
     period = 2 * math.pi / omega
@@ -44,6 +60,7 @@ def plot_rao(table: RaoTable, path: Path, headings_deg: list[float], speed: floa
     axes[0, 0].legend(title="heading (180 = head)", fontsize=8)
     for ax in axes[-1]:
         ax.set_xlabel("wave period [s]")
+        ax.set_xlim(0.0, period_axis_end(table))
     fig.suptitle(f"RAOs: {Path(table.source).name} ({table.source_format}), {speed:.3g} m/s")
     fig.tight_layout()
     fig.savefig(path, dpi=90, format="png")
