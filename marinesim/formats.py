@@ -153,12 +153,12 @@ register(Format("veres", "rao", "VERES/ShipX .re1 motion transfer functions", ("
                 "marinesim.vessel.veres:read_veres", "marinesim.vessel.veres:sniff"))
 register(Format("capytaine", "rao", "Capytaine NetCDF dataset (.nc) with hydrodynamic coefficients", (".nc",),
                 "marinesim.vessel.capytaine:read_capytaine", "marinesim.vessel.capytaine:sniff",
-                options=("roll_damping", "body")))
+                options=("roll_damping", "body", "rigid_body")))
 register(Format("native", "rao", "marinesim table (.csv, .txt, .rao; see marinesim/vessel/native.py)",
                 (".csv", ".txt", ".rao"), "marinesim.vessel.native:read_native", "marinesim.vessel.native:sniff"))
 register(Format("wamit-forces", "rao", "WAMIT .1, .3, .hst and .frc side by side: RAOs solved from forces and mass",
                 (".3", ".1", ".hst", ".frc"), "marinesim.vessel.wamit_forces:read_wamit_forces",
-                "marinesim.vessel.wamit_forces:sniff", options=("ulen",)))
+                "marinesim.vessel.wamit_forces:sniff", options=("ulen", "rigid_body")))
 register(Format("hydrostar", "rao", "HydroStar/HAMS .rao motion RAOs (one DOF per file, the six side by side)",
                 (".rao",), "marinesim.vessel.hydrostar:read_hydrostar", "marinesim.vessel.hydrostar:sniff"))
 register(Format("orcaflex", "rao", "OrcaFlex vessel type displacement RAOs (.yml, .yaml)", (".yml", ".yaml"),

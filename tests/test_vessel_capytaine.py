@@ -186,3 +186,35 @@ def test_a_body_of_a_two_body_dataset_moves_as_capytaine_solves_them_coupled(tmp
         read_rao(path)
     with pytest.raises(FileFormatError, match="no body 'bow'"):
         read_rao(path, body="bow")
+
+
+def test_the_scenarios_mass_moorings_and_damping_give_capytaines_own_raos(barge, tmp_path):
+    """The barge's mass given as a scenario gives it (mass, centre of gravity, radii of gyration) replaces the
+    dataset's inertia to the same RAOs; a mooring stiffness in surge, sway and yaw and a linear damping in roll
+    (issue 19, item 11) give the RAOs Capytaine's own post_pro.rao gives with the same matrices, a second
+    implementation. A failure means the parallel-axis mass matrix or the external matrices' signs or places are
+    wrong (the moored surge falls by orders of magnitude in long waves, so a missing stiffness shows)."""
+    from marinesim.vessel.body import RigidBody
+
+    dataset, path = barge
+    inertia = dataset["inertia_matrix"].sel(influenced_dof=["Roll", "Pitch", "Yaw"],
+                                            radiating_dof=["Roll", "Pitch", "Yaw"]).values
+    mass = float(dataset["inertia_matrix"].sel(influenced_dof="Surge", radiating_dof="Surge"))
+    cog = np.array([0.0, 0.0, -0.5])
+    at_cog = np.diag(inertia) - mass * (cog @ cog - cog * cog)
+    same = RigidBody(mass, tuple(cog), tuple(np.sqrt(at_cog / mass)))
+    np.testing.assert_allclose(read_rao(path, rigid_body=same).values, read_rao(path).values, rtol=1e-9, atol=1e-12)
+    stiffness, damping = np.zeros((6, 6)), np.zeros((6, 6))
+    stiffness[0, 0] = stiffness[1, 1] = 2.0e5
+    stiffness[5, 5] = 5.0e7
+    damping[3, 3] = 3.0e6
+    moored = read_rao(path, rigid_body=RigidBody(external_stiffness=stiffness, external_damping=damping))
+    dofs = list(dataset["radiating_dof"].values)
+    as_array = lambda m: xarray.DataArray(m, coords={"influenced_dof": dofs, "radiating_dof": dofs})  # noqa: E731
+    theirs = capytaine.post_pro.rao(dataset, dissipation=as_array(damping), stiffness=as_array(stiffness))
+    theirs = theirs.transpose("omega", "wave_direction", "radiating_dof").values
+    for b, beta in enumerate(DIRECTIONS):
+        np.testing.assert_allclose(moored(OMEGA, np.full(OMEGA.size, beta)), np.conj(theirs[:, b, :]),
+                                   rtol=1e-6, atol=1e-9)
+    free = read_rao(path)
+    assert abs(moored.values[0, 0, 0, 0]) < 0.05 * abs(free.values[0, 0, 0, 0])  # surge at 0.05 rad/s, following

@@ -254,3 +254,57 @@ def test_command_line_refuses_a_broken_set_in_one_line(tmp_path):
     stderr = result.stderr.strip().splitlines()
     assert result.returncode == 2 and "Traceback" not in result.stderr and len(stderr) == 1, result.stderr
     assert str(tmp_path / "tanker.hst") in stderr[0]
+
+
+def test_the_scenarios_mass_and_external_damping_stand_in_for_the_frc(tmp_path):
+    """The tanker's .1/.3/.hst without its .frc, with the mass, centre of gravity and radii of gyration of the
+    .frc's matrix and its external damping given as a scenario gives them (issue 19, item 6): surge, heave and
+    pitch equal WAMIT's own .4 as the .frc's do (within PEAK_SHARE), and without the damping the beam-sea roll
+    peak grows as above. Sway, roll and yaw differ (1.7, 1.1 and 9 % of their peaks) because the tanker's .frc
+    leaves out couplings a rigid body has (sway-yaw m x_g, the product m x_g z_g). A failure means the
+    parallel-axis mass matrix, the rho assumed without a .frc, or the external matrix is wrong."""
+    from marinesim.vessel.body import RigidBody
+
+    frc = read_force_set(TANKER / "tanker.3").frc
+    m = frc.mass[0, 0]
+    cog = (-frc.mass[4, 2] / m, frc.mass[3, 2] / m, frc.mass[4, 0] / m)  # m x_g, m y_g, m z_g as WAMIT lays them out
+    assert cog == pytest.approx(frc.cog)
+    c = np.array(cog)
+    at_cog = np.diag(frc.mass[3:, 3:]) - m * (c @ c - c * c)  # the .frc's moments of inertia moved to the CoG
+    body = RigidBody(m, cog, tuple(np.sqrt(at_cog / m)), external_damping=frc.damping)
+    ours = body.mass_matrix()  # a rigid body's: it also has the sway-yaw coupling m x_g and the product m x_g z_g,
+    np.testing.assert_allclose(np.diag(ours), np.diag(frc.mass), rtol=1e-9)  # which the tanker's .frc leaves out
+    path = copy_set(tmp_path, (".1", ".3", ".hst"))
+    computed, wamit = read_rao(path, rigid_body=body), read_rao(TANKER / "tanker.4")
+    share = worst_share(computed, wamit)
+    assert np.all(share[[0, 2, 4]] < PEAK_SHARE), share
+    assert any("from the scenario: mass" in note for note in computed.notes)
+    undamped = read_rao(path, rigid_body=RigidBody(m, cog, body.radii_of_gyration_m))
+    beam = list(np.round(np.degrees(wamit.beta))).index(90.0)
+    assert np.abs(undamped.values[0, beam, :, 3]).max() > 2.0 * np.abs(wamit.values[0, beam, :, 3]).max()
+    with pytest.raises(FileFormatError, match="missing: tanker.frc"):
+        read_rao(path)
+
+
+def test_a_scenario_gives_the_mass_and_is_refused_where_the_file_has_its_own_raos(tmp_path):
+    """[vessel] mass_kg, cog_m, radii_of_gyration_m and external_damping on the tanker's force set without a
+    .frc: the export runs. The same keys on the .4 (WAMIT's RAOs, nothing solved here) or a mass without its
+    centre of gravity end in one line naming the key, exit 2."""
+    from conftest import VESSEL_SCENARIO, cli, write
+
+    copy_set(tmp_path, (".1", ".3", ".hst", ".gdf"))
+    damping = "[" + ", ".join("[" + ", ".join("1.56e9" if i == j == 3 else "0" for j in range(6)) + "]"
+                              for i in range(6)) + "]"
+    keys = (f"mass_kg = 9.462e7\ncog_m = [3.93, 0.0, 2.5]\nradii_of_gyration_m = [17.02, 63.8, 65.3]\n"
+            f"external_damping = {damping}\n")
+    base = VESSEL_SCENARIO.replace(f'hull = "{ROOT / "hulls" / "tanker.gdf"}"\n', "").replace(
+        "speed_kn = 6.0", "speed_kn = 0.0").replace("duration_s = 120.0", "duration_s = 10.0")
+    forces = write(tmp_path, base.replace(str(ROOT / "rao" / "tanker" / "tanker.4"), str(tmp_path / "tanker.3"))
+                   .replace("[vessel]\n", "[vessel]\n" + keys), "forces.toml")
+    result = cli("export", str(forces), "--out", "m.csv", "--quiet", cwd=tmp_path)
+    assert result.returncode == 0, result.stderr
+    for text, expected in ((base.replace("[vessel]\n", "[vessel]\n" + keys), "apply to RAOs solved here"),
+                           (base.replace("[vessel]\n", "[vessel]\nmass_kg = 9.462e7\n"), "vessel.mass_kg")):
+        refused = cli("export", str(write(tmp_path, text, "bad.toml")), "--out", "b.csv", "--quiet", cwd=tmp_path)
+        lines = refused.stderr.strip().splitlines()
+        assert refused.returncode == 2 and len(lines) == 1 and expected in lines[0], refused.stderr

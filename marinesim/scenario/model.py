@@ -8,6 +8,7 @@ Each numeric key carries one :class:`Quantity` (unit and range); the loader
 from __future__ import annotations
 
 import json
+import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Annotated, Any, Literal, TypeVar, get_args, get_origin
@@ -122,6 +123,15 @@ def _refuse(key: str, message: str) -> PydanticCustomError:
 
 Point = Annotated[list[float], Quantity("m"), Field(min_length=3, max_length=3),
                   _expecting("[x, y, z] in metres (body frame)")]
+def _finite_rows(rows: list[list[float]]) -> list[list[float]]:
+    if not all(math.isfinite(v) for row in rows for v in row):
+        raise PydanticCustomError("finite", "a matrix of finite numbers (SI)")
+    return rows
+
+
+Matrix6 = Annotated[list[Annotated[list[float], Field(min_length=6, max_length=6)]], Field(min_length=6, max_length=6),
+                    AfterValidator(_finite_rows),
+                    _expecting("6 rows of 6 numbers (SI: N/m, N m/rad; N s/m, N m s/rad)")]
 HULL_OPTIONS = {"hull_units": "units", "hull_scale": "scale", "hull_axes": "axes", "hull_draft_m": "draft",
                 "hull_trim_deg": "trim_deg"}
 """Scenario key -> :func:`~marinesim.hull.load_hull` option."""
@@ -204,6 +214,15 @@ class VesselOptions(Section):
         0.0, description="extra linear roll damping (Capytaine datasets)")
     rao_body: str | None = Field(None, description="the body whose motions to read from a Capytaine dataset of "
                                                    "several (solved coupled, every body free)")
+    mass_kg: Annotated[float | None, Quantity("kg", gt=0.0, le=1e10)] = Field(
+        None, description="the vessel's mass, with cog_m and radii_of_gyration_m: replaces the file's for RAOs "
+                          "solved here (WAMIT .1/.3/.hst, Capytaine)")
+    cog_m: Point | None = Field(None, description="centre of gravity, [x, y, z] in the body frame")
+    radii_of_gyration_m: Annotated[list[float] | None, Quantity("m", gt=0.0), Field(min_length=3, max_length=3)] = (
+        Field(None, description="roll, pitch, yaw radii of gyration about the centre of gravity"))
+    external_stiffness: Matrix6 | None = Field(
+        None, description="6 x 6 stiffness added to the hydrostatic (moorings), about the reference point")
+    external_damping: Matrix6 | None = Field(None, description="6 x 6 linear damping added to the radiation damping")
     hull: str | None = Field(None, description=f"hull mesh ({', '.join(extensions('mesh'))}): the wake")
     hull_units: Literal[tuple(UNITS)] = Field("m", description="the hull mesh's length units")
     hull_scale: Annotated[float, Quantity(gt=0.0)] = Field(1.0, description="geometric scale (50 for a 1:50 model)")
@@ -222,6 +241,14 @@ class VesselOptions(Section):
     points: dict[Annotated[str, AfterValidator(_identifier)], Point] = Field(
         default_factory=dict, description="named points on board, [x, y, z] in the body frame "
                                           "(x forward, y port, z up)")
+
+    @model_validator(mode="after")
+    def _mass_comes_whole(self) -> VesselOptions:
+        given = [key for key in ("mass_kg", "cog_m", "radii_of_gyration_m") if getattr(self, key) is not None]
+        if given and len(given) < 3:
+            missing = [key for key in ("mass_kg", "cog_m", "radii_of_gyration_m") if key not in given]
+            raise _refuse(given[0], f"needs {' and '.join(missing)} too (a mass, where it is and how it is spread)")
+        return self
 
     @model_validator(mode="after")
     def _options_need_their_mesh(self) -> VesselOptions:

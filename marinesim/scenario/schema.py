@@ -11,6 +11,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from marinesim import formats
 from marinesim.constants import KNOT
 from marinesim.criteria.interruptions import DEFAULT_TIPPING_COEFFICIENT
@@ -23,6 +25,7 @@ from marinesim.scenario.model import (HULL_OPTIONS, VISUAL_MESH_OPTIONS, WAVE_PA
                                       validate)
 from marinesim.sea.build import wave_system
 from marinesim.sea.seastate import SeaState
+from marinesim.vessel.body import RigidBody
 from marinesim.vessel.rao import RaoTable
 from marinesim.vessel.read import read_rao
 
@@ -180,11 +183,20 @@ def _check_speed(where: str, rao: RaoTable, speed_kn: float) -> None:
                             f"{low / KNOT:.3g}..{high / KNOT:.3g} kn")
 
 
+def _rigid_body(options: VesselOptions) -> RigidBody:
+    """The scenario's mass and external matrices (about the RAO table's reference point)."""
+    def matrix(rows: list[list[float]] | None) -> np.ndarray | None:
+        return None if rows is None else np.array(rows, dtype=float)
+    return RigidBody(options.mass_kg, None if options.cog_m is None else tuple(options.cog_m),
+                     None if options.radii_of_gyration_m is None else tuple(options.radii_of_gyration_m),
+                     matrix(options.external_stiffness), matrix(options.external_damping))
+
+
 def _vessel(path: Path, options: VesselOptions) -> Vessel:
     rao_path = _checked("vessel.rao", lambda: _file(path, options.rao))
     rao = _checked("vessel.rao", lambda: read_rao(rao_path, ulen=options.ulen_m,
                                                    roll_damping=options.roll_damping_pct / 100.0,
-                                                   body=options.rao_body))
+                                                   body=options.rao_body, rigid_body=_rigid_body(options)))
     _check_speed("vessel.speed_kn", rao, options.speed_kn)
     speed = options.speed_kn * KNOT
     hull_path, hull = _mesh(path, options, "hull", HULL_OPTIONS, load_hull)

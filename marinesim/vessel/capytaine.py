@@ -44,6 +44,7 @@ import numpy as np
 from marinesim.errors import FileFormatError, MarinesimError, ParameterError
 from marinesim.formats import check_file
 from marinesim.sea.dispersion import k_from_omega
+from marinesim.vessel.body import RigidBody
 from marinesim.vessel.rao import DOFS, RaoTable, make_table
 
 NEEDED = ("added_mass", "radiation_damping", "inertia_matrix", "hydrostatic_stiffness")
@@ -54,22 +55,24 @@ def sniff(head: bytes) -> bool:
     return head.startswith((b"\x89HDF", b"CDF"))
 
 
-def read_capytaine(path: str | Path, *, roll_damping: float = 0.0, body: str | None = None) -> RaoTable:
+def read_capytaine(path: str | Path, *, roll_damping: float = 0.0, body: str | None = None,
+                   rigid_body: RigidBody | None = None) -> RaoTable:
     """RAOs from a Capytaine dataset; ``roll_damping`` is the extra roll damping (fraction of critical) of the
-    body whose motions are read; ``body`` names that body in a dataset of several (required there)."""
+    body whose motions are read; ``body`` names that body in a dataset of several (required there);
+    ``rigid_body`` (the scenario's) replaces that body's inertia and adds its external stiffness and damping."""
     path = Path(path)
     if not (math.isfinite(roll_damping) and 0.0 <= roll_damping < 1.0):
         raise ParameterError(f"roll damping must be in [0, 1) of critical, got {roll_damping!r}")
     dataset = _open(path)
     try:
-        return _solve(path, dataset, roll_damping, body)
+        return _solve(path, dataset, roll_damping, body, rigid_body or RigidBody())
     except MarinesimError:
         raise
     except (KeyError, ValueError, IndexError, TypeError) as error:  # a dataset shaped unlike Capytaine's
         raise FileFormatError(path, None, f"unexpected dataset structure ({type(error).__name__}: {error})") from None
 
 
-def _solve(path: Path, dataset, roll_damping: float, body: str | None) -> RaoTable:
+def _solve(path: Path, dataset, roll_damping: float, body: str | None, rigid_body: RigidBody) -> RaoTable:
     """The RAO table from an opened dataset (see the module docstring)."""
     missing = [name for name in NEEDED if name not in dataset]
     has_excitation = "excitation_force" in dataset or {"diffraction_force", "Froude_Krylov_force"} <= set(dataset)
@@ -109,15 +112,22 @@ def _solve(path: Path, dataset, roll_damping: float, body: str | None) -> RaoTab
     omega, added, damping, force, dropped = _usable_frequencies(path, omega, added, damping, force)
     if dropped:
         notes.append(dropped)
+    own = np.ix_(chosen, chosen)
+    if rigid_body.mass_kg is not None:
+        mass = mass.copy()
+        mass[own] = rigid_body.mass_matrix()
+    stiffness = stiffness.copy()
+    stiffness[own] += rigid_body.stiffness()
+    if rigid_body.given:
+        notes.append(rigid_body.describe())
     extra = np.zeros_like(mass)
+    extra[own] = rigid_body.damping()
     roll = chosen[3]
     if roll_damping > 0.0:
-        block = np.ix_(chosen, chosen)
         own_added = added[:, chosen][:, :, chosen]
-        extra[roll, roll] = roll_damping * _critical_roll_damping(path, omega, mass[block], own_added,
-                                                                  stiffness[block])
-        notes.append(f"extra linear roll damping {100 * roll_damping:g} % of critical "
-                     f"({extra[roll, roll]:.10g} N m s/rad)")
+        critical = roll_damping * _critical_roll_damping(path, omega, mass[own], own_added, stiffness[own])
+        extra[roll, roll] += critical
+        notes.append(f"extra linear roll damping {100 * roll_damping:g} % of critical ({critical:.10g} N m s/rad)")
     impedance = (-omega[:, None, None] ** 2 * (mass + added) - 1j * omega[:, None, None] * (damping + extra)
                  + stiffness)
     try:

@@ -12,7 +12,9 @@ normalisation (user manual, "Output": ``A = Abar rho L^k``, ``B = Bbar rho w L^k
 translation-translation, mixed and rotation-rotation pairs; ``C = Cbar rho g L^(k-1)``;
 ``F = Fbar rho g A L^m`` with m = 2 for forces and 3 for moments; ``L = ULEN``) is undone here, once,
 with ``rho`` from the ``.frc``, ``g`` and ``ULEN`` from the ``.gdf``. ``M``, ``B_ext``, ``C_ext`` come from
-the ``.frc`` (:mod:`marinesim.vessel.wamit_frc`) in SI. The PER column, header lines and modes above 6
+the ``.frc`` (:mod:`marinesim.vessel.wamit_frc`) in SI, or from the scenario
+(:class:`~marinesim.vessel.body.RigidBody`): its mass replaces the ``.frc``'s (which is then not needed), its
+external matrices add to the ``.frc``'s. The PER column, header lines and modes above 6
 are read as for the ``.4`` (:mod:`marinesim.vessel.wamit`); the zero- and infinite-frequency lines of the
 ``.1`` (PER <= 0) carry no RAO and are skipped.
 """
@@ -28,12 +30,16 @@ import numpy as np
 from marinesim.constants import RHO_SEAWATER
 from marinesim.errors import FileFormatError
 from marinesim.tokens import parse_float, parse_int, read_text
+from marinesim.vessel.body import RigidBody, rigid_body_mass
 from marinesim.vessel.rao import DOFS, RaoTable
 from marinesim.vessel.wamit import Settings, frc_form, sniff_forces, table_from
 from marinesim.vessel.wamit_rows import RIGID_MODES, ignored_modes_note, read_rows
 from marinesim.vessel.wamit_frc import ForceControl, read_frc
 
 SET = (".1", ".3", ".hst", ".frc")
+NO_FRC = ForceControl(form=0, rho=None, vcg=0.0, cog=None, radii=None, mass=None, damping=np.zeros((6, 6)),
+                      stiffness=np.zeros((6, 6)))
+"""What a force set without a ``.frc`` has (its mass then comes from the scenario)."""
 """The files of a WAMIT force set, in the order they are read."""
 ROTATION = np.arange(RIGID_MODES) >= 3
 PAIR_POWER = ROTATION[:, None].astype(int) + ROTATION[None, :].astype(int)
@@ -64,35 +70,48 @@ class ForceSet:
     notes: tuple[str, ...]
 
 
-def read_wamit_forces(path: str | Path, *, ulen: float | None = None) -> RaoTable:
-    """RAOs (internal convention) solved from the WAMIT ``.1``, ``.3``, ``.hst`` and ``.frc`` named like ``path``."""
+def read_wamit_forces(path: str | Path, *, ulen: float | None = None, rigid_body: RigidBody | None = None) -> RaoTable:
+    """RAOs (internal convention) solved from the WAMIT ``.1``, ``.3``, ``.hst`` and ``.frc`` named like ``path``;
+    ``rigid_body`` (the scenario's) gives the mass instead of the ``.frc`` and adds its external matrices."""
     path = Path(path)
-    fs = read_force_set(path, ulen=ulen)
-    motions = solve_motions(path.with_suffix(".frc"), fs.omega, fs.mass, fs.added, fs.damping + fs.frc.damping,
-                            fs.stiffness + fs.frc.stiffness, fs.forces, fs.periods)
+    rigid_body = rigid_body or RigidBody()
+    fs = read_force_set(path, ulen=ulen, mass=rigid_body.mass_matrix())
+    motions = solve_motions(path.with_suffix(".frc"), fs.omega, fs.mass, fs.added,
+                            fs.damping + fs.frc.damping + rigid_body.damping(),
+                            fs.stiffness + fs.frc.stiffness + rigid_body.stiffness(), fs.forces, fs.periods)
     order = np.argsort(fs.omega)
     notes = list(fs.notes)
+    source = (f"the mass of {path.with_suffix('.frc').name} (IALTFRC {fs.frc.form}, {fs.mass[0, 0]:.6g} kg)"
+              if rigid_body.mass_kg is None else "the scenario's mass")
     notes.append(f"RAOs solved from {path.with_suffix('.1').name}, {path.with_suffix('.3').name}, "
-                 f"{path.with_suffix('.hst').name} with the mass of {path.with_suffix('.frc').name} "
-                 f"(IALTFRC {fs.frc.form}, {fs.mass[0, 0]:.6g} kg)" + _external(fs.frc))
+                 f"{path.with_suffix('.hst').name} with {source}" + _external(fs.frc))
+    if rigid_body.given:
+        notes.append(rigid_body.describe())
     if path.with_suffix(".4").is_file():
         notes.append(f"{path.with_suffix('.4').name} beside holds WAMIT's own RAOs of this set")
     return table_from(path, fs.omega[order], fs.headings_deg, motions[:, order], rho=fs.rho, settings=fs.settings,
                       notes=tuple(notes) + (fs.settings.describe(),), source_format="wamit-forces")
 
 
-def read_force_set(path: str | Path, *, ulen: float | None = None) -> ForceSet:
-    """The ``.1``, ``.3``, ``.hst`` and ``.frc`` named like ``path``, WAMIT's normalisation undone (module docstring)."""
+def read_force_set(path: str | Path, *, ulen: float | None = None, mass: np.ndarray | None = None) -> ForceSet:
+    """The ``.1``, ``.3``, ``.hst`` and ``.frc`` named like ``path``, WAMIT's normalisation undone (module docstring).
+    With ``mass`` (6 x 6, SI, the scenario's) the ``.frc`` is optional: it then gives only rho and the external
+    matrices."""
     path = Path(path)
     files = {suffix: path.with_suffix(suffix) for suffix in SET}
+    if mass is not None and not files[".frc"].is_file():
+        del files[".frc"]
     missing = [f.name for f in files.values() if not f.is_file()]
     if missing:
         raise FileFormatError(path, None, "RAOs from WAMIT forces need " + ", ".join(f.name for f in files.values())
                               + " side by side; missing: " + ", ".join(missing))
     settings = Settings.beside(files[".3"], ulen=ulen)
     notes = list(settings.notes)
-    frc = read_frc(files[".frc"], frc_form(path.with_suffix(".cfg")))
+    frc = read_frc(files[".frc"], frc_form(path.with_suffix(".cfg"))) if ".frc" in files else NO_FRC
     rho = frc.rho if frc.rho is not None else RHO_SEAWATER
+    if ".frc" not in files:
+        notes.append(f"no {path.with_suffix('.frc').name}: rho {RHO_SEAWATER:g} kg/m^3 assumed for WAMIT's "
+                     "normalisation (it scales the hydrodynamic terms against the scenario's mass)")
     per_1, added, damping, coefficient_notes = read_coefficients(files[".1"], settings.header_lines)
     stiffness, stiffness_notes = read_hydrostatics(files[".hst"], settings.header_lines)
     periods, headings, forces, force_notes = read_rows(files[".3"], header_lines=settings.header_lines,
@@ -101,7 +120,7 @@ def read_force_set(path: str | Path, *, ulen: float | None = None) -> ForceSet:
     at = _match_periods(files[".3"], periods, files[".1"], per_1)
     omega = settings.omega(periods, files[".3"])
     length = settings.ulen ** (3 + PAIR_POWER)
-    mass, mass_notes = mass_matrix(files[".frc"], frc, rho)
+    mass, mass_notes = (mass, []) if mass is not None else mass_matrix(files[".frc"], frc, rho)
     return ForceSet(omega=omega, periods=periods, headings_deg=headings, mass=mass,
                     added=added[at] * rho * length,
                     damping=damping[at] * rho * omega[:, None, None] * length,
@@ -211,19 +230,6 @@ def mass_matrix(frc_path: Path, frc: ForceControl, rho: float) -> tuple[np.ndarr
         raise FileFormatError(frc_path, None, "the mass matrix must have positive mass and inertia on its "
                                               f"diagonal, got {', '.join(f'{v:.4g}' for v in diagonal)}")
     return mass, notes
-
-
-def rigid_body_mass(mass: float, cog: tuple[float, float, float], inertia: np.ndarray) -> np.ndarray:
-    """WAMIT's 6 x 6 rigid-body mass matrix about the body origin: ``mass`` (kg) at ``cog`` (m, body frame),
-    ``inertia`` (3 x 3, kg m^2) about the origin."""
-    x, y, z = cog
-    skew = np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])
-    matrix = np.zeros((6, 6))
-    matrix[:3, :3] = mass * np.eye(3)
-    matrix[:3, 3:] = -mass * skew
-    matrix[3:, :3] = mass * skew
-    matrix[3:, 3:] = inertia
-    return matrix
 
 
 def solve_motions(frc_path: Path, omega: np.ndarray, mass: np.ndarray, added: np.ndarray, damping: np.ndarray,
