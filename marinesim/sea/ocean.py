@@ -359,11 +359,6 @@ class Ocean:
         even, odd = plus + minus, 1j * (plus - minus)
         return np.stack([even.real, even.imag, odd.real, odd.imag], axis=-1).astype(np.float32)
 
-    @property
-    def states(self) -> int:
-        """States so far: the initial sea and one after each ramp."""
-        return len(self._ramps) + 1
-
     def grid_omega(self) -> np.ndarray:
         """Circular frequency ``w(|q|)`` of every cell of every tile (rad/s), float64 (tiles, N, N)."""
         return np.stack([omega_from_k(np.hypot(*tile.wavenumbers()), self.sea.depth, self.sea.g)

@@ -25,7 +25,6 @@ reference ``(XMTN, 0, ZMTN)`` in VERES's frame (x from midships, z above the bas
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 
 import numpy as np
