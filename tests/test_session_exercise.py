@@ -173,20 +173,22 @@ def _coloured(image: np.ndarray, colour: tuple[float, ...]) -> int:
 
 
 def test_the_picture_shows_the_criteria_and_the_message(tmp_path):
-    """Rendered, the criteria panel sits at the right in its level's colour and the event's
-    message in amber: a hundred pixels or more of each colour than in the same scene without them."""
+    """Rendered, the criteria panel sits at the top in its level's colour (beside the text block, or under it on
+    the left in a narrow picture) and the event's message in amber: a hundred pixels or more of each colour than
+    in the same scene without them."""
     from marinesim.render.hud import LEVEL_COLORS, MESSAGE_COLOR
 
+    size = (1280, 720)  # the HUD's 14 px font (a smaller target draws a smaller one, and fewer pixels)
     scenario = load_scenario(write(tmp_path, CONDITIONAL.format(threshold=100.0)))
-    with offscreen(scenario, size=(640, 360), wake=False) as view:
+    with offscreen(scenario, size=size, wake=False) as view:
         view.go_to(205.0)
         image = view.frame()
         level = view.scene.exercise.readings()[0][2]
     plain = load_scenario(write(tmp_path, VESSEL_SCENARIO, "plain.toml"))
-    with offscreen(plain, size=(640, 360), wake=False) as view:
+    with offscreen(plain, size=size, wake=False) as view:
         view.go_to(205.0)
         bare = view.frame()
-    right = (slice(0, 250), slice(320, 640))  # beside the text block, or below it in a narrow picture
+    top = slice(0, 500)
     assert level in ("ok", "caution", "exceeded")
-    assert _coloured(image[right], LEVEL_COLORS[level]) > _coloured(bare[right], LEVEL_COLORS[level]) + 100
-    assert _coloured(image[:250], MESSAGE_COLOR) > _coloured(bare[:250], MESSAGE_COLOR) + 100
+    assert _coloured(image[top], LEVEL_COLORS[level]) > _coloured(bare[top], LEVEL_COLORS[level]) + 100
+    assert _coloured(image[top], MESSAGE_COLOR) > _coloured(bare[top], MESSAGE_COLOR) + 100
