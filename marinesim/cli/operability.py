@@ -30,8 +30,15 @@ def add(commands: argparse._SubParsersAction) -> None:
                    help="relative wave headings, deg (0 following, 90 from starboard, 180 head seas): "
                         "START:STOP:STEP (STOP excluded) or a comma list (default 0:360:15)")
     p.add_argument("--duration-h", type=float, default=3.0, help="exposure of one sea state, h (default 3)")
-    p.add_argument("--alpha", type=float, default=1.0,
-                   help="DNV-ST-N001 alpha factor applied to every limit (forecast uncertainty; default 1)")
+    alpha = p.add_mutually_exclusive_group()
+    alpha.add_argument("--alpha", type=float, default=1.0,
+                       help="DNV-ST-N001 alpha factor: every limiting Hs times it (forecast uncertainty; default 1)")
+    alpha.add_argument("--reference-period-h", type=float, metavar="T_R",
+                       help="the operation's reference period T_POP + T_C, h: alpha from the alpha table at T_R "
+                            "and each limiting Hs")
+    p.add_argument("--alpha-table", type=Path,
+                   help="alpha table CSV for --reference-period-h (default configs/alpha/dnv_base_case.csv, the "
+                        "DNV-OS-H101 / DNV-ST-N001 base case)")
     p.add_argument("--time-domain", type=int, metavar="SEEDS",
                    help="also simulate SEEDS records of every selected cell at every heading (Dask)")
     p.add_argument("--cells", help="scatter cells (0-based rows) for --time-domain, comma list (default all)")
@@ -62,12 +69,18 @@ def handle(args: argparse.Namespace) -> int:
     from marinesim.progress import reporting
     from marinesim.scenario import load_scenario
     from marinesim.study import run
+    from marinesim.study.alpha import default_table, read_alpha_table
 
     study = run.prepare(load_scenario(args.scenario), args.scatter, np.array(headings(args.headings)),
                         args.duration_h)
     log = (lambda line: print(line, file=sys.stderr)) if args.json else print
-    estimates, result = run.evaluate(study, args.alpha)
-    attrs = run.attributes(study, args.alpha)
+    alpha_table = None
+    if args.reference_period_h is not None:
+        alpha_table = read_alpha_table(args.alpha_table or default_table())
+    elif args.alpha_table is not None:
+        raise ParameterError("--alpha-table needs --reference-period-h (the operation's T_POP + T_C, h)")
+    estimates, result = run.evaluate(study, args.alpha, alpha_table, args.reference_period_h)
+    attrs = run.attributes(study, args.alpha, alpha_table, args.reference_period_h)
     extra = None
     if args.time_domain is not None:
         cells = (np.arange(study.scatter.hs.size) if args.cells is None
@@ -85,6 +98,11 @@ def handle(args: argparse.Namespace) -> int:
     else:
         for line in table(study, result):
             log(line)
+        if alpha_table is not None:
+            log(f"limits are forecast limits: alpha of {args.reference_period_h:g} h at each limiting Hs from "
+                f"{alpha_table.source}")
+        elif args.alpha != 1.0:
+            log(f"limits are forecast limits: alpha {args.alpha:g}")
         if extra is not None:
             for line in check_table(study, extra):
                 log(line)

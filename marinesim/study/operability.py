@@ -6,8 +6,9 @@ proportional to the response's standard deviation), the limiting Hs of a (Tp, he
 criterion that sets it *governs*. A sea state (Hs, Tp) is workable at a heading when Hs <= that limit.
 Operability at a heading is the probability of the workable sea states; the overall figure takes, in each
 sea state, the best heading (the vessel is free to choose it). With an alpha factor (DNV-ST-N001 4.3: a
-forecast-based operation's limit is ``alpha x`` its design limit) the limits are multiplied by it first
-(:func:`marinesim.study.run.evaluate`).
+forecast-based operation's limit is ``alpha x`` its design limit) the limiting Hs are multiplied by it
+first (:func:`marinesim.study.run.evaluate`; an alpha table gives it per limiting Hs,
+:mod:`marinesim.study.alpha`).
 
 The limiting Hs per criterion comes from :class:`~marinesim.criteria.spectral.SpectralCriteria`; the rest
 is array arithmetic over (heading, Tp, criterion).

@@ -23,6 +23,7 @@ from marinesim.sea.seastate import SeaState, WaveSystem
 from marinesim.sea.spreading import LongCrested
 from marinesim.session.sidecar import sha256
 from marinesim.study import results
+from marinesim.study.alpha import AlphaTable
 from marinesim.study.operability import Operability, operability
 from marinesim.study.scatter import Scatter, read_scatter
 from marinesim.vessel.response import OUTSIDE_HEADINGS_SHARE
@@ -121,19 +122,23 @@ def frequency_domain(study: Study) -> spectral.SpectralCriteria:
                                         study.duration_s)
 
 
-def evaluate(study: Study, alpha: float = 1.0) -> tuple[spectral.SpectralCriteria, Operability]:
-    """The spectral criteria and the operability they give with every limit times ``alpha`` (DNV-ST-N001's
-    alpha factor, in (0, 1])."""
+def evaluate(study: Study, alpha: float = 1.0, table: AlphaTable | None = None,
+             reference_period_h: float | None = None) -> tuple[spectral.SpectralCriteria, Operability]:
+    """The spectral criteria and the operability they give with forecast limits: every limiting Hs times
+    ``alpha`` (in (0, 1]), or with ``table`` the alpha of ``reference_period_h`` at that limiting Hs
+    (DNV-ST-N001's alpha factor, :mod:`marinesim.study.alpha`)."""
     if not 0.0 < alpha <= 1.0:
         raise ParameterError(f"--alpha must be in (0, 1], got {alpha!r}")
     estimates = frequency_domain(study)
-    limits = alpha * np.array([c.limit for c in study.criteria], float)
-    return estimates, operability(estimates.limiting_hs(limits), study.tp, study.headings_deg, study.scatter,
-                                  study.cell_tp)
+    limiting = alpha * estimates.limiting_hs(np.array([c.limit for c in study.criteria], float))
+    if table is not None:
+        limiting = table.forecast_limit(reference_period_h, limiting)
+    return estimates, operability(limiting, study.tp, study.headings_deg, study.scatter, study.cell_tp)
 
 
-def attributes(study: Study, alpha: float) -> dict:
-    """The inputs and settings a study's files name (paths, sha256, spectrum shape)."""
+def attributes(study: Study, alpha: float, table: AlphaTable | None = None,
+               reference_period_h: float | None = None) -> dict:
+    """The inputs and settings a study's files name (paths, sha256, spectrum shape, alpha factor)."""
     vessel = study.scenario.vessel
     spectrum = study.system.spectrum
     return {"marinesim": __version__, "scenario": str(study.scenario.path),
@@ -143,7 +148,9 @@ def attributes(study: Study, alpha: float) -> dict:
             "spectrum": type(spectrum).__name__, "gamma": float(getattr(spectrum, "gamma", 1.0) or 1.0),
             "spreading": repr(study.system.spreading), "depth_m": str(study.depth_m),
             "duration_h": study.duration_s / 3600.0, "alpha": alpha,
-            "scatter_period": study.scatter.period_kind}
+            "scatter_period": study.scatter.period_kind,
+            **({} if table is None else {"alpha_table": table.source, "alpha_table_sha256": sha256(Path(table.source)),
+                                         "reference_period_h": reference_period_h})}
 
 
 def fingerprint(study: Study, attrs: dict, seeds: int, cells: np.ndarray, record_s: float) -> str:
