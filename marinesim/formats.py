@@ -159,6 +159,10 @@ register(Format("native", "rao", "marinesim table (.csv, .txt, .rao; see marines
 register(Format("wamit-forces", "rao", "WAMIT .1, .3, .hst and .frc side by side: RAOs solved from forces and mass",
                 (".3", ".1", ".hst", ".frc"), "marinesim.vessel.wamit_forces:read_wamit_forces",
                 "marinesim.vessel.wamit_forces:sniff", options=("ulen", "rigid_body")))
+register(Format("wamit-out", "rao", "WAMIT report (.out, or any name: found by its banner, as other programs "
+                "write .out too): its motions, or RAOs solved from its forces and the scenario's mass", (),
+                "marinesim.vessel.wamit_out:read_wamit_out",
+                "marinesim.vessel.wamit_out:sniff", options=("ulen", "rigid_body")))
 register(Format("hydrostar", "rao", "HydroStar/HAMS .rao motion RAOs (one DOF per file, the six side by side)",
                 (".rao",), "marinesim.vessel.hydrostar:read_hydrostar", "marinesim.vessel.hydrostar:sniff"))
 register(Format("orcaflex", "rao", "OrcaFlex vessel type displacement RAOs (.yml, .yaml)", (".yml", ".yaml"),

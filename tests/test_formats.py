@@ -103,9 +103,27 @@ def check_barge_visual(path: Path, name: str) -> None:
     assert mesh.colours is not None
 
 
+def tanker_report(folder: Path) -> Path:
+    """WAMIT's report of the tanker (three of its periods, tests/data/mss), unpacked."""
+    import lzma
+
+    path = folder / "tanker.out"
+    path.write_bytes(lzma.decompress((ROOT / "tests" / "data" / "mss" / "tanker.out.xz").read_bytes()))
+    return path
+
+
+def check_tanker_report(path: Path, name: str) -> None:
+    """The report's RAOs are WAMIT's .4 of the same run, to the report's whole-degree phases."""
+    table, numeric = read_rao(path), read_rao(TANKER_RAO)
+    assert table.source_format == name
+    picked = np.isin(np.round(2 * np.pi / numeric.omega, 2), [7.86, 10.44, 13.91])
+    np.testing.assert_allclose(table.values, numeric.values[:, :, picked], rtol=0.01, atol=1e-4)
+
+
 SAMPLES: dict[str, tuple[Callable[[Path], Path], Callable[[Path, str], None]]] = {
     "wamit": (lambda folder: TANKER_RAO, check_rao),
     "wamit-forces": (lambda folder: TANKER_RAO.with_suffix(".3"), check_rao),
+    "wamit-out": (tanker_report, check_tanker_report),
     "veres": (lambda folder: S175, check_rao),
     "capytaine": (capytaine_dataset, check_rao),
     "native": (native_table, check_rao),

@@ -1,9 +1,10 @@
-"""The readers of AQWA, NEMOH, HAMS/HydroStar, OrcaFlex files and HAMS meshes fuzzed from their real files (the
+"""The readers of AQWA, NEMOH, HAMS/HydroStar, OrcaFlex, WAMIT report files and HAMS meshes fuzzed from their real files (the
 hardening rule: whatever the bytes, a table or the project's one error, never another exception), and one damaged
 file of each through the command line: exit 2, one line naming the file, no traceback."""
 
 from __future__ import annotations
 
+import lzma
 import shutil
 from pathlib import Path
 
@@ -25,9 +26,19 @@ SOURCES = {
     "orcaflex": (DATA / "orcaflex", "cylinder_vessel_type.yml", "cylinder_vessel_type.yml"),
     "pnl": (DATA / "hams" / "cylinder" / "Input", "HullMesh.pnl", "HullMesh.pnl"),
     "nemoh-mesh": (DATA / "nemoh" / "cube", "Cube.dat", "Cube.dat"),
+    "wamit-out": (DATA / "mss", "tanker.out", "tanker.out"),
 }
-"""Per reader: the folder it reads from, the file mutated in a copy of it, the file given to the reader."""
+"""Per reader: the folder it reads from, the file mutated in a copy of it, the file given to the reader (a file
+stored compressed, ``NAME.xz``, is unpacked first)."""
 MESHES = ("pnl", "nemoh-mesh")
+
+
+def project(folder: Path, copy: Path) -> Path:
+    """A copy of ``folder`` at ``copy`` with its ``.xz`` files unpacked."""
+    shutil.copytree(folder, copy)
+    for packed in copy.glob("*.xz"):
+        packed.with_suffix("").write_bytes(lzma.decompress(packed.read_bytes()))
+    return copy
 
 
 def mutate(text: str, edits: list[tuple[int, str, str]]) -> str:
@@ -56,14 +67,13 @@ EDITS = st.lists(st.tuples(st.integers(0, 10_000), st.sampled_from(["drop", "cut
 
 
 @pytest.mark.parametrize("name", sorted(SOURCES))
-@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@settings(max_examples=15, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(edits=EDITS)
 def test_mutated_files_give_a_table_or_the_projects_error(tmp_path_factory, name, edits):
     """If this fails, a damaged file of that program escapes the reader as a Python exception (a traceback
     for the user) instead of a FileFormatError naming the file and line."""
     folder, mutated, given_file = SOURCES[name]
-    copy = tmp_path_factory.mktemp(name) / "project"
-    shutil.copytree(folder, copy)
+    copy = project(folder, tmp_path_factory.mktemp(name) / "project")
     target = copy / mutated
     target.write_bytes(mutate(target.read_text(errors="replace"), edits).encode("utf-8", "surrogatepass"))
     try:
@@ -72,13 +82,16 @@ def test_mutated_files_give_a_table_or_the_projects_error(tmp_path_factory, name
         pass
 
 
-@pytest.mark.parametrize("name", ["aqwa", "nemoh", "hydrostar", "orcaflex", "pnl", "nemoh-mesh"])
+@pytest.mark.parametrize("name", ["aqwa", "nemoh", "hydrostar", "orcaflex", "pnl", "nemoh-mesh", "wamit-out"])
 def test_a_cut_file_is_one_line_at_the_command_line(tmp_path, name):
+    """Cut to a third (the WAMIT report inside its second period's motions: a report cut between two periods
+    reads as a shorter one, with a note)."""
     folder, mutated, given_file = SOURCES[name]
-    copy = tmp_path / "project"
-    shutil.copytree(folder, copy)
+    copy = project(folder, tmp_path / "project")
     target = copy / mutated
-    target.write_bytes(target.read_bytes()[: len(target.read_bytes()) // 3])
+    data = target.read_bytes()
+    cut = len(data) // 3 if name != "wamit-out" else data.index(b"Wave Heading", data.index(b"RESPONSE AMPLITUDE", 30_000))
+    target.write_bytes(data[:cut])
     result = cli("hull" if name in MESHES else "rao", str(copy / given_file), "--json", cwd=tmp_path)
     assert result.returncode == 2 and "Traceback" not in result.stderr, result.stderr
     lines = result.stderr.strip().splitlines()

@@ -188,6 +188,35 @@ def test_a_body_of_a_two_body_dataset_moves_as_capytaine_solves_them_coupled(tmp
         read_rao(path, body="bow")
 
 
+def test_a_centre_of_gravity_moved_by_the_scenario_moves_the_weights_restoring_as_capytaine_does(barge):
+    """The scenario puts the barge's centre of gravity 2.5 m higher than the dataset's. The dataset's stiffness
+    holds the weight at the old centre: the roll and pitch restoring must lose m g 2.5 m. Capytaine's own
+    hydrostatics and inertia of the body with the raised centre, through its post_pro.rao, are the second
+    implementation; without the correction the roll resonance of the tender barge sits far off (its RAOs
+    differ by more than the tolerance at the roll peak)."""
+    from marinesim.vessel.body import RigidBody
+
+    dataset, path = barge
+    mesh = capytaine.mesh_parallelepiped(size=(LENGTH, BEAM, DRAFT + 1.0), resolution=(12, 4, 3),
+                                         center=(0.0, 0.0, (1.0 - DRAFT) / 2))
+    cog = np.array([0.0, 0.0, 2.0])
+    raised = capytaine.FloatingBody(mesh=mesh, dofs=capytaine.rigid_body_dofs(rotation_center=(0, 0, 0)),
+                                    center_of_mass=tuple(cog)).immersed_part()
+    inertia = raised.compute_rigid_body_inertia(rho=1025.0)
+    moved = dataset.copy()
+    moved["inertia_matrix"] = inertia
+    moved["hydrostatic_stiffness"] = raised.compute_hydrostatic_stiffness(rho=1025.0)
+    theirs = capytaine.post_pro.rao(moved).transpose("omega", "wave_direction", "radiating_dof").values
+    mass = float(inertia.sel(influenced_dof="Surge", radiating_dof="Surge"))
+    rotational = np.diag(inertia.sel(influenced_dof=["Roll", "Pitch", "Yaw"],
+                                     radiating_dof=["Roll", "Pitch", "Yaw"]).values)
+    at_cog = rotational - mass * (cog @ cog - cog * cog)
+    ours = read_rao(path, rigid_body=RigidBody(mass, tuple(cog), tuple(np.sqrt(at_cog / mass))))
+    for b, beta in enumerate(DIRECTIONS):
+        np.testing.assert_allclose(ours(OMEGA, np.full(OMEGA.size, beta)), np.conj(theirs[:, b, :]),
+                                   rtol=1e-6, atol=1e-9)
+
+
 def test_the_scenarios_mass_moorings_and_damping_give_capytaines_own_raos(barge, tmp_path):
     """The barge's mass given as a scenario gives it (mass, centre of gravity, radii of gyration) replaces the
     dataset's inertia to the same RAOs; a mooring stiffness in surge, sway and yaw and a linear damping in roll

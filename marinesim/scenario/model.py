@@ -202,8 +202,8 @@ WAVE_PARAMETERS = {"hs_m": "hs", "tp_s": "tp", "gamma": "gamma", "u10_m_s": "u10
 class VesselOptions(Section):
     """``[vessel]``: the RAO table, hull and visual mesh (paths relative to the scenario), course, points."""
 
-    rao: str = Field(description="RAO file (" + ", ".join(f"{f.name} {' '.join(f.extensions)}" for f in formats("rao"))
-                     + ")")
+    rao: str = Field(description="RAO file (" + ", ".join(f"{f.name} {' '.join(f.extensions) or 'by content'}"
+                                                          for f in formats("rao")) + ")")
     speed_kn: Annotated[float, Quantity("kn", ge=0.0, le=MAX_SPEED_KN)] = Field(
         0.0, description="speed, within the RAO table's speeds if it has several")
     heading_deg: Annotated[float, Quantity("deg", ge=0.0, le=360.0, what="a compass heading")] = Field(
@@ -216,7 +216,7 @@ class VesselOptions(Section):
                                                    "several (solved coupled, every body free)")
     mass_kg: Annotated[float | None, Quantity("kg", gt=0.0, le=1e10)] = Field(
         None, description="the vessel's mass, with cog_m and radii_of_gyration_m: replaces the file's for RAOs "
-                          "solved here (WAMIT .1/.3/.hst, Capytaine)")
+                          "solved here (WAMIT .1/.3/.hst and .out, Capytaine)")
     cog_m: Point | None = Field(None, description="centre of gravity, [x, y, z] in the body frame")
     radii_of_gyration_m: Annotated[list[float] | None, Quantity("m", gt=0.0), Field(min_length=3, max_length=3)] = (
         Field(None, description="roll, pitch, yaw radii of gyration about the centre of gravity"))

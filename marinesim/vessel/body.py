@@ -26,6 +26,17 @@ def rigid_body_mass(mass: float, cog: tuple[float, float, float], inertia: np.nd
     return matrix
 
 
+def gravity_stiffness(mass: np.ndarray, g: float) -> np.ndarray:
+    """The restoring of the body's weight (6 x 6, SI, about the origin) for the 6 x 6 mass matrix ``mass``
+    (:func:`rigid_body_mass`, which holds ``m`` and ``m x_g``): ``C44 = C55 = -m g z_g``, ``C46 = m g x_g``,
+    ``C56 = m g y_g`` (WAMIT user manual, hydrostatics; the rest of the restoring is the water's)."""
+    m_xg, m_yg, m_zg = mass[1, 5], -mass[0, 5], mass[0, 4]
+    matrix = np.zeros((6, 6))
+    matrix[3, 3] = matrix[4, 4] = -g * m_zg
+    matrix[3, 5], matrix[4, 5] = g * m_xg, g * m_yg
+    return matrix
+
+
 @dataclass(frozen=True)
 class RigidBody:
     """``mass_kg`` at ``cog_m`` with ``radii_of_gyration_m`` (roll, pitch, yaw, about the centre of gravity along

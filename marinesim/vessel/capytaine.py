@@ -44,7 +44,7 @@ import numpy as np
 from marinesim.errors import FileFormatError, MarinesimError, ParameterError
 from marinesim.formats import check_file
 from marinesim.sea.dispersion import k_from_omega
-from marinesim.vessel.body import RigidBody
+from marinesim.vessel.body import RigidBody, gravity_stiffness
 from marinesim.vessel.rao import DOFS, RaoTable, make_table
 
 NEEDED = ("added_mass", "radiation_damping", "inertia_matrix", "hydrostatic_stiffness")
@@ -113,10 +113,13 @@ def _solve(path: Path, dataset, roll_damping: float, body: str | None, rigid_bod
     if dropped:
         notes.append(dropped)
     own = np.ix_(chosen, chosen)
-    if rigid_body.mass_kg is not None:
-        mass = mass.copy()
-        mass[own] = rigid_body.mass_matrix()
+    g = float(dataset["g"]) if "g" in dataset.coords else 9.81
     stiffness = stiffness.copy()
+    if rigid_body.mass_kg is not None:
+        # the dataset's stiffness holds the weight of its own inertia matrix's mass at its centre of gravity
+        mass = mass.copy()
+        stiffness[own] += gravity_stiffness(rigid_body.mass_matrix(), g) - gravity_stiffness(mass[own], g)
+        mass[own] = rigid_body.mass_matrix()
     stiffness[own] += rigid_body.stiffness()
     if rigid_body.given:
         notes.append(rigid_body.describe())
@@ -135,7 +138,6 @@ def _solve(path: Path, dataset, roll_damping: float, body: str | None, rigid_bod
     except np.linalg.LinAlgError:
         raise FileFormatError(path, None, "the equation of motion is singular at some frequency") from None
     rho = float(dataset["rho"]) if "rho" in dataset.coords else 1025.0
-    g = float(dataset["g"]) if "g" in dataset.coords else 9.81
     depth = float(dataset["water_depth"]) if "water_depth" in dataset.coords else math.inf
     if not depth > 0.0:
         raise FileFormatError(path, None, f"water_depth must be > 0 m (inf: deep water), got {depth:g}")

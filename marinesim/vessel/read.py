@@ -13,7 +13,7 @@ OPTION_LIMITS = {"ulen": "ULEN applies to WAMIT files only",
                  "roll_damping": "extra roll damping applies to Capytaine datasets only (their RAOs are solved here)",
                  "body": "a body name applies to Capytaine datasets of several bodies only",
                  "rigid_body": "a mass or external stiffness and damping from the scenario apply to RAOs solved "
-                               "here (WAMIT .1/.3/.hst force sets, Capytaine datasets) only"}
+                               "here (WAMIT force sets and reports, Capytaine datasets) only"}
 
 
 def detect_format(path: Path) -> str:

@@ -80,6 +80,7 @@ def table_from(path: Path, omega: np.ndarray, headings_deg: np.ndarray, values: 
     a table the RAO model refuses (e.g. headings that cover part of the circle) is a :class:`FileFormatError`
     naming the headings the file covers."""
     extra = {"depth": settings.depth} if math.isfinite(settings.depth) else {}
+    headings_deg, values = _same_headings_once(path, np.asarray(headings_deg, float), values)
     try:
         return make_table(omega, np.radians(headings_deg), [0.0], values[None], reference_point=(0.0, 0.0, 0.0),
                           rho=rho, g=settings.g, source=str(path), source_format=source_format, notes=notes,
@@ -89,6 +90,21 @@ def table_from(path: Path, omega: np.ndarray, headings_deg: np.ndarray, values: 
         if "heading" in message:
             message += f" (the file covers heading(s) {', '.join(f'{h:g}' for h in headings_deg)} deg only)"
         raise FileFormatError(path, None, message) from None
+
+
+def _same_headings_once(path: Path, headings_deg: np.ndarray, values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Headings (deg) and values (heading, frequency, 6) with a heading given twice (-180 and 180, as WAMIT
+    runs over the whole circle write it) kept once; the two must agree to the file's precision."""
+    wrapped = np.mod(headings_deg, 360.0)
+    keep: list[int] = []
+    for h, heading in enumerate(wrapped):
+        twin = next((k for k in keep if np.isclose(wrapped[k], heading, rtol=0.0, atol=1e-9)), None)
+        if twin is None:
+            keep.append(h)
+        elif not np.allclose(values[h], values[twin], rtol=1e-4, atol=1e-6 * np.abs(values).max()):
+            raise FileFormatError(path, None, f"headings {headings_deg[twin]:g} and {headings_deg[h]:g} deg are the "
+                                              "same waves but their values differ")
+    return headings_deg[keep], values[keep]
 
 
 def looks_like_forces(biggest: np.ndarray) -> bool:

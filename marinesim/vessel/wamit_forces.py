@@ -30,7 +30,7 @@ import numpy as np
 from marinesim.constants import RHO_SEAWATER
 from marinesim.errors import FileFormatError
 from marinesim.tokens import parse_float, parse_int, read_text
-from marinesim.vessel.body import RigidBody, rigid_body_mass
+from marinesim.vessel.body import RigidBody, gravity_stiffness, rigid_body_mass
 from marinesim.vessel.rao import DOFS, RaoTable
 from marinesim.vessel.wamit import Settings, frc_form, sniff_forces, table_from
 from marinesim.vessel.wamit_rows import RIGID_MODES, ignored_modes_note, read_rows
@@ -76,11 +76,16 @@ def read_wamit_forces(path: str | Path, *, ulen: float | None = None, rigid_body
     path = Path(path)
     rigid_body = rigid_body or RigidBody()
     fs = read_force_set(path, ulen=ulen, mass=rigid_body.mass_matrix())
-    motions = solve_motions(path.with_suffix(".frc"), fs.omega, fs.mass, fs.added,
-                            fs.damping + fs.frc.damping + rigid_body.damping(),
-                            fs.stiffness + fs.frc.stiffness + rigid_body.stiffness(), fs.forces, fs.periods)
-    order = np.argsort(fs.omega)
     notes = list(fs.notes)
+    stiffness = fs.stiffness + fs.frc.stiffness + rigid_body.stiffness()
+    if rigid_body.mass_kg is not None:
+        wamit_gravity, note = _run_gravity(path, fs)
+        if wamit_gravity is not None:
+            stiffness = stiffness + gravity_stiffness(fs.mass, fs.settings.g) - wamit_gravity
+        notes.append(note)
+    motions = solve_motions(path.with_suffix(".frc"), fs.omega, fs.mass, fs.added,
+                            fs.damping + fs.frc.damping + rigid_body.damping(), stiffness, fs.forces, fs.periods)
+    order = np.argsort(fs.omega)
     source = (f"the mass of {path.with_suffix('.frc').name} (IALTFRC {fs.frc.form}, {fs.mass[0, 0]:.6g} kg)"
               if rigid_body.mass_kg is None else "the scenario's mass")
     notes.append(f"RAOs solved from {path.with_suffix('.1').name}, {path.with_suffix('.3').name}, "
@@ -261,6 +266,27 @@ def _numeric(text: str) -> bool:
     except ValueError:
         return False
     return math.isfinite(float(text.replace("D", "E").replace("d", "e")))
+
+
+def _run_gravity(path: Path, fs: ForceSet) -> tuple[np.ndarray | None, str]:
+    """The gravity terms (6 x 6, SI) WAMIT put in the ``.hst``: a mass ``rho V`` at the ``.frc``'s centre of
+    gravity (the ``.frc``'s own mass where it gives one, which a free body's equals), or None with a note where
+    no ``.frc`` says where that centre was; and the note saying what replaced them."""
+    frc_path = path.with_suffix(".frc")
+    if not frc_path.is_file():
+        return None, (f"the gravity terms of {path.with_suffix('.hst').name} are kept as WAMIT computed them: without "
+                      f"{frc_path.name} the centre of gravity of its run is unknown, so the scenario's cog_m sets the "
+                      "mass matrix only")
+    if fs.frc.mass is not None or fs.frc.form == 1:
+        run_mass, _ = mass_matrix(frc_path, fs.frc, fs.rho)
+    elif not any(fs.frc.cog):
+        run_mass = np.zeros((6, 6))
+    else:
+        return None, (f"the gravity terms of {path.with_suffix('.hst').name} are kept as WAMIT computed them: "
+                      f"{frc_path.name} gives its centre of gravity but no mass (IMASS = 0)")
+    return gravity_stiffness(run_mass, fs.settings.g), (
+        f"the gravity terms of {path.with_suffix('.hst').name} (WAMIT's, for the centre of gravity in "
+        f"{frc_path.name}) replaced by the scenario's mass at its cog_m")
 
 
 def _match_periods(path_3: Path, periods: np.ndarray, path_1: Path, per_1: np.ndarray) -> np.ndarray:

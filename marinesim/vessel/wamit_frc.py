@@ -50,7 +50,7 @@ class ForceControl:
 def read_frc(path: Path, form: int | None = None) -> ForceControl:
     """Read the ``.frc`` at ``path``; ``form`` is IALTFRC from the ``.cfg`` (None: told from the layout)."""
     text = read_text(path).splitlines()
-    rows = [(number, line.split()) for number, line in enumerate(text[1:], 2) if line.split()]
+    rows = [(number, _values(line)) for number, line in enumerate(text[1:], 2) if line.split()]
     if len(rows) < 4:
         raise FileFormatError(path, len(text) or None, "file ends early: expected IOPTN, then RHO or VCG, "
                                                        "XCG YCG ZCG or XPRDCT, ...")
@@ -84,7 +84,7 @@ def read_frc(path: Path, form: int | None = None) -> ForceControl:
         if at >= len(rows):
             raise FileFormatError(path, rows[-1][0], f"file ends early: expected the {name} flag 0 or 1")
         number, parts = rows[at]
-        flag = parse_int(path, number, parts[0], f"{name} flag 0 or 1")
+        flag = parse_int(path, number, parts[0] if parts else "", f"{name} flag 0 or 1")
         if flag not in (0, 1) or len(parts) != 1:
             raise FileFormatError(path, number, f"expected the {name} flag alone, 0 or 1, got {' '.join(parts)}")
         at += 1
@@ -113,3 +113,15 @@ def _number(path: Path, rows: list[tuple[int, list[str]]], at: int, name: str, c
     if column >= len(parts):
         raise FileFormatError(path, number, f"expected {name}, the line has {len(parts)} value(s)")
     return parse_float(path, number, parts[column], name)
+
+
+def _values(line: str) -> list[str]:
+    """The words of ``line`` up to the first that is not a number: WAMIT reads its values list-directed, and
+    what follows them on the line (``0   IMASS``) is a comment."""
+    words = line.split()
+    for k, word in enumerate(words):
+        try:
+            float(word.replace("D", "E").replace("d", "e"))
+        except ValueError:
+            return words[:k]
+    return words
