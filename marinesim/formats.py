@@ -176,6 +176,8 @@ register(Format("gdf", "mesh", "WAMIT low-order panels, .gdf", (".gdf",), "marin
 register(Format("pnl", "mesh", "HAMS panel mesh, .pnl", (".pnl",), "marinesim.hull.pnl:read_pnl_mesh"))
 register(Format("nemoh-mesh", "mesh", "NEMOH mesh, .dat (or Capytaine's .mar)", (".dat", ".mar"),
                 "marinesim.hull.nemoh_mesh:read_nemoh_mesh_file", "marinesim.hull.nemoh_mesh:sniff"))
+register(Format("gmsh", "mesh", "gmsh mesh, .msh (MSH 2.2 or 4.1): its triangles and quadrangles", (".msh",),
+                "marinesim.hull.gmsh_mesh:read_gmsh_mesh"))
 register(Format("stl", "mesh", "STL, .stl (or gzipped, .stl.gz)", (".stl", ".stl.gz"),
                 "marinesim.hull.mesh:read_mesh"))
 register(Format("obj", "mesh", "Wavefront OBJ, .obj (or .obj.gz)", (".obj", ".obj.gz"),

@@ -103,6 +103,11 @@ def check_barge_visual(path: Path, name: str) -> None:
     assert mesh.colours is not None
 
 
+def check_gmsh_barge(path: Path, name: str) -> None:
+    """gmsh's 40 x 10 m box barge, draft 3 m: its displaced volume exactly."""
+    assert hydrostatics(load_hull(path)).volume_m3 == pytest.approx(1200.0, rel=1e-9)
+
+
 def tanker_report(folder: Path) -> Path:
     """WAMIT's report of the tanker (three of its periods, tests/data/mss), unpacked."""
     import lzma
@@ -136,6 +141,7 @@ SAMPLES: dict[str, tuple[Callable[[Path], Path], Callable[[Path, str], None]]] =
     "pnl": (lambda folder: ROOT / "tests" / "data" / "hams" / "cylinder" / "Input" / "HullMesh.pnl",
             check_hams_cylinder),
     "nemoh-mesh": (lambda folder: ROOT / "tests" / "data" / "nemoh" / "cube" / "Cube.dat", check_nemoh_cube),
+    "gmsh": (lambda folder: ROOT / "tests" / "data" / "gmsh" / "barge.msh", check_gmsh_barge),
     "stl": (lambda folder: WIGLEY, check_wigley),
     "obj": (exported_wigley(".obj"), check_wigley),
     "ply": (exported_wigley(".ply"), check_wigley),

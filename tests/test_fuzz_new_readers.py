@@ -1,4 +1,4 @@
-"""The readers of AQWA, NEMOH, HAMS/HydroStar, OrcaFlex, WAMIT report files and HAMS meshes fuzzed from their real files (the
+"""The readers of AQWA, NEMOH, HAMS/HydroStar, OrcaFlex, WAMIT report files and HAMS and gmsh meshes fuzzed from their real files (the
 hardening rule: whatever the bytes, a table or the project's one error, never another exception), and one damaged
 file of each through the command line: exit 2, one line naming the file, no traceback."""
 
@@ -27,10 +27,11 @@ SOURCES = {
     "pnl": (DATA / "hams" / "cylinder" / "Input", "HullMesh.pnl", "HullMesh.pnl"),
     "nemoh-mesh": (DATA / "nemoh" / "cube", "Cube.dat", "Cube.dat"),
     "wamit-out": (DATA / "mss", "tanker.out", "tanker.out"),
+    "gmsh": (DATA / "gmsh", "barge.msh", "barge.msh"),
 }
 """Per reader: the folder it reads from, the file mutated in a copy of it, the file given to the reader (a file
 stored compressed, ``NAME.xz``, is unpacked first)."""
-MESHES = ("pnl", "nemoh-mesh")
+MESHES = ("pnl", "nemoh-mesh", "gmsh")
 
 
 def project(folder: Path, copy: Path) -> Path:
