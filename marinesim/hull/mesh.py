@@ -82,6 +82,7 @@ def load_hull(path: str | Path, *, units: str = "m", scale: float = 1.0, axes: s
     the y axis through the origin, bow down positive.
     """
     path, mesh = load_mesh(path, "hull")
+    reader_notes = tuple(mesh.metadata.get("notes", ()))
     vertices, faces = np.asarray(mesh.vertices, float), np.asarray(mesh.faces, np.int64)
     vertices, faces = to_body_frame(vertices, faces, path, units=units, scale=scale, axes=axes, what="hull")
     if draft is not None:
@@ -92,7 +93,7 @@ def load_hull(path: str | Path, *, units: str = "m", scale: float = 1.0, axes: s
         raise ParameterError(f"trim must be within +-30 deg, got {trim_deg!r}")
     if trim:
         vertices = vertices @ rotation_y(trim).T
-    return make_hull(vertices, faces, str(path))
+    return make_hull(vertices, faces, str(path), reader_notes)
 
 
 def make_hull(vertices: np.ndarray, faces: np.ndarray, source: str, notes: tuple[str, ...] = ()) -> Hull:

@@ -61,7 +61,7 @@ from marinesim.constants import G, RHO_SEAWATER
 from marinesim.errors import FileFormatError, ParameterError
 from marinesim.sea.dispersion import k_from_omega
 from marinesim.tokens import parse_float, parse_int, read_text
-from marinesim.vessel.rao import DOFS, ROTATIONS, RaoTable, make_table
+from marinesim.vessel.rao import DOFS, ROTATIONS, RaoTable, make_table, refer_phases
 from marinesim.vessel.wamit_rows import read_rows
 
 MAX_FILE_BYTES = 64 * 2**20
@@ -253,10 +253,7 @@ def read_hydrostar(path: str | Path) -> RaoTable:
         values[:, :, j] = f.values * scale
     shift = np.array(first.wave_point) - np.array(first.reference_point[:2])
     if np.any(shift != 0.0):
-        k = k_from_omega(first.omega, first.depth, first.g)
-        b = np.radians(first.headings_deg)
-        along = shift[0] * np.cos(b) + shift[1] * np.sin(b)  # (headings,)
-        values *= np.exp(-1j * along[:, None, None] * k[None, :, None])
+        values = refer_phases(values, first.omega, first.headings_deg, (-shift[0], -shift[1]), first.depth, first.g)
         notes.append(f"phases re-referred from the incident-wave point ({shift[0] + first.reference_point[0]:g}, "
                      f"{shift[1] + first.reference_point[1]:g}) m to the reference point")
     notes.append(f"headings = wave travel direction from body x; phases lead (exp(+i w t)); rho {first.rho:g}, "

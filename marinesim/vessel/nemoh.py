@@ -52,9 +52,8 @@ import numpy as np
 
 from marinesim.errors import FileFormatError, ParameterError
 from marinesim.formats import check_file
-from marinesim.sea.dispersion import k_from_omega
 from marinesim.tokens import Tokens, parse_float, read_text
-from marinesim.vessel.rao import RaoTable, make_table
+from marinesim.vessel.rao import RaoTable, make_table, refer_phases
 
 ROTATION = np.array([False, False, False, True, True, True])
 MAX_FREQUENCIES = 100_000
@@ -277,13 +276,9 @@ def mass_matrix(root: Path, settings: Settings) -> tuple[np.ndarray, str]:
 def refer_to_centre(values: np.ndarray, omega: np.ndarray, headings_deg: np.ndarray,
                     settings: Settings) -> np.ndarray:
     """RAOs relative to the wave at (XEFF, YEFF) -> relative to the wave at the rotation centre."""
-    dx = settings.rotation_centre[0] - settings.wave_point[0]
-    dy = settings.rotation_centre[1] - settings.wave_point[1]
-    if dx == 0.0 and dy == 0.0:
-        return values
-    k = k_from_omega(omega, settings.depth, settings.g)
-    beta = np.radians(headings_deg)[:, None]
-    return values * np.exp(1j * k[None, :] * (dx * np.cos(beta) + dy * np.sin(beta)))[..., None]
+    centre, wave = settings.rotation_centre, settings.wave_point
+    offset = (centre[0] - wave[0], centre[1] - wave[1])
+    return refer_phases(values, omega, headings_deg, offset, settings.depth, settings.g)
 
 
 def read_excitation(path: Path) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -204,6 +204,20 @@ def _locate(grid: np.ndarray, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return i, (x - grid[i]) / (grid[i + 1] - grid[i])
 
 
+def refer_phases(values: np.ndarray, omega: np.ndarray, headings_deg: np.ndarray, offset_m: tuple[float, float],
+                 depth: float, g: float) -> np.ndarray:
+    """RAOs ``values`` (headings, frequencies, ...) relative to the incident wave at one point -> relative to
+    the wave at the point ``offset_m`` (dx, dy) from it: the wave there lags by ``k (dx cos b + dy sin b)``, so
+    the RAOs gain that phase (``exp(+i w t)``, lead). ``omega`` rad/s, headings the travel direction."""
+    dx, dy = offset_m
+    if dx == 0.0 and dy == 0.0:
+        return values
+    k = k_from_omega(np.asarray(omega, float), depth if math.isfinite(depth) else math.inf, g)
+    beta = np.radians(np.asarray(headings_deg, float))[:, None]
+    factor = np.exp(1j * k[None, :] * (dx * np.cos(beta) + dy * np.sin(beta)))
+    return values * factor.reshape(factor.shape + (1,) * (values.ndim - 2))
+
+
 def make_table(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: np.ndarray, *,
                reference_point=(0.0, 0.0, 0.0), rho: float = 1025.0, g: float = G, source: str = "",
                source_format: str = "", notes: tuple[str, ...] = (), depth: float = math.inf) -> RaoTable:

@@ -30,8 +30,10 @@ import numpy as np
 from marinesim.constants import G, RHO_SEAWATER
 from marinesim.errors import FileFormatError, ParameterError, require_within
 from marinesim.hull.gdf import read_gdf_header
+from marinesim.hull.wamit_pot import Pot, old_pot_form, read_cfg, read_pot
 from marinesim.vessel.wamit_frc import read_frc
-from marinesim.vessel.rao import MAX_ROTATION_RAD_M, MAX_TRANSLATION_M_M, ROTATIONS, RaoTable, make_table
+from marinesim.vessel.rao import (MAX_ROTATION_RAD_M, MAX_TRANSLATION_M_M, ROTATIONS, RaoTable, make_table,
+                                  refer_phases)
 from marinesim.tokens import parse_float, parse_int, read_text
 from marinesim.vessel.wamit_rows import RIGID_MODES, read_rows
 
@@ -81,8 +83,16 @@ def table_from(path: Path, omega: np.ndarray, headings_deg: np.ndarray, values: 
     naming the headings the file covers."""
     extra = {"depth": settings.depth} if math.isfinite(settings.depth) else {}
     headings_deg, values = _same_headings_once(path, np.asarray(headings_deg, float), values)
+    x, y, z, phi = settings.xbody
+    if any(settings.xbody):
+        # WAMIT's phases are relative to the wave at its global origin, its headings from its global X axis
+        values = refer_phases(values, omega, headings_deg, (x, y), settings.depth, settings.g)
+        headings_deg = headings_deg - phi
+        notes = notes + (f"{settings.placed_by}: body origin at ({x:g}, {y:g}, {z:g}) m in WAMIT's global frame, "
+                         f"its x axis at {phi:g} deg: phases referred to the wave at the body origin, headings to "
+                         "its x axis",)
     try:
-        return make_table(omega, np.radians(headings_deg), [0.0], values[None], reference_point=(0.0, 0.0, 0.0),
+        return make_table(omega, np.radians(headings_deg), [0.0], values[None], reference_point=(0.0, 0.0, z),
                           rho=rho, g=settings.g, source=str(path), source_format=source_format, notes=notes,
                           **extra)
     except ParameterError as error:
@@ -155,9 +165,11 @@ class Settings:
     column and the header lines (``.cfg``), the water depth (``.pot``)."""
 
     def __init__(self, g: float, ulen: float, period_kind: int, period_key: str, header_lines: int,
-                 depth: float, notes: tuple[str, ...]) -> None:
+                 depth: float, notes: tuple[str, ...], xbody: tuple[float, float, float, float] = (0.0,) * 4,
+                 placed_by: str = "") -> None:
         self.g, self.ulen, self.period_kind, self.period_key = g, ulen, period_kind, period_key
         self.header_lines, self.depth, self.notes = header_lines, depth, notes
+        self.xbody, self.placed_by = xbody, placed_by
 
     @classmethod
     def beside(cls, path: Path, *, ulen: float | None = None, period_kind: int | None = None) -> "Settings":
@@ -185,8 +197,10 @@ class Settings:
             header = parse_int(cfg, number, value, "NUMHDR (0 or 1)")
             if header not in (0, 1):
                 raise FileFormatError(cfg, number, f"NUMHDR must be 0 or 1, got {header}")
-        depth = _pot_depth(path.with_suffix(".pot"), keys)
-        return cls(g, ulen, period_kind, key, header, depth, tuple(notes))
+        pot_path = path.with_suffix(".pot")
+        pot = read_pot(pot_path, old_pot_form(keys)) if pot_path.is_file() else Pot(math.nan)
+        return cls(g, ulen, period_kind, key, header, pot.depth, tuple(notes), pot.xbody or (0.0,) * 4,
+                   pot_path.name)
 
     def omega(self, per: np.ndarray, path: Path) -> np.ndarray:
         """The wave frequencies (rad/s) of the PER column ``per`` (> 0) of ``path``."""
@@ -211,20 +225,6 @@ class Settings:
                 f"g = {self.g:g} m/s^2, water depth {depth}")
 
 
-def read_cfg(cfg: Path) -> dict[str, tuple[int, str]]:
-    """``KEY = value`` lines of a WAMIT ``.cfg`` (keys upper case) -> (line number, first word of the value);
-    empty without a file."""
-    if not cfg.is_file():
-        return {}
-    keys: dict[str, tuple[int, str]] = {}
-    for number, text in enumerate(read_text(cfg).splitlines(), 1):
-        key, equals, value = text.partition("=")
-        words = value.split()
-        if equals and key.strip() and words:
-            keys[key.strip().upper()] = (number, words[0])
-    return keys
-
-
 def output_period_kind(cfg: Path, keys: dict[str, tuple[int, str]] | None = None) -> tuple[int, str]:
     """(kind, the key that set it) of the PER column of WAMIT's outputs: ``IPEROUT``, else ``IPERIO`` (which
     sets input and output alike in v6 and v7), else WAMIT's default 1 (period)."""
@@ -242,25 +242,6 @@ def _gdf_settings(gdf: Path) -> tuple[float, float | None]:
         return G, None
     header = read_gdf_header(gdf)
     return header.g, header.ulen
-
-
-def _pot_depth(pot: Path, cfg_keys: dict[str, tuple[int, str]]) -> float:
-    """Water depth HBOT (m) from the ``.pot`` (inf for HBOT <= 0, WAMIT's infinite depth); NaN without a
-    ``.pot``. The v6/v7 form (IALTPOT = 2) has HBOT alone on line 2; the old form (IALTPOT = 1) on the
-    first line of five numbers, HBOT XBODY(1..4)."""
-    if not pot.is_file():
-        return math.nan
-    lines = read_text(pot).splitlines()
-    old_form = cfg_keys.get("IALTPOT", (0, "2"))[1] == "1"
-    for number, text in enumerate(lines[1:], 2):
-        parts = text.split()
-        if (old_form and len(parts) == 5) or (not old_form and number == 2):
-            if not parts:
-                break
-            hbot = parse_float(pot, number, parts[0], "HBOT (water depth, m; <= 0 for infinite)")
-            return math.inf if hbot <= 0.0 else hbot
-    raise FileFormatError(pot, None, "HBOT (water depth) not found: expected it on line 2 (IALTPOT = 2) "
-                                     "or first on a line of five numbers (IALTPOT = 1)")
 
 
 def _frc_rho(frc: Path) -> float | None:

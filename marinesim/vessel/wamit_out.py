@@ -39,6 +39,7 @@ SECTIONS = {"ADDED-MASS AND DAMPING COEFFICIENTS": "radiation", "DIFFRACTION EXC
             "HASKIND EXCITING FORCES AND MOMENTS": "haskind", "RESPONSE AMPLITUDE OPERATORS": "motions"}
 PERIOD = re.compile(r"^\s*Wave period \(sec\)\s*=\s*(\S+)")
 OTHER_PERIOD = re.compile(r"^\s*Wave period\s*=\s*(infinite|zero)")
+PLACEMENT = re.compile(r"XBODY =\s*(\S+)\s+YBODY =\s*(\S+)\s+ZBODY =\s*(\S+)\s+PHIBODY =\s*(\S+)")
 RUN_LINE = re.compile(r"^\s+\d+\.\d+\s+\d\d:\d\d:\d\d\s")
 """A line of the run's log at the top (``Period  Time  RAD  DIFF``): a period the run solved."""
 TITLE = re.compile(r"^[A-Z]{3,}[A-Z ,&()-]*")
@@ -70,6 +71,7 @@ class Report:
         self.rows: dict[str, dict] = {name: {} for name in SECTIONS.values()}
         self.ignored: set[int] = set()
         self.run_periods: list[float] = []
+        self.xbody: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)
 
 
 def read_wamit_out(path: str | Path, *, ulen: float | None = None, rigid_body: RigidBody | None = None) -> RaoTable:
@@ -80,7 +82,7 @@ def read_wamit_out(path: str | Path, *, ulen: float | None = None, rigid_body: R
     report = _parse(path)
     g, length = report.header["g"], ulen if ulen is not None else report.header["ulen"]
     rho, depth = report.header["rho"], report.header["depth"]
-    settings = Settings(g, length, 1, "the report's 'Wave period (sec)'", 0, depth, ())
+    settings = Settings(g, length, 1, "the report's 'Wave period (sec)'", 0, depth, (), report.xbody, path.name)
     periods = np.array(report.periods)
     omega = 2.0 * math.pi / periods
     headings = _headings(report)
@@ -201,6 +203,11 @@ def _header_line(report: Report, number: int, text: str) -> None:
                 report.header[name] = parse_float(path, number, word, f"{key[:-1].lower()} (a number)")
     if text.startswith("XBODY ="):
         report.bodies += 1
+        match = PLACEMENT.match(text)
+        if report.bodies == 1:
+            if not match:
+                raise FileFormatError(path, number, "expected XBODY = x YBODY = y ZBODY = z PHIBODY = angle")
+            report.xbody = tuple(parse_float(path, number, word, "a coordinate") for word in match.groups())
     elif text.startswith("Volumes (VOLX,VOLY,VOLZ):") and report.bodies == 1:
         words = text.split(":", 1)[1].split()
         report.volume = float(np.mean([parse_float(path, number, w, "a volume (m^3)") for w in words[:3]]))
