@@ -171,7 +171,7 @@ register(Format("aqwa", "rao", "ANSYS AQWA listing (.lis): position RAOs of stru
                 "marinesim.vessel.aqwa:read_aqwa", "marinesim.vessel.aqwa:sniff"))
 register(Format("nemoh", "rao", "NEMOH v2/v3 project, given by its Nemoh.cal: Motion/RAO.dat, or RAOs solved from "
                 "its forces, coefficients and mass", (".cal",), "marinesim.vessel.nemoh:read_nemoh",
-                "marinesim.vessel.nemoh:sniff"))
+                "marinesim.vessel.nemoh:sniff", options=("rigid_body",)))
 register(Format("gdf", "mesh", "WAMIT low-order panels, .gdf", (".gdf",), "marinesim.hull.gdf:read_gdf_mesh"))
 register(Format("pnl", "mesh", "HAMS panel mesh, .pnl", (".pnl",), "marinesim.hull.pnl:read_pnl_mesh"))
 register(Format("nemoh-mesh", "mesh", "NEMOH mesh, .dat (or Capytaine's .mar)", (".dat", ".mar"),

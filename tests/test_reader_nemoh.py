@@ -143,3 +143,20 @@ def test_malformed_files_name_the_line(project, tmp_path):
     stray.write_text("1 2 3\n")
     with pytest.raises(FileFormatError, match="no Nemoh.cal"):
         read_nemoh_raos(stray)
+
+
+def test_the_scenarios_mass_replaces_nemohs(spar, project):
+    """The spar's own mass given by a scenario (3.288e7 kg at its centre of gravity 78 m down, in the body frame
+    whose z = 0 is the waterline; NEMOH rotates about that point) gives NEMOH's RAOs: a centre of gravity taken
+    about the wrong point would couple surge and pitch. 10 % more mass changes the heave (a mass left unused
+    would not)."""
+    from marinesim.vessel.body import RigidBody
+
+    m = 0.3288402e8
+    radii = (math.sqrt(0.4956638e11 / m), math.sqrt(0.4956640e11 / m), math.sqrt(0.2766477e10 / m))
+    same = read_nemoh(project, rigid_body=RigidBody(m, (0.0, 0.0, -78.0), radii))
+    np.testing.assert_allclose(same.values[0, :, :, :], read_nemoh(project).values[0], rtol=1e-6,
+                               atol=1e-9 * np.abs(spar.values).max())
+    assert any("the scenario's mass" in note for note in same.notes)
+    heavier = read_nemoh(project, rigid_body=RigidBody(1.1 * m, (0.0, 0.0, -78.0), radii))
+    assert not np.allclose(heavier.values[..., HEAVE], same.values[..., HEAVE], rtol=1e-3)

@@ -2,8 +2,9 @@
 stiffness and damping (moorings, a DP system's linear part, roll damping from tank tests).
 
 Readers that solve the equation of motion (WAMIT force sets, Capytaine datasets) take it in place of the mass of
-their own files, and add the external matrices: ``[-w^2 (M + A) + i w (B + B_ext) + C + C_ext] X = F``. Everything
-is about the RAO table's reference point, in the body frame (x forward, y port, z up), SI units.
+their own files, and add the external matrices: ``[-w^2 (M + A) + i w (B + B_ext) + C + C_ext] X = F``. The centre
+of gravity is in the body frame (x forward, y port, z up, the waterline at z = 0); the mass matrix and the external
+matrices are about the RAO table's reference point (the rotation centre of the file); SI units.
 """
 
 from __future__ import annotations
@@ -54,12 +55,12 @@ class RigidBody:
         """Whether the scenario gave anything (a mass, or an external matrix)."""
         return not (self.mass_kg is None and self.external_stiffness is None and self.external_damping is None)
 
-    def mass_matrix(self) -> np.ndarray | None:
-        """The 6 x 6 mass matrix about the reference point (the parallel-axis theorem from the centre of gravity),
-        or None when no mass is given."""
+    def mass_matrix(self, about: tuple[float, float, float] = (0.0, 0.0, 0.0)) -> np.ndarray | None:
+        """The 6 x 6 mass matrix about the point ``about`` (the RAO table's reference point, body frame, m; the
+        parallel-axis theorem from the centre of gravity), or None when no mass is given."""
         if self.mass_kg is None:
             return None
-        m, c = self.mass_kg, np.asarray(self.cog_m, dtype=float)
+        m, c = self.mass_kg, np.asarray(self.cog_m, dtype=float) - np.asarray(about, dtype=float)
         at_cog = m * np.diag(np.square(self.radii_of_gyration_m))
         return rigid_body_mass(m, tuple(c), at_cog + m * (c @ c * np.eye(3) - np.outer(c, c)))
 

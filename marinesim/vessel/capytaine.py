@@ -43,9 +43,8 @@ import numpy as np
 
 from marinesim.errors import FileFormatError, MarinesimError, ParameterError
 from marinesim.formats import check_file
-from marinesim.sea.dispersion import k_from_omega
 from marinesim.vessel.body import RigidBody, gravity_stiffness
-from marinesim.vessel.rao import DOFS, RaoTable, make_table
+from marinesim.vessel.rao import DOFS, RaoTable, make_table, refer_phases
 
 NEEDED = ("added_mass", "radiation_damping", "inertia_matrix", "hydrostatic_stiffness")
 
@@ -114,12 +113,14 @@ def _solve(path: Path, dataset, roll_damping: float, body: str | None, rigid_bod
         notes.append(dropped)
     own = np.ix_(chosen, chosen)
     g = float(dataset["g"]) if "g" in dataset.coords else 9.81
+    reference = _reference(path, dataset, body, notes)
     stiffness = stiffness.copy()
     if rigid_body.mass_kg is not None:
         # the dataset's stiffness holds the weight of its own inertia matrix's mass at its centre of gravity
         mass = mass.copy()
-        stiffness[own] += gravity_stiffness(rigid_body.mass_matrix(), g) - gravity_stiffness(mass[own], g)
-        mass[own] = rigid_body.mass_matrix()
+        scenario = rigid_body.mass_matrix(about=reference)
+        stiffness[own] += gravity_stiffness(scenario, g) - gravity_stiffness(mass[own], g)
+        mass[own] = scenario
     stiffness[own] += rigid_body.stiffness()
     if rigid_body.given:
         notes.append(rigid_body.describe())
@@ -143,27 +144,30 @@ def _solve(path: Path, dataset, roll_damping: float, body: str | None, rigid_bod
         raise FileFormatError(path, None, f"water_depth must be > 0 m (inf: deep water), got {depth:g}")
     if len(dofs) > 6:
         notes.append(f"body {body!r} of a dataset of {len(dofs) // 6} bodies, solved coupled with every body free")
-    if "rotation_center" in dataset.coords:
-        centre = dataset["rotation_center"]
-        if "body" in centre.dims:
-            centre = centre.sel(body=body)
-        reference = tuple(float(v) for v in np.ravel(centre.values))
-    else:
-        reference = (0.0, 0.0, 0.0)
-        notes.append("the dataset stores no rotation_center (Capytaine 2.x): the motions are taken as about "
-                     "the mesh origin (0, 0, 0), the reference point, and per unit wave there; if the body's "
-                     "DOFs rotate about another point, export the dataset with Capytaine 3")
-    if len(reference) != 3 or not all(math.isfinite(v) for v in reference):
-        raise FileFormatError(path, None, f"rotation_center must be three finite numbers, got {reference}")
-    wave_number = k_from_omega(omega, depth, g)                                            # (omega,)
-    along = reference[0] * np.cos(directions) + reference[1] * np.sin(directions)         # (direction,)
-    at_reference = np.exp(1j * wave_number[:, None] * along[None, :])                      # (omega, direction)
-    values = (np.conj(motion) * at_reference[..., None]).transpose(1, 0, 2)[None]
+    values = refer_phases(np.conj(motion).transpose(1, 0, 2), omega, np.degrees(directions), reference[:2], depth,
+                          g)[None]
     try:
         return make_table(omega, directions, [0.0], values, reference_point=reference, rho=rho, g=g,
                           source=str(path), source_format="capytaine", notes=tuple(notes), depth=depth)
     except ParameterError as error:
         raise FileFormatError(path, None, str(error)) from None
+
+
+def _reference(path: Path, dataset, body: str | None, notes: list[str]) -> tuple[float, float, float]:
+    """The body's rotation centre (m), the reference point of its RAOs; the mesh origin, with a note, where the
+    dataset stores none (Capytaine 2.x)."""
+    if "rotation_center" not in dataset.coords:
+        notes.append("the dataset stores no rotation_center (Capytaine 2.x): the motions are taken as about "
+                     "the mesh origin (0, 0, 0), the reference point, and per unit wave there; if the body's "
+                     "DOFs rotate about another point, export the dataset with Capytaine 3")
+        return (0.0, 0.0, 0.0)
+    centre = dataset["rotation_center"]
+    if "body" in centre.dims:
+        centre = centre.sel(body=body)
+    reference = tuple(float(v) for v in np.ravel(centre.values))
+    if len(reference) != 3 or not all(math.isfinite(v) for v in reference):
+        raise FileFormatError(path, None, f"rotation_center must be three finite numbers, got {reference}")
+    return reference
 
 
 def _usable_frequencies(path: Path, omega: np.ndarray, added: np.ndarray, damping: np.ndarray,

@@ -53,6 +53,7 @@ import numpy as np
 from marinesim.errors import FileFormatError, ParameterError
 from marinesim.formats import check_file
 from marinesim.tokens import Tokens, parse_float, read_text
+from marinesim.vessel.body import RigidBody, gravity_stiffness, rigid_body_mass
 from marinesim.vessel.rao import RaoTable, make_table, refer_phases
 
 ROTATION = np.array([False, False, False, True, True, True])
@@ -98,10 +99,11 @@ def sniff(head: bytes) -> bool:
     return "--- Environment" in text and "Number of bodies" in text
 
 
-def read_nemoh(path: str | Path) -> RaoTable:
-    """Read the RAOs of the NEMOH project that ``path`` (folder, ``Nemoh.cal`` or a file inside) belongs to."""
+def read_nemoh(path: str | Path, *, rigid_body: RigidBody | None = None) -> RaoTable:
+    """Read the RAOs of the NEMOH project that ``path`` (folder, ``Nemoh.cal`` or a file inside) belongs to;
+    ``rigid_body`` (the scenario's mass, external stiffness and damping) solves them from its coefficients."""
     path = Path(path)
-    raos = read_nemoh_raos(path)
+    raos = read_nemoh_raos(path, rigid_body)
     extra = {"depth": raos.depth} if math.isfinite(raos.depth) else {}
     try:
         return make_table(raos.omega, np.radians(raos.headings_deg), [0.0], raos.values[None],
@@ -120,18 +122,20 @@ def nemoh_to_internal(values: np.ndarray) -> np.ndarray:
     return np.conj(values)
 
 
-def read_nemoh_raos(path: str | Path) -> NemohRaos:
-    """The RAOs of the project of ``path``: ``Motion/RAO.dat`` if present, else solved from the coefficients."""
+def read_nemoh_raos(path: str | Path, rigid_body: RigidBody | None = None) -> NemohRaos:
+    """The RAOs of the project of ``path``: ``Motion/RAO.dat`` if present and the scenario gives no rigid body,
+    else solved from the coefficients."""
     root = project_root(Path(path))
     settings = read_settings(root / "Nemoh.cal")
+    rigid_body = rigid_body or RigidBody()
     rao_file = _child(root, "Motion", "RAO.dat")
-    if rao_file is not None:
+    if rao_file is not None and not rigid_body.given:
         omega, headings, values = read_rao_dat(rao_file)
         notes = (f"RAOs read from {rao_file.relative_to(root)} (NEMOH exp(-i w t) conjugated, rotations deg/m -> "
                  "rad/m)",)
         source = str(rao_file)
     else:
-        omega, headings, values, notes = solve_from_coefficients(root, settings)
+        omega, headings, values, notes = solve_from_coefficients(root, settings, rigid_body)
         source = "equation of motion"
     values = refer_to_centre(values, omega, headings, settings)
     order = np.argsort(omega)
@@ -193,10 +197,13 @@ def read_settings(cal: Path) -> Settings:
     return Settings(rho, g, math.inf if depth == 0.0 else depth, wave_point, centre)
 
 
-def solve_from_coefficients(root: Path, settings: Settings) -> tuple[np.ndarray, np.ndarray, np.ndarray,
-                                                                      tuple[str, ...]]:
+def solve_from_coefficients(root: Path, settings: Settings, rigid_body: RigidBody | None = None) -> tuple[
+        np.ndarray, np.ndarray, np.ndarray, tuple[str, ...]]:
     """(omega, headings_deg, RAOs (headings, frequencies, 6) in marinesim's convention, notes) solved from the
-    excitation forces, radiation coefficients, stiffness and mass of the project (module docstring)."""
+    excitation forces, radiation coefficients, stiffness and mass of the project (module docstring); the
+    scenario's ``rigid_body`` replaces the mass (and the weight's restoring in the stiffness) and adds its
+    external matrices."""
+    rigid_body = rigid_body or RigidBody()
     results = _folder(root, "results")
     if results is None:
         raise FileFormatError(root, None, "no Motion/RAO.dat and no results folder: run NEMOH's solver first")
@@ -223,13 +230,24 @@ def solve_from_coefficients(root: Path, settings: Settings) -> tuple[np.ndarray,
     stiffness, stiffness_file = _matrix_file(root, [("Mechanics", "Kh.dat"), ("mesh", "KH.dat")])
     if stiffness is None:
         raise FileFormatError(root, None, "no hydrostatic stiffness (Mechanics/Kh.dat or mesh/KH.dat)")
-    mass, mass_note = mass_matrix(root, settings)
     extra_k, k_file = _matrix_file(root, [("Mechanics", "Km.dat")])
     extra_b, b_file = _matrix_file(root, [("Mechanics", "Badd.dat")])
-    stiffness = stiffness + (extra_k if extra_k is not None else 0.0)
+    stiffness = stiffness + (extra_k if extra_k is not None else 0.0) + rigid_body.stiffness()
+    if rigid_body.mass_kg is None:
+        mass, mass_note = mass_matrix(root, settings)
+    else:
+        mass, mass_note = rigid_body.mass_matrix(about=settings.rotation_centre), "the scenario's mass"
+        try:  # the stiffness holds the weight of NEMOH's own mass at its centre of gravity: the scenario's replaces it
+            own, _ = mass_matrix(root, settings)
+            stiffness = stiffness + gravity_stiffness(mass, settings.g) - gravity_stiffness(own, settings.g)
+        except FileFormatError:
+            notes.append("the stiffness keeps NEMOH's weight terms: the project gives no mass to say where its "
+                         "centre of gravity was")
+        notes.append(rigid_body.describe())
+    extra_b = (extra_b if extra_b is not None else 0.0) + rigid_body.damping()
     w = omega[:, None, None]
     impedance = (-w**2 * (mass + np.swapaxes(added, 1, 2))
-                 + 1j * w * (np.swapaxes(damping, 1, 2) + (extra_b if extra_b is not None else 0.0)) + stiffness)
+                 + 1j * w * (np.swapaxes(damping, 1, 2) + extra_b) + stiffness)
     for k in range(omega.size):
         if np.linalg.cond(impedance[k]) > 1e14:
             raise FileFormatError(root, None, f"the equation of motion is singular at {omega[k]:g} rad/s "
@@ -256,12 +274,7 @@ def mass_matrix(root: Path, settings: Settings) -> tuple[np.ndarray, str]:
         inertia = _read_matrix(hull, 3)
         body_mass, cog = _hydrostatics(hydro, settings.rho)
         d = np.array(cog) - np.array(settings.rotation_centre)
-        skew = np.array([[0.0, -d[2], d[1]], [d[2], 0.0, -d[0]], [-d[1], d[0], 0.0]])
-        mass = np.zeros((6, 6))
-        mass[:3, :3] = body_mass * np.eye(3)
-        mass[:3, 3:] = -body_mass * skew
-        mass[3:, :3] = body_mass * skew
-        mass[3:, 3:] = inertia + body_mass * (d @ d * np.eye(3) - np.outer(d, d))
+        mass = rigid_body_mass(body_mass, tuple(d), inertia + body_mass * (d @ d * np.eye(3) - np.outer(d, d)))
         phrase = (f"a mass of {body_mass:.6g} kg at G = ({cog[0]:g}, {cog[1]:g}, {cog[2]:g}) m "
                   f"({hydro.relative_to(root).as_posix()}) with the inertia of {hull.relative_to(root).as_posix()} "
                   "about G")

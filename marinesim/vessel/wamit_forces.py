@@ -75,7 +75,7 @@ def read_wamit_forces(path: str | Path, *, ulen: float | None = None, rigid_body
     ``rigid_body`` (the scenario's) gives the mass instead of the ``.frc`` and adds its external matrices."""
     path = Path(path)
     rigid_body = rigid_body or RigidBody()
-    fs = read_force_set(path, ulen=ulen, mass=rigid_body.mass_matrix())
+    fs = read_force_set(path, ulen=ulen, rigid_body=rigid_body)
     notes = list(fs.notes)
     stiffness = fs.stiffness + fs.frc.stiffness + rigid_body.stiffness()
     if rigid_body.mass_kg is not None:
@@ -98,13 +98,14 @@ def read_wamit_forces(path: str | Path, *, ulen: float | None = None, rigid_body
                       notes=tuple(notes) + (fs.settings.describe(),), source_format="wamit-forces")
 
 
-def read_force_set(path: str | Path, *, ulen: float | None = None, mass: np.ndarray | None = None) -> ForceSet:
+def read_force_set(path: str | Path, *, ulen: float | None = None, rigid_body: RigidBody | None = None) -> ForceSet:
     """The ``.1``, ``.3``, ``.hst`` and ``.frc`` named like ``path``, WAMIT's normalisation undone (module docstring).
-    With ``mass`` (6 x 6, SI, the scenario's) the ``.frc`` is optional: it then gives only rho and the external
+    With the scenario's mass (``rigid_body``) the ``.frc`` is optional: it then gives only rho and the external
     matrices."""
     path = Path(path)
+    given = rigid_body is not None and rigid_body.mass_kg is not None
     files = {suffix: path.with_suffix(suffix) for suffix in SET}
-    if mass is not None and not files[".frc"].is_file():
+    if given and not files[".frc"].is_file():
         del files[".frc"]
     missing = [f.name for f in files.values() if not f.is_file()]
     if missing:
@@ -125,7 +126,8 @@ def read_force_set(path: str | Path, *, ulen: float | None = None, mass: np.ndar
     at = _match_periods(files[".3"], periods, files[".1"], per_1)
     omega = settings.omega(periods, files[".3"])
     length = settings.ulen ** (3 + PAIR_POWER)
-    mass, mass_notes = (mass, []) if mass is not None else mass_matrix(files[".frc"], frc, rho)
+    mass, mass_notes = ((rigid_body.mass_matrix(about=(0.0, 0.0, settings.xbody[2])), []) if given
+                        else mass_matrix(files[".frc"], frc, rho))
     return ForceSet(omega=omega, periods=periods, headings_deg=headings, mass=mass,
                     added=added[at] * rho * length,
                     damping=damping[at] * rho * omega[:, None, None] * length,

@@ -126,7 +126,7 @@ def _solve(report: Report, omega: np.ndarray, headings: np.ndarray, length: floa
     scale = length ** (3 + PAIR_POWER)
     forces = _complex(report, kind, headings) * rho * g * length ** np.where(ROTATION, 3, 2)
     stiffness = report.restoring * rho * g * length ** (2 + PAIR_POWER)
-    mass = rigid_body.mass_matrix()
+    mass = rigid_body.mass_matrix(about=(0.0, 0.0, report.xbody[2]))
     if report.cog is None or not math.isfinite(report.volume):
         raise FileFormatError(path, None, "the report gives no volume or centre of gravity: its restoring "
                                           "coefficients' gravity terms cannot be replaced by the scenario's")
