@@ -1,6 +1,7 @@
-"""Writes three procedural, vertex-coloured visual meshes for the vessels in rao/ that have no hull file:
-hulls/s175_visual.glb (the S175 container ship), hulls/semisub_visual.glb (the WAMIT semisubmersible) and
-hulls/supply_visual.glb (the VERES offshore supply vessel).
+"""Writes four procedural, vertex-coloured visual meshes for the vessels in rao/: hulls/s175_visual.glb (the S175
+container ship), hulls/semisub_visual.glb (the WAMIT semisubmersible), hulls/supply_visual.glb (the VERES
+offshore supply vessel) and hulls/tanker_visual.glb (the WAMIT tanker, whose hydrodynamic hull is only its wetted
+surface).
 
 Each is written in the body frame of its RAO file (docs/CONVENTIONS.md): x forward, y to port, z up, metres,
 origin at the RAO reference point, so a scenario needs only ``visual_mesh = "../hulls/NAME.glb"``. The two
@@ -659,16 +660,102 @@ def semisub(reference: Sequence[float]) -> tuple[Part, dict[str, list[float]]]:
     return join([closed(p, "part") for p in parts]), points
 
 
+# ----------------------------------------------------------------------------------------------- tanker
+
+TANKER = ShipForm(lpp=246.0, beam=46.0, draft=10.0, depth=22.0, midbody=(-48.0, 74.0), p_fwd=(1.95, 2.5, 3.1),
+                  p_aft=(1.3, 1.95, 3.45), forefoot_x=111.0, rake_deg=12.0, cutup_x=-106.0, transom_x=-128.2,
+                  transom_z=7.0, transom_share=0.72, bilge=2.6, forecastle=(2.6, 104.0))
+TANKER_RED = (128, 34, 30)
+TANKER_DECK = (62, 112, 70)  # the bright green of a tanker's cargo deck
+
+
+def tanker(reference: Sequence[float]) -> tuple[Part, dict[str, list[float]]]:
+    """The WAMIT tanker (Lpp 246 m, B 46 m, T 10 m) in the shipyard's frame: the accommodation aft with the
+    bridge across the beam, the funnel behind it, the catwalk and pipe rack along the tank deck, the manifold and
+    its hose cranes amidships, the foremast and forecastle."""
+    f = TANKER
+    wl, boot = f.draft, f.draft + 2.0
+    paint = by_height([(wl, ANTIFOULING), (boot, BOOT_TOP), (np.inf, TANKER_RED)])
+    levels = [0.0, 0.15, 0.5, 1.1, 1.9, 3.0, 4.4, 6.0, 7.6, 9.0, wl, 11.0, boot, 14.0, 17.0, 20.0, f.depth,
+              f.depth + 1.3, f.depth + f.forecastle[0]]
+    parts = [hull(f, levels, paint, TANKER_DECK, step_mid=6.0)]
+    parts.append(closed(ellipsoid((f.lpp / 2 - 1.0, 0.0, 4.6), (9.0, 3.4, 4.2), ANTIFOULING), "bulb"))
+    parts.append(box((-126.5, -0.7, 1.5), (-121.0, 0.7, 9.5), ANTIFOULING))  # rudder
+    deck = f.depth
+    # accommodation aft: six decks, the wheelhouse on top with its wings out to the ship's side
+    front, aft = -100.0, -116.0
+    parts.append(box((-124.0, -21.0, deck), (-98.0, 21.0, deck + 1.0), WHITE))  # poop deck
+    bridge_floor = reference[2] + 30.3  # the bridge eye (points: 32 m above the waterline) 1.7 m over the floor
+    tiers = decks_with_windows(5, height=(bridge_floor - deck - 1.0) / 5)
+    parts.append(tiered(aft, front, -14.0, 14.0, deck + 1.0, tiers, chamfer=2.0))
+    parts.append(tiered(aft + 4.0, front + 0.4, -12.5, 12.5, bridge_floor, [(1.0, WHITE), (2.0, WINDOW), (0.5, WHITE)],
+                        chamfer=1.5))
+    parts.append(box((aft + 3.7, -13.0, bridge_floor + 3.5), (front + 0.9, 13.0, bridge_floor + 3.8), WHITE))  # visor
+    # inside the wheelhouse, seen from the conning position: mullions in the front windows, the console below them
+    for y in np.arange(-10.5, 11.0, 2.1):
+        parts.append(box((front - 0.35, y - 0.06, bridge_floor + 1.0), (front - 0.17, y + 0.06, bridge_floor + 3.0),
+                         (52, 56, 60)))
+    parts.append(box((front - 0.3, -12.0, bridge_floor + 1.0), (front - 0.17, 12.0, bridge_floor + 1.12), (52, 56, 60)))
+    parts.append(box((front - 1.9, -7.0, bridge_floor), (front - 0.6, 7.0, bridge_floor + 1.1), (70, 76, 82)))
+    parts.append(box((aft + 4.3, -12.2, bridge_floor), (front - 0.1, 12.2, bridge_floor + 0.04), (64, 68, 74)))  # floor
+    for sign in (1.0, -1.0):
+        y0, y1 = sorted((sign * 12.5, sign * (f.beam / 2 + 0.4)))
+        parts.append(box((front - 3.0, y0, bridge_floor - 0.4), (front, y1, bridge_floor + 1.2), WHITE))  # wing
+        parts.append(box((front - 2.8, sign * (f.beam / 2 - 0.2) - 0.3, bridge_floor + 1.2),
+                         (front - 0.2, sign * (f.beam / 2 - 0.2) + 0.3, bridge_floor + 2.2), WINDOW))  # wing console
+    # funnel aft of the accommodation: company colours, black top
+    funnel = rounded_rectangle(-123.0, -116.5, -4.0, 4.0, 2.0)
+    parts += [prism(funnel, deck + 1.0, bridge_floor + 6.0, (210, 180, 60)),
+              prism(funnel, bridge_floor + 6.0, bridge_floor + 8.0, BLACK)]
+    # masts on the wheelhouse roof and the forecastle; a radar scanner
+    roof = bridge_floor + 3.5
+    parts += [cylinder((front - 6.0, 0, roof), (front - 6.0, 0, roof + 9.0), 0.35, STEEL),
+              beam((front - 6.0, -3.5, roof + 7.0), (front - 6.0, 3.5, roof + 7.0), 0.3, STEEL),
+              box((front - 7.0, -2.6, roof + 3.5), (front - 5.0, 2.6, roof + 3.85), BLACK),
+              cylinder((116.0, 0, deck + f.forecastle[0]), (116.0, 0, deck + f.forecastle[0] + 12.0), 0.45, STEEL)]
+    # the tank deck: catwalk on the centreline, a pipe rack beside it, tank hatches, the manifold and hose cranes
+    parts.append(box((-98.0, -1.0, deck + 2.4), (104.0, 1.0, deck + 2.7), STEEL))  # catwalk
+    for x in np.arange(-96.0, 104.0, 12.0):
+        parts.append(box((x - 0.2, -0.9, deck), (x + 0.2, 0.9, deck + 2.4), STEEL))  # its stanchions
+    for k in range(4):
+        y = 2.0 + 0.8 * k
+        parts.append(cylinder((-98.0, y, deck + 0.9), (104.0, y, deck + 0.9), 0.32, (96, 112, 96), sections=8))
+    for x in np.arange(-88.0, 100.0, 24.0):
+        for y in (-12.0, 12.0):
+            parts.append(box((x - 1.5, y - 1.5, deck), (x + 1.5, y + 1.5, deck + 0.9), STEEL))  # tank hatches
+    for sign in (1.0, -1.0):
+        parts.append(box((-6.0, sign * 4.0 - 0.3, deck), (6.0, sign * 21.0 + 0.3, deck + 1.2), (96, 112, 96)))
+        for x in (-4.0, 0.0, 4.0):  # the manifold's flanges at the ship's side
+            parts.append(cylinder((x, sign * 19.5, deck + 1.6), (x, sign * 21.5, deck + 1.6), 0.45, STEEL, 10))
+        ped = np.array([10.0, sign * 16.0])
+        tip = np.array([-2.0, sign * 21.0, deck + 16.0])
+        parts += [cylinder((*ped, deck), (*ped, deck + 5.0), 0.9, WHITE, 12),
+                  beam((*ped, deck + 5.0), tip, 0.8, WHITE),
+                  cylinder(tip, tip + (0.0, 0.0, -8.0), 0.08, BLACK, 6)]
+    # forecastle: bulwark, windlasses
+    edge = deck_edge(f, f.forecastle[1] + 1.5, f.stem_top() - 0.5, 0.15, 24)
+    parts.append(rail(edge, 1.3, 0.3, TANKER_RED))
+    fc = deck + f.forecastle[0]
+    parts += [box((108.0, sign * 4.0 - 1.2, fc), (111.0, sign * 4.0 + 1.2, fc + 1.6), STEEL) for sign in (1.0, -1.0)]
+    eye = bridge_floor + 1.7
+    points = {"bridge": [front - 1.0, 0.0, eye], "bridge_wing_stbd": [front - 1.5, -f.beam / 2, eye],
+              "bow": [f.lpp / 2 - 3.0, 0.0, fc], "manifold": [0.0, 20.0, deck + 2.0]}
+    return join([closed(p, "part") for p in parts]), points
+
+
 # ----------------------------------------------------------------------------------------------- main
 
 SHIPS = (("s175_visual.glb", RAO / "s175" / "input.re1", S175, s175),
          ("supply_visual.glb", RAO / "supply" / "input.re1", SUPPLY, supply),
-         ("semisub_visual.glb", RAO / "semisub" / "semisub.4", None, semisub))
+         ("semisub_visual.glb", RAO / "semisub" / "semisub.4", None, semisub),
+         ("tanker_visual.glb", RAO / "tanker" / "tanker.4", TANKER, tanker))
 """File, RAO file, hull form (None: the frame's z = 0 is the waterline, not the baseline), builder."""
 
 if __name__ == "__main__":
     for name, rao, form, make in SHIPS:
         reference = np.asarray(read_rao(rao).reference_point, float)  # (XMTN, 0, ZMTN) for VERES, 0 for WAMIT
+        if rao.suffix == ".4" and form is not None:
+            reference = reference + (0.0, 0.0, form.draft)  # WAMIT's origin: midships on the waterline
         model, points = make(reference)
         body = model.moved(-reference)  # into the body frame: origin at the RAO reference point
         write_glb(body, HERE / name)

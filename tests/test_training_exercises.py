@@ -1,6 +1,7 @@
 """The four shipped training exercises: each loads with its briefing and objectives, runs through
 ``assess`` and ``report`` (short, as CI can afford), and the heavy-weather transit rewards the right
-call: the course change brings the roll back within its limit."""
+call: the course change brings the roll back within its limit. Every shipped scenario, exercise or not,
+draws its ship."""
 
 from __future__ import annotations
 
@@ -39,12 +40,16 @@ def test_an_exercise_runs_through_assess_and_report(path, tmp_path, capsys):
     assert html.escape(scenario.briefing.objectives[0][0]) in page and "<img class='plot'" in page
 
 
-@pytest.mark.parametrize("path", TRAINING, ids=[p.stem for p in TRAINING])
-def test_the_exercise_shows_its_vessel(path):
+SHIPPED = sorted((ROOT / "configs").glob("*.toml")) + TRAINING
+
+
+@pytest.mark.parametrize("path", SHIPPED, ids=[p.stem for p in SHIPPED])
+def test_every_shipped_scenario_shows_its_vessel(path):
     """The first frame with the vessel drawn against the same frame without it: the vessel must cover a
-    visible part of the picture near its middle (the orbit camera looks at it), and where the exercise names a
-    painted visual mesh its pixels carry the paint, not the plain grey of the hydrodynamic hull. What would be
-    wrong: a mesh in the wrong frame (under the sea, off screen) or the visual mesh not loaded."""
+    visible part of the picture near its middle (the orbit camera looks at it), and its pixels carry the paint
+    of its visual mesh (every shipped scenario names one), not the plain grey of a hydrodynamic hull. What would
+    be wrong: a scenario that draws no ship, a mesh in the wrong frame (under the sea, off screen) or the visual
+    mesh not loaded."""
     scenario = load_scenario(path)
     with offscreen(scenario) as view:
         view.go_to(0.0)
@@ -56,10 +61,10 @@ def test_the_exercise_shows_its_vessel(path):
     rows, cols = np.nonzero(vessel)
     assert vessel.mean() > 0.005, f"the vessel covers {vessel.mean():.2%} of the frame"
     assert abs(cols.mean() / width - 0.5) < 0.15 and abs(rows.mean() / height - 0.5) < 0.2, "the vessel is off centre"
-    if scenario.vessel.visual is not None:
-        pixels = with_vessel[vessel]
-        chroma = pixels.max(axis=1) - pixels.min(axis=1)
-        assert np.median(chroma) > 15, "the visual mesh's paint is missing (a grey hull reads about 3)"
+    assert scenario.vessel.visual is not None, "a shipped scenario draws a ship, not its hydrodynamic hull"
+    pixels = with_vessel[vessel]
+    chroma = pixels.max(axis=1) - pixels.min(axis=1)
+    assert np.median(chroma) > 15, "the visual mesh's paint is missing (a grey hull reads about 3)"
 
 
 @pytest.mark.slow

@@ -1,5 +1,5 @@
-"""The three procedural visual meshes (hulls/visual_ships.py): hulls/s175_visual.glb, hulls/supply_visual.glb and
-hulls/semisub_visual.glb, read by marinesim's own loader with no options (they are written in the body frame of
+"""The four procedural visual meshes (hulls/visual_ships.py): hulls/s175_visual.glb, hulls/supply_visual.glb,
+hulls/semisub_visual.glb and hulls/tanker_visual.glb, read by marinesim's own loader with no options (they are written in the body frame of
 their RAO files: x forward, y to port, z up, m, origin at the RAO reference point).
 
 Each test measures the mesh as a surveyor would (waterline cuts, rays dropped on decks) against what the RAO
@@ -139,7 +139,7 @@ def test_meshes_show_their_outside_to_every_view():
     """Rays from all round and above: the first face each meets faces the ray (drawn one-sided with back faces
     culled, an inside-out face would be a hole)."""
     rng = np.random.default_rng(1)
-    for name in ("s175", "supply", "semisub"):
+    for name in ("s175", "supply", "semisub", "tanker"):
         v = mesh(name).vertices
         lo, hi = v.min(axis=0), v.max(axis=0)
         centre, radius = (lo + hi) / 2, np.linalg.norm(hi - lo)
@@ -155,6 +155,25 @@ def test_meshes_show_their_outside_to_every_view():
             if len(t) and normals(tri[faces[:1]])[0] @ direction > 0:
                 wrong.append(np.round(origin + t[0] * direction, 1).tolist())
         assert not wrong, f"{name}: faces seen from outside face inwards at {wrong[:5]}"
+
+
+def test_the_tanker_has_the_underwater_body_of_its_wamit_panels():
+    """The drawn tanker against the panels WAMIT solved (rao/tanker/tanker.gdf, the wetted surface only): the same
+    displacement and waterplane within 1 %, centre of buoyancy within 0.5 % of Lpp along and 0.1 m in height, and
+    the boot-top band dark just above the waterline. A tanker drawn fuller, finer, trimmed or floating at
+    another draft than the one whose RAOs move it would fail."""
+    from marinesim.hull import hydrostatics, load_hull
+
+    drawn = hydrostatics(load_hull(HULLS / "tanker_visual.glb"))
+    panels = hydrostatics(load_hull(ROOT / "rao" / "tanker" / "tanker.gdf"))
+    assert drawn.volume_m3 == pytest.approx(panels.volume_m3, rel=0.01)
+    assert drawn.waterplane_area_m2 == pytest.approx(panels.waterplane_area_m2, rel=0.01)
+    assert abs(drawn.centre_of_buoyancy_m[0] - panels.centre_of_buoyancy_m[0]) < 0.005 * 246.0
+    assert abs(drawn.centre_of_buoyancy_m[2] - panels.centre_of_buoyancy_m[2]) < 0.1
+    _, face = first_hit("tanker", (0.0, -60.0, 1.0), (0.0, 1.0, 0.0))
+    assert max(colour("tanker", face)) < 0.2, "the side 1 m above the waterline is not the boot-top"
+    _, face = first_hit("tanker", (0.0, -60.0, -3.0), (0.0, 1.0, 0.0))
+    assert is_red(colour("tanker", face)), "the side under water is not anti-fouling red"
 
 
 def test_s175_points():
