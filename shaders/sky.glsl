@@ -1,7 +1,11 @@
 // The analytic sky, sun and haze shared by the sky pass, the water's reflection and the vessel.
 // Colours are linear radiance in arbitrary units; finish() tone-maps and gamma-encodes them.
 uniform vec3 u_sun;         // unit vector towards the sun (E frame, z up)
-uniform float u_visibility; // m: the distance at which haze hides 63 % of a surface's colour
+uniform float u_visibility; // m: meteorological visibility, where haze leaves 5 % of a dark object's contrast
+
+// Koschmieder: the contrast of an object against the horizon falls as exp(-sigma d); the visibility is
+// where it reaches the threshold 0.05, so the extinction coefficient sigma = ln(1 / 0.05) / visibility.
+const float KOSCHMIEDER = 2.995732;
 
 const vec3 ZENITH = vec3(0.08, 0.22, 0.55);
 const vec3 HORIZON = vec3(0.60, 0.72, 0.86);
@@ -21,7 +25,7 @@ vec3 haze_colour(vec3 d) {
 }
 
 vec3 with_haze(vec3 colour, vec3 d, float distance_m) {
-    return mix(colour, haze_colour(d), 1.0 - exp(-distance_m / u_visibility));
+    return mix(colour, haze_colour(d), 1.0 - exp(-KOSCHMIEDER * distance_m / u_visibility));
 }
 
 vec4 finish(vec3 c) {

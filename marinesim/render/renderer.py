@@ -43,8 +43,8 @@ from marinesim.session.timeline import Simulation
 
 @dataclass(frozen=True)
 class RenderOptions:
-    """What to draw: the Kelvin wake, foam, the vessel, the local solver (``solver_size`` cells a side), the sun
-    (compass azimuth and elevation, deg) and the visibility (m) that sets the haze. ``cascades``: where the
+    """What to draw: the Kelvin wake, foam, the vessel, the local solver (``solver_size`` cells a side).
+    The sun and the haze come from the scenario's ``[environment]`` (:func:`sun_vector`). ``cascades``: where the
     ocean's fields are synthesised each frame, ``"gpu"`` (compute shaders), ``"cpu"`` (the ocean's FFTs,
     uploaded) or ``"auto"`` (the GPU where there is one; the CPU on a software renderer, where the compute
     shaders run 10x slower than FFTW). ``reproducible``: the CPU's fields by numpy.fft, the same pixels
@@ -55,15 +55,14 @@ class RenderOptions:
     vessel: bool = True
     solver: bool = False
     solver_size: int = 512
-    sun_azimuth_deg: float = 200.0
-    sun_elevation_deg: float = 30.0
-    visibility_m: float = 15_000.0
     cascades: str = "auto"
     reproducible: bool = False
 
-    def sun(self) -> tuple[float, float, float]:
-        azimuth, elevation = compass_to_math(self.sun_azimuth_deg), math.radians(self.sun_elevation_deg)
-        return (math.cos(elevation) * math.cos(azimuth), math.cos(elevation) * math.sin(azimuth), math.sin(elevation))
+
+def sun_vector(azimuth_deg: float, elevation_deg: float) -> tuple[float, float, float]:
+    """Unit vector towards the sun (E frame: x east, y north, z up) from its compass bearing and elevation."""
+    azimuth, elevation = compass_to_math(azimuth_deg), math.radians(elevation_deg)
+    return (math.cos(elevation) * math.cos(azimuth), math.cos(elevation) * math.sin(azimuth), math.sin(elevation))
 
 
 def gpu_cascades(ctx: moderngl.Context, choice: str) -> bool:
@@ -109,7 +108,9 @@ class Renderer:
     def view(self, eye: Eye, size: tuple[int, int]) -> View:
         """The view of ``eye`` into a target of ``size`` (w, h) px, with this renderer's sun and haze."""
         width, height = size
-        return View(eye, eye.view_projection(width / height), self.options.sun(), self.options.visibility_m)
+        air = self.sim.scenario.environment
+        return View(eye, eye.view_projection(width / height), sun_vector(air.sun_azimuth_deg, air.sun_elevation_deg),
+                    air.visibility_m)
 
     def draw(self, eye: Eye, size: tuple[int, int]) -> None:
         """Draw the view of ``eye`` into the bound framebuffer of ``size`` (w, h) px."""

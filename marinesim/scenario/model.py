@@ -283,6 +283,18 @@ class RunOptions(Section):
         return round(self.duration_s / self.dt_s) + 1
 
 
+class EnvironmentOptions(Section):
+    """``[environment]``: the light and the air the picture is drawn in (the physics does not see them)."""
+
+    sun_azimuth_deg: Annotated[float, Quantity("deg", ge=0.0, lt=360.0)] = Field(
+        200.0, description="compass bearing of the sun")
+    sun_elevation_deg: Annotated[float, Quantity("deg", ge=0.0, le=90.0)] = Field(
+        30.0, description="height of the sun above the horizon (dusk and night are not drawn yet)")
+    visibility_m: Annotated[float, Quantity("m", ge=50.0, le=200_000.0)] = Field(
+        40_000.0, description="meteorological visibility: where a dark object's contrast against the horizon "
+                              "falls to 0.05 (Koschmieder; 1 km is fog, 10 km moderate, 40 km very good)")
+
+
 def _at_least_one(systems: list[SeaOptions]) -> list[SeaOptions]:
     if not systems:
         raise PydanticCustomError("required", "at least one [[sea]] wave system is required")
@@ -382,6 +394,7 @@ class ScenarioFile(Section):
         default_factory=list, validate_default=True, description="one or more wave systems")
     vessel: VesselOptions | None = Field(None, description="the vessel; absent: a sea only")
     run: RunOptions = Field(default_factory=RunOptions, description="the run")
+    environment: EnvironmentOptions = Field(default_factory=EnvironmentOptions, description="light and air")
     events: Annotated[list[EventOptions], Field(max_length=MAX_EVENTS)] = Field(
         default_factory=list, description="the exercise's timeline")
     criteria: Annotated[list[CriterionOptions], Field(max_length=MAX_CRITERIA)] = Field(

@@ -21,8 +21,8 @@ from marinesim.criteria.quantities import Options
 from marinesim.errors import FileFormatError, MarinesimError, ScenarioError
 from marinesim.hull import Hull, VisualMesh, load_hull, load_visual_mesh
 from marinesim.scenario.model import (HULL_OPTIONS, VISUAL_MESH_OPTIONS, WAVE_PARAMETERS, CriterionOptions,
-                                      EventOptions, OceanOptions, RunOptions, ScenarioFile, SeaOptions, VesselOptions,
-                                      validate)
+                                      EnvironmentOptions, EventOptions, OceanOptions, RunOptions, ScenarioFile,
+                                      SeaOptions, VesselOptions, validate)
 from marinesim.sea.build import wave_system
 from marinesim.sea.seastate import SeaState
 from marinesim.vessel.body import RigidBody
@@ -101,6 +101,7 @@ class Scenario:
     events: tuple[Event, ...] = ()
     criteria: tuple[Criterion, ...] = ()
     briefing: Briefing | None = None
+    environment: EnvironmentOptions = EnvironmentOptions()
 
     @property
     def name(self) -> str:
@@ -146,7 +147,7 @@ def _build(path: Path, file: ScenarioFile) -> Scenario:
                                 "vessel.hull): the keel would be on the sea bed")
     briefing = None if file.briefing is None else Briefing(
         file.briefing.text.strip(), tuple((o.text, tuple(o.criteria)) for o in file.briefing.objectives))
-    return Scenario(path.resolve(), sea, file.ocean, file.run, vessel, events, criteria, briefing)
+    return Scenario(path.resolve(), sea, file.ocean, file.run, vessel, events, criteria, briefing, file.environment)
 
 
 def _sea(where: str, options: list[SeaOptions], depth: float, whole: str) -> SeaState:

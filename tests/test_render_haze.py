@@ -1,0 +1,51 @@
+"""The haze the picture is drawn in (shaders/sky.glsl) obeys the meteorological definition of visibility
+(Koschmieder, WMO): a dark object's contrast against the horizon sky falls as exp(-sigma d) and reaches the
+threshold 0.05 at the visibility, so sigma = ln(20) / V. Run on a real OpenGL context: the shader's own
+with_haze() on a black object at distances d, against its haze_colour()."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from marinesim.gl import SHADER_DIR
+from marinesim.scenario.model import EnvironmentOptions
+
+VERTEX = """#version 430
+void main() { vec2 p = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2); gl_Position = vec4(2.0 * p - 1.0, 0, 1); }
+"""
+FRAGMENT = """#version 430
+{sky}
+uniform float u_distance;
+out vec4 f_colour;
+void main() {{
+    vec3 d = normalize(vec3(1.0, 0.2, -0.01));  // towards the horizon
+    f_colour = vec4(with_haze(vec3(0.0), d, u_distance).g, haze_colour(d).g, 0.0, 1.0);
+}}
+"""
+
+
+def contrast(ctx, visibility_m: float, distance_m: float) -> float:
+    """(L_object - L_haze) / L_haze of a black object seen at ``distance_m``, in linear radiance."""
+    sky = (SHADER_DIR / "sky.glsl").read_text()
+    program = ctx.program(vertex_shader=VERTEX, fragment_shader=FRAGMENT.format(sky=sky))
+    program["u_visibility"].value = visibility_m
+    program["u_distance"].value = distance_m
+    target = ctx.simple_framebuffer((1, 1), components=4, dtype="f4")
+    target.use()
+    ctx.vertex_array(program, []).render(vertices=3)
+    obj, haze = np.frombuffer(target.read(components=4, dtype="f4"), np.float32)[:2]
+    program.release()
+    target.release()
+    return float((obj - haze) / haze)
+
+
+@pytest.mark.parametrize("visibility_m", [1_000.0, 10_000.0, EnvironmentOptions().visibility_m])
+def test_a_dark_object_keeps_five_percent_of_its_contrast_at_the_visibility(gl_context, visibility_m):
+    """At the visibility the contrast is -0.05 (not -exp(-1) = -0.37, which an e-folding length would give: the
+    same figure then drew the air four times as clear); at half of it, sqrt(0.05)."""
+    assert contrast(gl_context, visibility_m, visibility_m) == pytest.approx(-0.05, rel=1e-4)
+    assert contrast(gl_context, visibility_m, visibility_m / 2) == pytest.approx(-math.sqrt(0.05), rel=1e-4)
+    assert contrast(gl_context, visibility_m, 0.0) == pytest.approx(-1.0, rel=1e-6)
