@@ -1,8 +1,10 @@
-"""Absurd values, unbounded work and odd paths, staged for real: each must end as one line on stderr
-naming the file, key or option and what was expected, exit status 2, no traceback, and quickly."""
+"""Absurd values, unbounded work and odd paths, staged for real through the command line: each must end as one
+line on stderr naming the file, key or option and what was expected, exit status 2, no traceback, and quickly."""
 
 from __future__ import annotations
 
+import contextlib
+import io
 import json
 import math
 import os
@@ -24,11 +26,24 @@ S175 = ROOT / "rao" / "s175" / "input.re1"
 LIMIT_S = 60
 
 
-def marinesim(*args: str, cwd: Path | None = None) -> subprocess.CompletedProcess:
-    """``python -m marinesim ARGS`` as a user runs it (a hang fails the test after LIMIT_S)."""
-    env = dict(os.environ, PYTHONPATH=str(ROOT))
-    return subprocess.run([sys.executable, "-m", "marinesim", *args], capture_output=True, text=True, env=env,
-                          cwd=cwd, timeout=LIMIT_S)
+def marinesim(*args: str, process: bool = False) -> subprocess.CompletedProcess:
+    """``marinesim ARGS`` through the command line's own entry (``marinesim.cli.main``) in this process, its
+    exit status and output captured as a user would see them; with ``process``, ``python -m marinesim ARGS`` in a
+    process of its own (for what could block: a hang then fails the test after LIMIT_S). The subprocess path
+    itself (imports, signals) is tested by test_cli_main.py and the input campaign."""
+    if process:
+        env = dict(os.environ, PYTHONPATH=str(ROOT))
+        return subprocess.run([sys.executable, "-m", "marinesim", *args], capture_output=True, text=True, env=env,
+                              timeout=LIMIT_S)
+    from marinesim.cli import main
+
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        try:
+            code = main(list(args))
+        except SystemExit as exit_:  # argparse's usage errors
+            code = exit_.code if isinstance(exit_.code, int) else 2
+    return subprocess.CompletedProcess(list(args), code, out.getvalue(), err.getvalue())
 
 
 def refused(result: subprocess.CompletedProcess, *words: str) -> str:
@@ -214,13 +229,14 @@ def test_an_rao_or_hull_path_that_is_not_a_regular_file_is_refused(tmp_path, kin
         os.symlink(odd, tmp_path / "other.4")
     else:
         odd.mkdir()
-    refused(marinesim("rao", str(odd)), str(odd))
+    apart = kind == "fifo"  # a FIFO would block a reader that missed it: in a process of its own
+    refused(marinesim("rao", str(odd), process=apart), str(odd))
     odd_hull = tmp_path / "odd.gdf"
     odd_hull.symlink_to(odd)
-    refused(marinesim("hull", str(odd_hull)), str(odd_hull))
+    refused(marinesim("hull", str(odd_hull), process=apart), str(odd_hull))
     for key, files in (("vessel.rao", {"rao": odd}), ("vessel.hull", {"hull": odd_hull})):
         path = scenario(tmp_path, **files)
-        refused(marinesim("export", str(path), "--out", str(tmp_path / "m.csv")), key)
+        refused(marinesim("export", str(path), "--out", str(tmp_path / "m.csv"), process=apart), key)
 
 
 def test_a_nul_byte_in_a_scenario_path_is_refused(tmp_path):
@@ -233,7 +249,8 @@ def test_a_fifo_as_scenario_is_refused(tmp_path):
     """Without this, ``marinesim export FIFO`` waits for ever for a writer."""
     fifo = tmp_path / "s.toml"
     os.mkfifo(fifo)
-    refused(marinesim("export", str(fifo), "--out", str(tmp_path / "m.csv")), str(fifo), "not a regular file")
+    refused(marinesim("export", str(fifo), "--out", str(tmp_path / "m.csv"), process=True), str(fifo),
+            "not a regular file")
 
 
 # D: tracebacks --------------------------------------------------------------------------------

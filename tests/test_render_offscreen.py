@@ -173,7 +173,8 @@ def test_a_ten_second_video_has_its_frames_and_its_csv_equals_marinesim_export(d
 def barge(tmp_path_factory):
     """The default sea with the box barge as the hull (no bridge point, so no deckhouse of its own): plain,
     with hulls/barge_visual.glb (deckhouse and mast, in cm, y up) as its visual mesh, and that mesh alone."""
-    text = (DEFAULT.read_text().replace("tanker.gdf", "box_barge.stl").replace("bridge = [-105.0, 0.0, 32.0]\n", "")
+    text = (re.sub(r"visual_mesh = .*\n", "", DEFAULT.read_text()).replace("tanker.gdf", "box_barge.stl")
+            .replace("bridge = [-105.0, 0.0, 32.0]\n", "")
             .replace('"../', f'"{ROOT.as_posix()}/'))
     visual = text.replace("[vessel]\n", f'[vessel]\nvisual_mesh = "{ROOT.as_posix()}/hulls/barge_visual.glb"\n'
                           'visual_mesh_units = "cm"\nvisual_mesh_axes = "x,-z,y"\n'
