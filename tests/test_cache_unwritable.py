@@ -62,6 +62,7 @@ def test_headless_run_goes_on_without_the_cache(unwritable_cache, tmp_path):
     scenario.write_text(DEFAULT.read_text()
                         .replace('"../rao/tanker/tanker.4"', f'"{ROOT / "rao" / "tanker" / "tanker.4"}"')
                         .replace('"../hulls/tanker.gdf"', f'"{ROOT / "hulls" / "wigley.stl"}"')
+                        .replace('"../hulls/', f'"{ROOT / "hulls"}/')
                         .replace("speed_kn = 4.0", "speed_kn = 12.0")  # Fn 0.2: a wake to compute and draw
                         .replace("tiles = 4", "tiles = 2").replace("resolution = 256", "resolution = 64"))
     done = _marinesim(["run", str(scenario), "--headless", "--duration", "1", "--out", str(tmp_path / "out"),

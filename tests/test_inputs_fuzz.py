@@ -92,10 +92,11 @@ def obj_lines() -> list[str]:
 
 
 def scenario_lines() -> list[str]:
-    """configs/default.toml with its files as absolute paths, without the hull (the RAO reader is fuzzed apart)."""
+    """configs/default.toml with its files as absolute paths, without the hull and its visual mesh (the RAO reader
+    is fuzzed apart)."""
     text = (ROOT / "configs" / "default.toml").read_text()
     text = text.replace('"../rao/', f'"{ROOT}/rao/').replace('hull = "../hulls/tanker.gdf"', "")
-    return text.splitlines()
+    return [line for line in text.splitlines() if not line.startswith("visual_mesh")]
 
 
 SOURCES = {
