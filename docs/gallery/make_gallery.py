@@ -42,7 +42,7 @@ def main() -> None:
                     + "\n".join(shots) + "\n")
     (HERE / "README.md").write_text("# Picture gallery\n\nEvery shipped scenario from the orbit camera and from its "
                                     "bridge, as `marinesim render --screenshot` draws them headless (960x540, "
-                                    "Mesa llvmpipe or a GPU: the same picture). Made by "
+                                    "here on Mesa's llvmpipe). Made by "
                                     "`python docs/gallery/make_gallery.py`.\n\n" + "\n".join(rows))
 
 
