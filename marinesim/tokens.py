@@ -79,3 +79,17 @@ class Tokens:
     def int(self, expected: str) -> int:
         line, text = self._take(expected)
         return parse_int(self.path, line, text, expected)
+
+
+def leading_numbers(text: str) -> list[str]:
+    """The words of a line up to the first that is not a finite number (Fortran ``D`` exponents accepted): what a
+    Fortran list-directed READ takes from it; the rest (``0   IMASS``, ``200.0  (HBOT)``) is a comment."""
+    words = text.split()
+    for k, word in enumerate(words):
+        try:
+            finite = math.isfinite(float(word.replace("D", "E").replace("d", "e")))
+        except ValueError:
+            finite = False
+        if not finite:
+            return words[:k]
+    return words

@@ -20,7 +20,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from marinesim.errors import FileFormatError
-from marinesim.tokens import parse_float, read_text
+from marinesim.tokens import leading_numbers, parse_float, read_text
 
 MAX_LIST = 100_000
 """The most periods or headings a ``.pot`` may list."""
@@ -49,22 +49,19 @@ def read_cfg(cfg: Path) -> dict[str, tuple[int, str]]:
     return keys
 
 
-def old_pot_form(cfg_keys: dict[str, tuple[int, str]]) -> bool:
-    """Whether the ``.cfg``'s keys say the ``.pot`` is in the old form (``IALTPOT = 1``)."""
-    return cfg_keys.get("IALTPOT", (0, "2"))[1] == "1"
-
-
 def pot_beside(path: Path) -> Pot | None:
     """The ``.pot`` of the same name beside ``path`` (its form from the ``.cfg`` beside), or None."""
     pot = path.with_suffix(".pot")
-    return read_pot(pot, old_pot_form(read_cfg(path.with_suffix(".cfg")))) if pot.is_file() else None
+    if not pot.is_file():
+        return None
+    return read_pot(pot, read_cfg(path.with_suffix(".cfg")).get("IALTPOT", (0, "2"))[1] == "1")
 
 
 def read_pot(path: Path, old_form: bool) -> Pot:
     """The ``.pot`` at ``path``; ``old_form`` for ``IALTPOT = 1``. Flaws name the line."""
     lines = read_text(path).splitlines()
-    reads = [(number, _numbers(path, number, text)) for number, text in enumerate(lines, 1)
-             if number > 1 and text.strip()]
+    reads = [(number, [parse_float(path, number, word, "a number") for word in leading_numbers(text)] or None)
+             for number, text in enumerate(lines, 1) if number > 1 and text.strip()]
     if old_form:
         for number, values in reads:
             if len(values) == 5:
@@ -109,17 +106,6 @@ class _Cursor:
         if self.at >= len(self.reads):
             raise FileFormatError(self.path, None, "file ends early: expected the .gdf file's name")
         self.at += 1
-
-
-def _numbers(path: Path, number: int, text: str) -> list[float] | None:
-    """The leading numbers of a line (the rest is a comment); None for a line that starts with text."""
-    values: list[float] = []
-    for word in text.split():
-        try:
-            values.append(parse_float(path, number, word, "a number"))
-        except FileFormatError:
-            break
-    return values or None
 
 
 def _depth(hbot: float) -> float:

@@ -30,11 +30,11 @@ import numpy as np
 from marinesim.constants import G, RHO_SEAWATER
 from marinesim.errors import FileFormatError, ParameterError, require_within
 from marinesim.hull.gdf import read_gdf_header
-from marinesim.hull.wamit_pot import Pot, old_pot_form, read_cfg, read_pot
+from marinesim.hull.wamit_pot import Pot, pot_beside, read_cfg
 from marinesim.vessel.wamit_frc import read_frc
 from marinesim.vessel.rao import (MAX_ROTATION_RAD_M, MAX_TRANSLATION_M_M, ROTATIONS, RaoTable, make_table,
                                   refer_phases)
-from marinesim.tokens import parse_float, parse_int, read_text
+from marinesim.tokens import parse_int
 from marinesim.vessel.wamit_rows import RIGID_MODES, read_rows
 
 ULEN_RANGE_M = (0.01, 1000.0)
@@ -197,10 +197,9 @@ class Settings:
             header = parse_int(cfg, number, value, "NUMHDR (0 or 1)")
             if header not in (0, 1):
                 raise FileFormatError(cfg, number, f"NUMHDR must be 0 or 1, got {header}")
-        pot_path = path.with_suffix(".pot")
-        pot = read_pot(pot_path, old_pot_form(keys)) if pot_path.is_file() else Pot(math.nan)
+        pot = pot_beside(path) or Pot(math.nan)
         return cls(g, ulen, period_kind, key, header, pot.depth, tuple(notes), pot.xbody or (0.0,) * 4,
-                   pot_path.name)
+                   path.with_suffix(".pot").name)
 
     def omega(self, per: np.ndarray, path: Path) -> np.ndarray:
         """The wave frequencies (rad/s) of the PER column ``per`` (> 0) of ``path``."""

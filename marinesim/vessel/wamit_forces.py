@@ -125,15 +125,22 @@ def read_force_set(path: str | Path, *, ulen: float | None = None, rigid_body: R
     notes += coefficient_notes + stiffness_notes + force_notes
     at = _match_periods(files[".3"], periods, files[".1"], per_1)
     omega = settings.omega(periods, files[".3"])
-    length = settings.ulen ** (3 + PAIR_POWER)
     mass, mass_notes = ((rigid_body.mass_matrix(about=(0.0, 0.0, settings.xbody[2])), []) if given
                         else mass_matrix(files[".frc"], frc, rho))
-    return ForceSet(omega=omega, periods=periods, headings_deg=headings, mass=mass,
-                    added=added[at] * rho * length,
-                    damping=damping[at] * rho * omega[:, None, None] * length,
-                    stiffness=stiffness * rho * settings.g * settings.ulen ** (2 + PAIR_POWER),
-                    forces=forces * rho * settings.g * settings.ulen ** np.where(ROTATION, 3, 2),
-                    frc=frc, rho=rho, settings=settings, notes=tuple(notes + mass_notes))
+    added, damping, stiffness, forces = dimensional(rho, settings.g, settings.ulen, omega, added[at], damping[at],
+                                                    stiffness, forces)
+    return ForceSet(omega=omega, periods=periods, headings_deg=headings, mass=mass, added=added, damping=damping,
+                    stiffness=stiffness, forces=forces, frc=frc, rho=rho, settings=settings,
+                    notes=tuple(notes + mass_notes))
+
+
+def dimensional(rho: float, g: float, ulen: float, omega: np.ndarray, added: np.ndarray, damping: np.ndarray,
+                stiffness: np.ndarray, forces: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """WAMIT's normalisation undone (module docstring): added mass and damping (frequencies, 6, 6), stiffness
+    (6, 6) and exciting forces (..., frequencies, 6) in SI, at the frequencies ``omega`` (rad/s)."""
+    length = ulen ** (3 + PAIR_POWER)
+    return (added * rho * length, damping * rho * omega[:, None, None] * length,
+            stiffness * rho * g * ulen ** (2 + PAIR_POWER), forces * rho * g * ulen ** np.where(ROTATION, 3, 2))
 
 
 def read_coefficients(path: Path, header_lines: int = 0) -> tuple[np.ndarray, np.ndarray, np.ndarray, list[str]]:

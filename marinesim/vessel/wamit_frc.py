@@ -23,7 +23,7 @@ from pathlib import Path
 import numpy as np
 
 from marinesim.errors import FileFormatError
-from marinesim.tokens import parse_float, parse_int, read_text
+from marinesim.tokens import leading_numbers, parse_float, parse_int, read_text
 
 MATRICES = ("mass (IMASS)", "external damping (IDAMP)", "external stiffness (ISTIF)")
 RHO_RANGE = (500.0, 2000.0)
@@ -50,7 +50,7 @@ class ForceControl:
 def read_frc(path: Path, form: int | None = None) -> ForceControl:
     """Read the ``.frc`` at ``path``; ``form`` is IALTFRC from the ``.cfg`` (None: told from the layout)."""
     text = read_text(path).splitlines()
-    rows = [(number, _values(line)) for number, line in enumerate(text[1:], 2) if line.split()]
+    rows = [(number, leading_numbers(line)) for number, line in enumerate(text[1:], 2) if line.split()]
     if len(rows) < 4:
         raise FileFormatError(path, len(text) or None, "file ends early: expected IOPTN, then RHO or VCG, "
                                                        "XCG YCG ZCG or XPRDCT, ...")
@@ -113,15 +113,3 @@ def _number(path: Path, rows: list[tuple[int, list[str]]], at: int, name: str, c
     if column >= len(parts):
         raise FileFormatError(path, number, f"expected {name}, the line has {len(parts)} value(s)")
     return parse_float(path, number, parts[column], name)
-
-
-def _values(line: str) -> list[str]:
-    """The words of ``line`` up to the first that is not a number: WAMIT reads its values list-directed, and
-    what follows them on the line (``0   IMASS``) is a comment."""
-    words = line.split()
-    for k, word in enumerate(words):
-        try:
-            float(word.replace("D", "E").replace("d", "e"))
-        except ValueError:
-            return words[:k]
-    return words

@@ -29,7 +29,7 @@ from marinesim.tokens import parse_float, parse_int, read_text
 from marinesim.vessel.body import RigidBody, gravity_stiffness, rigid_body_mass
 from marinesim.vessel.rao import ROTATIONS, RaoTable
 from marinesim.vessel.wamit import Settings, table_from
-from marinesim.vessel.wamit_forces import PAIR_POWER, ROTATION, solve_motions
+from marinesim.vessel.wamit_forces import dimensional, solve_motions
 from marinesim.vessel.wamit_rows import RIGID_MODES, ignored_modes_note
 
 MAX_FILE_BYTES = 256 * 2**20
@@ -123,17 +123,15 @@ def _solve(report: Report, omega: np.ndarray, headings: np.ndarray, length: floa
         raise FileFormatError(path, None, "no exciting forces (DIFFRACTION or HASKIND) in the report")
     rho, g = report.header["rho"], report.header["g"]
     added, damping = _radiation(report)
-    scale = length ** (3 + PAIR_POWER)
-    forces = _complex(report, kind, headings) * rho * g * length ** np.where(ROTATION, 3, 2)
-    stiffness = report.restoring * rho * g * length ** (2 + PAIR_POWER)
+    added, damping, stiffness, forces = dimensional(rho, g, length, omega, added, damping, report.restoring,
+                                                    _complex(report, kind, headings))
     mass = rigid_body.mass_matrix(about=(0.0, 0.0, report.xbody[2]))
     if report.cog is None or not math.isfinite(report.volume):
         raise FileFormatError(path, None, "the report gives no volume or centre of gravity: its restoring "
                                           "coefficients' gravity terms cannot be replaced by the scenario's")
     wamit_mass = rigid_body_mass(rho * report.volume, report.cog, np.eye(3))
     stiffness = stiffness + gravity_stiffness(mass, g) - gravity_stiffness(wamit_mass, g)
-    motions = solve_motions(path, omega, mass, added * rho * scale,
-                            damping * rho * omega[:, None, None] * scale + rigid_body.damping(),
+    motions = solve_motions(path, omega, mass, added, damping + rigid_body.damping(),
                             stiffness + rigid_body.stiffness(), forces, np.array(report.periods))
     notes.append(f"RAOs solved from the report's added mass, damping, {kind} forces and restoring coefficients "
                  f"with the scenario's mass (its gravity at its own centre of gravity in place of WAMIT's "
