@@ -44,6 +44,9 @@ def test_good_scenario_converts_directions(tmp_path):
     (("[run]", "[ocean]\nresolution = 100\n[run]"), "100"),
     (("[run]", "[ocean]\ndepth_m = -4.0\n[run]"), "depth"),
     (("[run]", "[vessl]\n[run]"), "vessl: unknown key"),
+    (("[run]", "[environment]\nvisibility_m = 10.0\n[run]"), "environment.visibility_m: must be in 50..200000 m"),
+    (("[run]", "[environment]\nsun_elevation_deg = -6.0\n[run]"), "environment.sun_elevation_deg"),
+    (("[run]", "[environment]\nfog = true\n[run]"), "environment.fog: unknown key"),
     (("[[sea]]", "[[sea]\n"), "not valid TOML"),
 ])
 def test_bad_scenarios_are_refused_naming_the_key(tmp_path, change, key):

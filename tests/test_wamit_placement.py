@@ -7,6 +7,7 @@ written with the waterline 2 m above the body origin and placed 2 m down, has th
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -58,3 +59,22 @@ def test_a_gdf_placed_below_the_free_surface_by_zbody_floats_as_its_hull(tmp_pat
     assert any("ZBODY -2 m" in note for note in load_hull(tmp_path / "raised.gdf").notes)
     (tmp_path / "raised.pot").unlink()
     assert hydrostatics(load_hull(tmp_path / "raised.gdf")).volume_m3 < 0.85 * original.volume_m3
+
+
+@pytest.mark.parametrize("old_form,text,words", [
+    (True, "placed\n1\n3\n-1 50 x 0 30\n0 1 0\n", "HBOT XBODY(1..4) not found"),
+    (False, "placed\n200.0\n1 1\n-3\n1.0 2.0\n", "expected NBETA"),
+    (False, "placed\n200.0\n1 1\n999999 (NPER)\n", "NPER 999999: at most 100000"),
+])
+def test_a_flawed_pot_is_refused_naming_the_file(tmp_path, old_form, text, words):
+    """A .pot whose XBODY line has text in it (old form), whose heading count is missing, or which lists more
+    periods than any run: refused in one line naming the file, not read as an origin at (0, 0, 0)."""
+    from marinesim.errors import FileFormatError
+
+    (tmp_path / "t.4").write_bytes((TANKER / "tanker.4").read_bytes())
+    (tmp_path / "t.pot").write_text(text)
+    if old_form:
+        (tmp_path / "t.cfg").write_text("IALTPOT=1\n")
+    with pytest.raises(FileFormatError, match=re.escape(words)) as error:
+        read_rao(tmp_path / "t.4")
+    assert "t.pot" in str(error.value)
