@@ -25,6 +25,13 @@ const float F0 = 0.02;
 
 out vec4 f_colour;
 
+// Glitter of a light towards l off facets of normal n, seen along v: a Beckmann lobe of the roughness, lit side only.
+float glitter(vec3 n, vec3 l, vec3 v, float roughness) {
+    vec3 h = normalize(l + v);
+    float spec = exp(-pow(tan(acos(clamp(dot(n, h), 0.0, 1.0))) / roughness, 2.0)) / (roughness * roughness);
+    return spec * max(dot(n, l), 0.0);
+}
+
 void main() {
     vec2 mask_uv = (vessel_frame(v_xy) - u_hull_rect.xy) * u_hull_rect.zw;
     if (all(greaterThan(mask_uv, vec2(0.0))) && all(lessThan(mask_uv, vec2(1.0)))
@@ -68,12 +75,13 @@ void main() {
     r.z = abs(r.z);
     vec3 reflected = sky_colour(r);
     float crest = clamp(v_position.z * 0.25 + 0.3, 0.0, 1.0);
+    vec3 sun = u_sun_colour * unclouded(u_sun);
+    vec3 moon = u_moon_colour * unclouded(u_moon);
     float sun_in = max(dot(n, u_sun), 0.0);
-    vec3 refracted = DEEP + SCATTER * crest * (0.4 + 0.6 * sun_in) * pow(1.0 - cos_theta, 2.0);
-    vec3 h = normalize(u_sun + v);
+    vec3 refracted = (DEEP + SCATTER * crest * (0.4 + 0.6 * sun_in) * pow(1.0 - cos_theta, 2.0)) * u_sky;
     float roughness = 0.06 + 0.002 * v_spacing;  // distant glitter spreads: unresolved waves
-    float spec = exp(-pow(tan(acos(clamp(dot(n, h), 0.0, 1.0))) / roughness, 2.0)) / (roughness * roughness);
-    vec3 colour = mix(refracted, reflected, fresnel) + SUN_COLOUR * fresnel * spec * 0.25 * sun_in;
-    colour = mix(colour, FOAM * (0.35 + 0.65 * sun_in), foam);
+    vec3 colour = mix(refracted, reflected, fresnel)
+                + fresnel * 0.25 * (sun * glitter(n, u_sun, v, roughness) + moon * glitter(n, u_moon, v, roughness));
+    colour = mix(colour, FOAM * (0.35 * u_sky + 0.7 * sun * sun_in + 0.7 * moon * max(dot(n, u_moon), 0.0)), foam);
     f_colour = finish(with_haze(colour, -v, distance_m));
 }

@@ -23,6 +23,7 @@ from marinesim.cli import main
 from marinesim.gl import GraphicsError
 from marinesim.render.controls import CHANGE_RAMP_S, HS_STEP, MAX_FRAME_S
 from marinesim.scenario import load_scenario
+from marinesim.session.replay import replay_session
 
 NO_WINDOW = 77
 
@@ -115,6 +116,23 @@ def walkthrough(tmp_path: Path) -> None:
             assert viewer.ctx.error == "GL_NO_ERROR"
         assert cameras == ["bridge", "bridge", "free", "free", "orbit"] and controls.show_help
 
+        press(key._2, "2")                                # on the bridge, binoculars up: 7 times larger
+        naked = viewer.scene.camera.eye(sim.pose()).fov_y_deg
+        press(key.B, "b")
+        raised = viewer.scene.camera.eye(sim.pose()).fov_y_deg
+        assert np.tan(np.radians(naked / 2)) / np.tan(np.radians(raised / 2)) == pytest.approx(7.0)
+        press(key.B, "b")
+        press(key._1, "1")
+        assert viewer.scene.camera.eye(sim.pose()).fov_y_deg != raised
+
+        clear = sim.environment
+        press(key.F, "f")                                 # the instructor: fog thickens, a cloud comes
+        press(key.F, "f")
+        press(key.K, "k")
+        press(key.T, "t")                                 # the default's sun is fixed: said, nothing changes
+        assert sim.environment.visibility_m == clear.visibility_m / 4 and sim.environment.cloud_cover_oktas == 1
+        assert "only a time_utc moves it" in controls.message
+
         press(key.M, "m")                                 # the instructor types a message
         type_text("Fog ahead")
         press(key.BACKSPACE)
@@ -129,13 +147,17 @@ def walkthrough(tmp_path: Path) -> None:
         viewer.draw()
         for _ in range(7):
             viewer.tick(0.1)
+        environment = sim.environment
     finally:
         viewer.close()
     session = tmp_path / "session.jsonl"
     lines = [json.loads(line) for line in session.read_text().splitlines()[1:]]
     keys = [e["key"] for e in lines if e["kind"] == "key"]
     assert keys[:4] == ["R", "R", "R", "BRACKETRIGHT"] and "RETURN" not in keys  # typing keys are the message's
-    assert [e["action"] for e in lines if e["kind"] == "action"] == ["change", "change", "message"]
+    assert [e["action"] for e in lines if e["kind"] == "action"] == ["change", "change", "weather", "weather",
+                                                                      "weather", "message"]
+    again = replay_session(session)
+    assert again.sim.environment == environment, "the replay's weather is not the session's"
     recording = sorted(tmp_path.glob(f"{scenario.name}_*.csv"))[-1]  # the second: from t = 3 s to the end
     assert main(["replay", str(session), "--export", str(tmp_path / "replayed.csv"), "--quiet"]) == 0
     recorded, replayed = recording.read_text().splitlines(), (tmp_path / "replayed.csv").read_text().splitlines()

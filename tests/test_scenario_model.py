@@ -45,7 +45,16 @@ def test_good_scenario_converts_directions(tmp_path):
     (("[run]", "[ocean]\ndepth_m = -4.0\n[run]"), "depth"),
     (("[run]", "[vessl]\n[run]"), "vessl: unknown key"),
     (("[run]", "[environment]\nvisibility_m = 10.0\n[run]"), "environment.visibility_m: must be in 50..200000 m"),
-    (("[run]", "[environment]\nsun_elevation_deg = -6.0\n[run]"), "environment.sun_elevation_deg"),
+    (("[run]", "[environment]\nsun_elevation_deg = -95.0\n[run]"), "environment.sun_elevation_deg"),
+    (("[run]", "[environment]\ntime_utc = 2026-11-25T16:00:00\nlatitude_deg = 60.0\nlongitude_deg = 2.0\n[run]"),
+     "environment.time_utc"),
+    (("[run]", "[environment]\ntime_utc = 2026-11-25T16:00:00Z\nlatitude_deg = 60.0\n[run]"),
+     "time_utc needs latitude_deg and longitude_deg"),
+    (("[run]", "[environment]\ntime_utc = 2026-11-25T16:00:00Z\nlatitude_deg = 60.0\nlongitude_deg = 2.0\n"
+               "sun_elevation_deg = 10.0\n[run]"), "or the sun's keys, not both"),
+    (("[run]", "[environment]\nlatitude_deg = 60.0\n[run]"), "only with time_utc"),
+    (("[run]", "[environment]\ncloud_cover_oktas = 9\n[run]"), "environment.cloud_cover_oktas: must be in 0..8"),
+    (("[run]", "[[events]]\nat_s = 5.0\nvisibility_m = 20.0\n[run]"), "events[0].visibility_m"),
     (("[run]", "[environment]\nfog = true\n[run]"), "environment.fog: unknown key"),
     (("[[sea]]", "[[sea]\n"), "not valid TOML"),
 ])

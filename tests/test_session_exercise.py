@@ -192,3 +192,24 @@ def test_the_picture_shows_the_criteria_and_the_message(tmp_path):
     assert level in ("ok", "caution", "exceeded")
     assert _coloured(image[top], LEVEL_COLORS[level]) > _coloured(bare[top], LEVEL_COLORS[level]) + 100
     assert _coloured(image[top], MESSAGE_COLOR) > _coloured(bare[top], MESSAGE_COLOR) + 100
+
+
+def test_fog_rolls_in_when_its_event_happens_and_the_instructor_clears_it(tmp_path):
+    """A scripted event brings the visibility down to 800 m and the cloud to 8 oktas at its time, not before (a
+    fog that came early or never would make a different exercise); the instructor's weather action lifts the
+    fog; the run's scenario keeps its own [environment] for a second run."""
+    text = CONDITIONAL.format(threshold=100.0).replace(
+        'message = "two hundred seconds"', 'message = "fog"\nvisibility_m = 800.0\ncloud_cover_oktas = 8.0')
+    scenario = load_scenario(write(tmp_path, text))
+    lines: list[str] = []
+    simulation = Simulation(scenario, wake=False)
+    exercise = Exercise(simulation, log=lines.append)
+    exercise.advance_to(199.0)
+    assert simulation.environment == scenario.environment
+    exercise.advance_to(201.0)
+    assert (simulation.environment.visibility_m, simulation.environment.cloud_cover_oktas) == (800.0, 8.0)
+    assert lines[-1].endswith("at 200 s: visibility 800 m cloud 8 oktas; 'fog'")
+    exercise.act("weather", visibility_m=5000.0)
+    assert simulation.environment.visibility_m == 5000.0 and simulation.environment.cloud_cover_oktas == 8.0
+    assert scenario.environment.visibility_m == 40_000.0
+    simulation.close()

@@ -22,6 +22,14 @@ from marinesim.pose import Pose
 
 NEAR_M = 0.5
 FAR_M = 40_000.0
+NAKED_EYE_FOV_DEG = 60.0
+"""The bridge camera's vertical field of view without magnification (deg)."""
+BINOCULAR_POWER = 7.0
+
+
+def binocular_fov_deg() -> float:
+    """The vertical field of view through 7x binoculars: the naked eye's, magnified 7 times (about 9.4 deg)."""
+    return math.degrees(2.0 * math.atan(math.tan(math.radians(NAKED_EYE_FOV_DEG) / 2.0) / BINOCULAR_POWER))
 
 
 @dataclass(frozen=True)
@@ -92,26 +100,41 @@ class OrbitCamera:
 
 @dataclass
 class BridgeCamera:
-    """On board at ``point`` (body frame, m), looking ahead; ``look_*`` turn the head (deg)."""
+    """On board at ``point`` (body frame, m), looking ahead; ``look_*`` turn the head (deg); the eye's vertical
+    field of view ``fov_y_deg`` narrows with the scroll wheel, to a seventh of the naked eye's through the
+    ``binoculars`` (7 x 50, the watchkeeper's)."""
 
     point: tuple[float, float, float]
     look_yaw_deg: float = 0.0
     look_pitch_deg: float = -5.0
+    fov_y_deg: float = NAKED_EYE_FOV_DEG
+    binoculars: bool = False
+
+    @property
+    def magnification(self) -> float:
+        """How much larger things look than with the naked eye's field of view."""
+        fov = binocular_fov_deg() if self.binoculars else self.fov_y_deg
+        return math.tan(math.radians(NAKED_EYE_FOV_DEG) / 2.0) / math.tan(math.radians(fov) / 2.0)
 
     def eye(self, pose: Pose) -> Eye:
         to_world = pose.matrix()
         yaw, pitch = math.radians(self.look_yaw_deg), math.radians(self.look_pitch_deg)
         look = np.array([math.cos(pitch) * math.cos(yaw), math.cos(pitch) * math.sin(yaw), math.sin(pitch)])
         rotation = to_world[:3, :3]
+        fov = binocular_fov_deg() if self.binoculars else self.fov_y_deg
         return Eye(to_world[:3, :3] @ np.asarray(self.point, float) + to_world[:3, 3], rotation @ look,
-                   rotation @ np.array([0.0, 0.0, 1.0]), fov_y_deg=60.0)
+                   rotation @ np.array([0.0, 0.0, 1.0]), fov_y_deg=fov)
 
     def drag(self, dx: float, dy: float) -> None:
-        self.look_yaw_deg = (self.look_yaw_deg - 0.2 * dx + 180.0) % 360.0 - 180.0
-        self.look_pitch_deg = float(np.clip(self.look_pitch_deg + 0.2 * dy, -80.0, 80.0))
+        """Mouse drag in pixels turns the head, slower the more the view is magnified (the scene follows the
+        pointer)."""
+        turn = 0.2 / self.magnification
+        self.look_yaw_deg = (self.look_yaw_deg - turn * dx + 180.0) % 360.0 - 180.0
+        self.look_pitch_deg = float(np.clip(self.look_pitch_deg + turn * dy, -80.0, 80.0))
 
     def zoom(self, steps: float) -> None:
-        """Nothing to zoom on the bridge: the eye stays at the point."""
+        """Narrow (or widen) the field of view: the eye stays at the point."""
+        self.fov_y_deg = float(np.clip(self.fov_y_deg * 0.9 ** steps, binocular_fov_deg(), NAKED_EYE_FOV_DEG))
 
 
 @dataclass

@@ -20,7 +20,7 @@ from marinesim.render.hud import LEVEL_COLORS, MESSAGE_COLOR, Slider
 from marinesim.constants import KNOT
 from marinesim.errors import MarinesimError
 from marinesim.render.scene import Scene
-from marinesim.scenario.model import MAX_SPEED_KN
+from marinesim.scenario.model import MAX_SPEED_KN, MAX_VISIBILITY_M, MIN_VISIBILITY_M
 from marinesim.session.recorder import Recorder
 from marinesim.session.timeline import CHANGE_RAMP_S
 
@@ -30,6 +30,8 @@ TURN_STEP_DEG = 15.0
 SPEED_STEP_KN = 1.0
 HEADING_STEP_DEG = 5.0
 TIME_SCALES = (0.125, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0)
+VISIBILITY_STEP = 2.0  # each press: visibility / 2 (fog thickens) or x 2 (it lifts)
+TIME_STEP_H = 1.0
 SEEK_STEP_S = 30.0
 """A replay's LEFT / RIGHT: back / forward this long (s)."""
 FREE_SPEED_M_S = 40.0
@@ -121,9 +123,14 @@ class Controls:
         def camera(name: str) -> Callable[[], None]:
             return lambda: setattr(self.scene, "camera_name", name)
 
+        def weather(**kwargs) -> Callable[[], None]:
+            return lambda: self._act("weather", **kwargs)
+
+        air = sim.environment
+
         actions = {
             "H": self.toggle_help, "SPACE": self.toggle_pause, "R": self.toggle_recording,
-            "_1": camera("orbit"), "_2": camera("bridge"), "_3": camera("free"),
+            "_1": camera("orbit"), "_2": camera("bridge"), "_3": camera("free"), "B": self.toggle_binoculars,
             "PLUS": lambda: self._scale_time(1), "EQUAL": lambda: self._scale_time(1),
             "MINUS": lambda: self._scale_time(-1),
         }
@@ -136,6 +143,11 @@ class Controls:
             "BRACKETRIGHT": change(hs_factor=HS_STEP), "BRACKETLEFT": change(hs_factor=1.0 / HS_STEP),
             "PERIOD": change(tp_factor=TP_STEP), "COMMA": change(tp_factor=1.0 / TP_STEP),
             "APOSTROPHE": change(turn_waves_deg=TURN_STEP_DEG), "SEMICOLON": change(turn_waves_deg=-TURN_STEP_DEG),
+            "F": weather(visibility_m=max(air.visibility_m / VISIBILITY_STEP, MIN_VISIBILITY_M)),
+            "G": weather(visibility_m=min(air.visibility_m * VISIBILITY_STEP, MAX_VISIBILITY_M)),
+            "K": weather(cloud_cover_oktas=min(air.cloud_cover_oktas + 1.0, 8.0)),
+            "J": weather(cloud_cover_oktas=max(air.cloud_cover_oktas - 1.0, 0.0)),
+            "T": weather(hours=TIME_STEP_H), "Y": weather(hours=-TIME_STEP_H),
         }
         if sim.vessel is not None:
             actions |= {
@@ -156,6 +168,13 @@ class Controls:
 
     def start_message(self) -> None:
         self.typing, self._opened_now = "", True
+
+    def toggle_binoculars(self) -> None:
+        """On the bridge: raise the binoculars to the eye, or lower them."""
+        if self.scene.camera_name != "bridge":
+            self.message = "binoculars: on the bridge (key 2)"
+            return
+        self.scene.cameras["bridge"].binoculars = not self.scene.cameras["bridge"].binoculars
 
     def toggle_help(self) -> None:
         self.show_help = not self.show_help
@@ -228,14 +247,16 @@ HELP = [
     "ENTER          acknowledge the alarms",
     "N              instructor: trigger the next scripted event now",
     "M              instructor: type a message (ENTER sends, ESC cancels)",
-    "mouse drag     turn the view        scroll   zoom (orbit), fly (free)",
-    "1 / 2 / 3      orbit / bridge / free camera",
+    "mouse drag     turn the view        scroll   zoom (orbit, bridge), fly (free)",
+    "1 / 2 / 3      orbit / bridge / free camera      B   binoculars (bridge, 7x)",
     "W A S D E C    fly the free camera (forward, left, back, right, up, down)",
     "SPACE          freeze / resume      + / -    time faster / slower",
     "[ / ]          wave height down / up (x1.1, over 10 s)",
     ", / .          wave period down / up (x1.05)",
     "; / '          waves turn anticlockwise / clockwise 15 deg",
     "UP / DOWN      speed +/- 1 kn       LEFT / RIGHT   heading -/+ 5 deg",
+    "F / G          instructor: fog thickens / lifts (visibility / 2, x 2)",
+    "J / K          instructor: cloud cover -/+ 1 okta    Y / T   clock -/+ 1 h (scenarios with time_utc)",
     "R              start / stop recording the motions (CSV, as marinesim export)",
     "H              this help            ESC      quit",
 ]

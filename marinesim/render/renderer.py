@@ -7,31 +7,33 @@ ocean's FFTs on the CPU and uploaded, then their mipmaps and the foam's compute 
 which the simulation steps, and the wakes are read as they are when drawn and :meth:`Renderer.draw`
 draws a camera's view into the bound framebuffer:
 
-1. the sky (a full-screen pass: analytic sky, sun, haze below the horizon);
+1. the sky (a full-screen pass: analytic sky, clouds, sun, moon and stars, haze below the horizon);
 2. the ocean: rings of vertices around the camera, displaced by the cascades, the Kelvin wake
    (vessel frame) and the solver's field (Earth-fixed grid); shaded with Fresnel, sky reflection,
    subsurface tint, glitter, foam and haze; no water inside the hull;
-3. the vessel mesh (the scenario's visual mesh, else one made from the hull) in its 6-DOF pose.
+3. the vessel mesh (the scenario's visual mesh, else one made from the hull) in its 6-DOF pose;
+4. its navigation lights, by night and in restricted visibility (COLREG sectors and intensities).
 
 Everything is in the Earth frame (m); the shaders state their inputs' units.
 """
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import moderngl
 
-from marinesim.angles import compass_to_math
 from marinesim.errors import ParameterError
 from marinesim.gl import is_software
 from marinesim.render import CASCADES
 from marinesim.render.camera import Eye
+from marinesim.render.daylight import light_at
+from marinesim.render.nav_lights import place_lights
 from marinesim.render.layers.base import View
 from marinesim.render.layers.cascades import CascadeLayer
 from marinesim.render.layers.foam import FoamLayer
 from marinesim.render.layers.hull_mask import HullMaskLayer
+from marinesim.render.layers.lights import NavLightsLayer
 from marinesim.render.layers.ocean import OceanLayer
 from marinesim.render.layers.sky import SkyLayer
 from marinesim.render.layers.synthesis import CascadeSynthesis
@@ -44,7 +46,7 @@ from marinesim.session.timeline import Simulation
 @dataclass(frozen=True)
 class RenderOptions:
     """What to draw: the Kelvin wake, foam, the vessel, the local solver (``solver_size`` cells a side).
-    The sun and the haze come from the scenario's ``[environment]`` (:func:`sun_vector`). ``cascades``: where the
+    The light comes from the simulation's ``[environment]`` (:mod:`~marinesim.render.daylight`). ``cascades``: where the
     ocean's fields are synthesised each frame, ``"gpu"`` (compute shaders), ``"cpu"`` (the ocean's FFTs,
     uploaded) or ``"auto"`` (the GPU where there is one; the CPU on a software renderer, where the compute
     shaders run 10x slower than FFTW). ``reproducible``: the CPU's fields by numpy.fft, the same pixels
@@ -57,12 +59,6 @@ class RenderOptions:
     solver_size: int = 512
     cascades: str = "auto"
     reproducible: bool = False
-
-
-def sun_vector(azimuth_deg: float, elevation_deg: float) -> tuple[float, float, float]:
-    """Unit vector towards the sun (E frame: x east, y north, z up) from its compass bearing and elevation."""
-    azimuth, elevation = compass_to_math(azimuth_deg), math.radians(elevation_deg)
-    return (math.cos(elevation) * math.cos(azimuth), math.cos(elevation) * math.sin(azimuth), math.sin(elevation))
 
 
 def gpu_cascades(ctx: moderngl.Context, choice: str) -> bool:
@@ -92,6 +88,10 @@ class Renderer:
         self.hull_mask = HullMaskLayer(ctx, sim.vessel.hull if sim.vessel is not None else None)
         self.ocean = OceanLayer(ctx, tiles, n, foam_on=options.foam)
         self.vessel = VesselLayer(ctx, self.mesh, shown=options.vessel)
+        vessel = sim.vessel
+        self.nav_lights = NavLightsLayer(ctx, place_lights(self.mesh.positions, vessel.nav_lights,
+                                                           vessel.points.get("bridge"))
+                                         if self.mesh is not None and options.vessel else [])
 
     def update(self) -> None:
         """Bring the GPU to the simulation's time: the cascades' fields, their mipmaps and the foam."""
@@ -106,11 +106,9 @@ class Renderer:
         self.foam.update(self.cascades, dt)
 
     def view(self, eye: Eye, size: tuple[int, int]) -> View:
-        """The view of ``eye`` into a target of ``size`` (w, h) px, with this renderer's sun and haze."""
+        """The view of ``eye`` into a target of ``size`` (w, h) px, in the light of the simulation's time."""
         width, height = size
-        air = self.sim.scenario.environment
-        return View(eye, eye.view_projection(width / height), sun_vector(air.sun_azimuth_deg, air.sun_elevation_deg),
-                    air.visibility_m)
+        return View(eye, eye.view_projection(width / height), light_at(self.sim.environment, self.sim.time))
 
     def draw(self, eye: Eye, size: tuple[int, int]) -> None:
         """Draw the view of ``eye`` into the bound framebuffer of ``size`` (w, h) px."""
@@ -121,10 +119,11 @@ class Renderer:
         pose = self.sim.pose()
         self.ocean.draw(view, pose, (self.cascades, self.foam, self.wake, self.solver_field, self.hull_mask))
         self.vessel.draw(view, pose)
+        self.nav_lights.draw(view, pose, size[1])
 
     def release(self) -> None:
         if self.synthesis is not None:
             self.synthesis.release()
         for layer in (self.sky, self.cascades, self.foam, self.wake, self.solver_field, self.hull_mask, self.ocean,
-                      self.vessel):
+                      self.vessel, self.nav_lights):
             layer.release()

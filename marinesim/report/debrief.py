@@ -80,6 +80,8 @@ def _action(entry: dict) -> str:
     fields = {k: v for k, v in entry.items() if k not in ("t", "kind", "action")}
     if entry["action"] == "change":
         return "change: " + ", ".join(f"{k} {v:g}" for k, v in fields.items() if k != "ramp_s")
+    if entry["action"] == "weather":
+        return "weather: " + ", ".join(f"{k} {v:g}" for k, v in fields.items())
     if entry["action"] == "trigger":
         return f"event {fields['index']} triggered early"
     if entry["action"] == "message":

@@ -11,9 +11,11 @@ import json
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
+from datetime import timedelta
 from typing import Annotated, Any, Literal, TypeVar, get_args, get_origin
 
-from pydantic import AfterValidator, BaseModel, ConfigDict, Field, ValidationError, WrapValidator, model_validator
+from pydantic import (AfterValidator, AwareDatetime, BaseModel, ConfigDict, Field, ValidationError, WrapValidator,
+                      model_validator)
 from pydantic_core import PydanticCustomError, core_schema
 
 from marinesim.criteria.monitor import (CAUTION, MAX_WINDOW_ROWS, Criterion, check_point, default_name,
@@ -43,6 +45,13 @@ MAX_EVENTS = 1000
 MAX_CRITERIA = 64
 MAX_MESSAGE = 500
 """The most characters in an event's message."""
+MIN_VISIBILITY_M, MAX_VISIBILITY_M = 50.0, 200_000.0
+"""The range of the meteorological visibility (m): thick fog to the clearest air."""
+NAV_LIGHTS = ("underway", "anchored", "none")
+"""The navigation lights a vessel shows (COLREG): making way (masthead lights, sidelights, sternlight), at anchor
+(all-round white forward and aft), or none drawn."""
+WEATHER = ("visibility_m", "cloud_cover_oktas")
+"""The ``[environment]`` keys an event or the instructor may change during a run."""
 
 
 @dataclass(frozen=True)
@@ -233,6 +242,8 @@ class VesselOptions(Section):
     wake_speeds_kn: Annotated[list[float], Quantity("kn", gt=0.0, le=MAX_SPEED_KN, what="speeds")] = Field(
         default_factory=list, description="more speeds to precompute the Kelvin wake for (needs hull)")
     visual_mesh: str | None = Field(None, description="mesh drawn instead of the hull (may be open)")
+    nav_lights: Literal[NAV_LIGHTS] = Field("underway", description="the navigation lights it shows at night and in "
+                                       "restricted visibility (COLREG): underway, anchored (all-round white) or none")
     visual_mesh_units: Literal[tuple(UNITS)] = Field("m", description="the visual mesh's length units")
     visual_mesh_scale: Annotated[float, Quantity(gt=0.0)] = Field(1.0, description="its geometric scale")
     visual_mesh_axes: str = Field("x,y,z", description="its axes that become body x, y, z")
@@ -284,15 +295,53 @@ class RunOptions(Section):
 
 
 class EnvironmentOptions(Section):
-    """``[environment]``: the light and the air the picture is drawn in (the physics does not see them)."""
+    """``[environment]``: the light and the air the picture is drawn in (the physics does not see them). The sun
+    is placed by ``time_utc`` at the position, where it and the moon move as the run goes on, or fixed by
+    ``sun_azimuth_deg`` and ``sun_elevation_deg``."""
 
+    time_utc: AwareDatetime | None = Field(
+        None, description="date and time of the run's start, with its offset (TOML 2026-11-25T15:30:00Z): the sun "
+                          "and the moon at latitude_deg, longitude_deg; instead of the sun's keys")
+    latitude_deg: Annotated[float | None, Quantity("deg", ge=-90.0, le=90.0)] = Field(
+        None, description="where the run is, north positive (with time_utc)")
+    longitude_deg: Annotated[float | None, Quantity("deg", ge=-180.0, le=180.0)] = Field(
+        None, description="where the run is, east positive (with time_utc)")
     sun_azimuth_deg: Annotated[float, Quantity("deg", ge=0.0, lt=360.0)] = Field(
-        200.0, description="compass bearing of the sun")
-    sun_elevation_deg: Annotated[float, Quantity("deg", ge=0.0, le=90.0)] = Field(
-        30.0, description="height of the sun above the horizon (dusk and night are not drawn yet)")
-    visibility_m: Annotated[float, Quantity("m", ge=50.0, le=200_000.0)] = Field(
+        200.0, description="compass bearing of the sun (without time_utc)")
+    sun_elevation_deg: Annotated[float, Quantity("deg", ge=-90.0, le=90.0)] = Field(
+        30.0, description="height of the sun above the horizon (without time_utc): below -18 it is night")
+    cloud_cover_oktas: Annotated[float, Quantity("oktas", ge=0.0, le=8.0)] = Field(
+        0.0, description="eighths of the sky covered by cloud (8: overcast, no direct sun)")
+    visibility_m: Annotated[float, Quantity("m", ge=MIN_VISIBILITY_M, le=MAX_VISIBILITY_M)] = Field(
         40_000.0, description="meteorological visibility: where a dark object's contrast against the horizon "
                               "falls to 0.05 (Koschmieder; 1 km is fog, 10 km moderate, 40 km very good)")
+
+    @model_validator(mode="after")
+    def _one_way_to_place_the_sun(self) -> EnvironmentOptions:
+        position = {"latitude_deg", "longitude_deg"} & self.model_fields_set
+        sun = {"sun_azimuth_deg", "sun_elevation_deg"} & self.model_fields_set
+        if self.time_utc is None and position:
+            raise PydanticCustomError("environment", "latitude_deg and longitude_deg place the sun only with time_utc")
+        if self.time_utc is not None and len(position) < 2:
+            raise PydanticCustomError("environment", "time_utc needs latitude_deg and longitude_deg")
+        if self.time_utc is not None and sun:
+            raise PydanticCustomError("environment", "give time_utc (the sun from the date) or the sun's keys, "
+                                                     "not both")
+        return self
+
+    def changed(self, hours: float = 0.0, **keys: float) -> EnvironmentOptions:
+        """This environment ``hours`` later (with ``time_utc``) and with some keys replaced, validated as the
+        scenario's are (a :class:`~marinesim.errors.ParameterError` names a value out of range)."""
+        values = self.model_dump(exclude_unset=True) | keys
+        if hours:
+            if self.time_utc is None:
+                raise ParameterError("the sun is fixed by the scenario's sun keys: only a time_utc moves it")
+            values["time_utc"] = self.time_utc + timedelta(hours=hours)
+        try:
+            return EnvironmentOptions.model_validate(values)
+        except ValidationError as error:
+            first = error.errors()[0]
+            raise ParameterError(f"environment.{'.'.join(map(str, first['loc']))}: {first['msg']}") from None
 
 
 def _at_least_one(systems: list[SeaOptions]) -> list[SeaOptions]:
@@ -325,6 +374,10 @@ class EventOptions(Section):
         None, description="new compass heading")
     message: Annotated[str | None, Field(max_length=MAX_MESSAGE)] = Field(
         None, description="shown in the viewer and the log when the event happens")
+    visibility_m: Annotated[float | None, Quantity("m", ge=MIN_VISIBILITY_M, le=MAX_VISIBILITY_M)] = Field(
+        None, description="new visibility (fog rolling in, clearing)")
+    cloud_cover_oktas: Annotated[float | None, Quantity("oktas", ge=0.0, le=8.0)] = Field(
+        None, description="new cloud cover")
 
     @model_validator(mode="after")
     def _one_trigger_and_an_action(self) -> EventOptions:
@@ -335,8 +388,9 @@ class EventOptions(Section):
                 raise _refuse("sea", "an empty list: give at least one wave system, or leave sea out")
             if self.ramp_s == 0.0:
                 raise _refuse("ramp_s", "a sea change blends in over ramp_s > 0 s, got 0")
-        if all(getattr(self, key) is None for key in ("sea", "speed_kn", "heading_deg", "message")):
-            raise _refuse("message", "an event needs something to do: sea, speed_kn, heading_deg or message")
+        if all(getattr(self, key) is None for key in ("sea", "speed_kn", "heading_deg", "message", *WEATHER)):
+            raise _refuse("message", "an event needs something to do: sea, speed_kn, heading_deg, "
+                                     "visibility_m, cloud_cover_oktas or message")
         return self
 
 
@@ -548,6 +602,8 @@ def _type_name(annotation: Any) -> tuple[str, str]:
         return _type_name(args[0])
     if isinstance(annotation, type) and issubclass(annotation, BaseModel):
         return "table", ""
+    if annotation is AwareDatetime:
+        return "date-time", ""
     return annotation.__name__, ""
 
 

@@ -7,7 +7,7 @@ import math
 import tomllib
 from collections.abc import Callable
 import dataclasses
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -20,7 +20,7 @@ from marinesim.criteria.monitor import Condition, Criterion, parse_condition
 from marinesim.criteria.quantities import Options
 from marinesim.errors import FileFormatError, MarinesimError, ScenarioError
 from marinesim.hull import Hull, VisualMesh, load_hull, load_visual_mesh
-from marinesim.scenario.model import (HULL_OPTIONS, VISUAL_MESH_OPTIONS, WAVE_PARAMETERS, CriterionOptions,
+from marinesim.scenario.model import (HULL_OPTIONS, VISUAL_MESH_OPTIONS, WAVE_PARAMETERS, WEATHER, CriterionOptions,
                                       EnvironmentOptions, EventOptions, OceanOptions, RunOptions, ScenarioFile,
                                       SeaOptions, VesselOptions, validate)
 from marinesim.sea.build import wave_system
@@ -43,6 +43,7 @@ class Vessel:
     points: dict[str, tuple[float, float, float]]
     wake_speeds_m_s: tuple[float, ...] = ()  # the vessel's speed (if > 0) and the extra wake speeds
     visual: VisualMesh | None = None        # drawn instead of the hull, body frame
+    nav_lights: str = "underway"            # one of NAV_LIGHTS
 
     @property
     def speed_kn(self) -> float:
@@ -61,6 +62,8 @@ class Event:
     speed_m_s: float | None = None
     heading_deg: float | None = None      # compass, where the bow points
     message: str | None = None
+    weather: dict[str, float] = field(default_factory=dict)
+    """``[environment]`` keys it changes at once (:data:`~marinesim.scenario.model.WEATHER`)."""
 
     @property
     def changes(self) -> bool:
@@ -76,6 +79,9 @@ class Event:
         if self.heading_deg is not None:
             parts.append(f"heading {self.heading_deg:g} deg")
         change = " ".join(parts) + (f" over {self.ramp_s:g} s" if parts else "")
+        words = {"visibility_m": "visibility {:g} m", "cloud_cover_oktas": "cloud {:g} oktas"}
+        weather = " ".join(words[key].format(value) for key, value in self.weather.items())
+        change = "; ".join(p for p in (change, weather) if p)
         trigger = f"at {self.at_s:g} s" if self.at_s is not None else f"when {self.condition}"
         return f"{trigger}: " + "; ".join(p for p in (change, self.message and repr(self.message)) if p)
 
@@ -166,7 +172,8 @@ def _event(where: str, options: EventOptions, depth: float, vessel: Vessel | Non
     if speed is not None:
         _check_speed(f"{where}.speed_kn", vessel.rao, options.speed_kn)
     condition = None if options.when is None else parse_condition(options.when)
-    return Event(options.at_s, condition, options.ramp_s, sea, speed, options.heading_deg, options.message)
+    weather = {key: getattr(options, key) for key in WEATHER if getattr(options, key) is not None}
+    return Event(options.at_s, condition, options.ramp_s, sea, speed, options.heading_deg, options.message, weather)
 
 
 def _criterion(options: CriterionOptions) -> Criterion:
@@ -205,7 +212,8 @@ def _vessel(path: Path, options: VesselOptions) -> Vessel:
     speeds_kn = ([options.speed_kn] if options.speed_kn > 0 else []) + options.wake_speeds_kn
     wake_speeds = tuple(sorted({v * KNOT for v in speeds_kn}))
     points = {name: (p[0], p[1], p[2]) for name, p in options.points.items()}
-    return Vessel(rao_path, rao, hull_path, hull, speed, options.heading_deg, points, wake_speeds, visual)
+    return Vessel(rao_path, rao, hull_path, hull, speed, options.heading_deg, points, wake_speeds, visual,
+                  options.nav_lights)
 
 
 def _mesh(path: Path, options: VesselOptions, key: str, names: dict[str, str],

@@ -33,6 +33,7 @@ from marinesim.criteria.monitor import Criterion, Monitor, Tally, watched
 from marinesim.errors import ParameterError
 from marinesim.progress import task
 from marinesim.scenario import Scenario
+from marinesim.scenario.model import WEATHER
 from marinesim.scenario.schema import Event
 from marinesim.session.timeline import PREPARE_S, Simulation
 
@@ -78,8 +79,10 @@ class Alarm:
 
 CHANGE_KEYS = frozenset({"hs_factor", "tp_factor", "turn_waves_deg", "speed_kn", "heading_deg", "ramp_s"})
 """What a live change may give (:meth:`Simulation.change`'s keywords, the sea as factors of the present one)."""
-ACTIONS = {"change": CHANGE_KEYS, "trigger": frozenset({"index"}), "message": frozenset({"text"}),
-           "acknowledge": frozenset()}
+WEATHER_KEYS = frozenset({*WEATHER, "hours"})
+"""What a live weather change may give (:meth:`EnvironmentOptions.changed`'s keywords): new values, the clock moved."""
+ACTIONS = {"change": CHANGE_KEYS, "weather": WEATHER_KEYS, "trigger": frozenset({"index"}),
+           "message": frozenset({"text"}), "acknowledge": frozenset()}
 """Live actions and their fields: what :meth:`Exercise.act` applies and a replay applies again."""
 MAX_MESSAGE = 200
 """The longest message an instructor may insert (characters)."""
@@ -272,6 +275,8 @@ class Exercise:
 
     def _happen(self, index: int, t: float, early: bool = False) -> None:
         happened = Happened(index, t, self.events[index], early)
+        if happened.event.weather:
+            self.sim.environment = self.sim.environment.changed(**happened.event.weather)
         self.happened.append(happened)
         self.note("event", index=index, what=happened.event.describe(), **({"early": True} if early else {}))
         self.log(happened.line())
@@ -286,6 +291,8 @@ class Exercise:
             raise ParameterError(f"unknown action {action!r} with {sorted(fields)}")
         if action == "change":
             self.sim.change(**fields)
+        elif action == "weather":
+            self.sim.environment = self.sim.environment.changed(**fields)
         elif action == "trigger":
             self._trigger(fields["index"])
         elif action == "message":

@@ -91,6 +91,8 @@ class Simulation:
         self.assembly = Assembly(scenario) if assembly is None else assembly
         self.ocean = self.assembly.ocean
         self.time = 0.0
+        self.environment = scenario.environment
+        """The light and the air now: the scenario's, as events and the instructor have changed them."""
         self.vessel = scenario.vessel
         heading = compass_to_math(self.vessel.heading_deg) if self.vessel else 0.0
         speed = self.vessel.speed_m_s if self.vessel else 0.0

@@ -10,21 +10,21 @@ import numpy as np
 
 from marinesim.gl import is_software
 from marinesim.render.camera import Eye
+from marinesim.render.daylight import Light
 
 
 @dataclass(frozen=True)
 class View:
-    """One camera's view of a frame: the eye, its view-projection (4, 4) (E frame, m -> clip space), the sun
-    (unit vector towards it, E frame) and the visibility (m) that sets the haze."""
+    """One camera's view of a frame: the eye, its view-projection (4, 4) (E frame, m -> clip space) and the
+    light it is drawn in (sun, moon, sky, clouds, haze)."""
 
     eye: Eye
     view_projection: np.ndarray
-    sun: tuple[float, float, float]
-    visibility_m: float
+    light: Light
 
     def shared(self) -> dict[str, object]:
         """The uniforms of ``sky.glsl`` and the eye, which every drawn pass declares."""
-        return {"u_sun": self.sun, "u_visibility": self.visibility_m, "u_eye": tuple(self.eye.position)}
+        return self.light.uniforms() | {"u_eye": tuple(self.eye.position)}
 
 
 class Sampled(Protocol):

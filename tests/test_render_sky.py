@@ -1,4 +1,6 @@
-"""The haze the picture is drawn in (shaders/sky.glsl) obeys the meteorological definition of visibility
+"""The sky's functions (shaders/sky.glsl), run on a real OpenGL context.
+
+The haze the picture is drawn in obeys the meteorological definition of visibility
 (Koschmieder, WMO): a dark object's contrast against the horizon sky falls as exp(-sigma d) and reaches the
 threshold 0.05 at the visibility, so sigma = ln(20) / V. Run on a real OpenGL context: the shader's own
 with_haze() on a black object at distances d, against its haze_colour()."""
@@ -11,6 +13,7 @@ import numpy as np
 import pytest
 
 from marinesim.gl import SHADER_DIR
+from marinesim.render.daylight import light_at
 from marinesim.scenario.model import EnvironmentOptions
 
 VERTEX = """#version 430
@@ -31,7 +34,10 @@ def contrast(ctx, visibility_m: float, distance_m: float) -> float:
     """(L_object - L_haze) / L_haze of a black object seen at ``distance_m``, in linear radiance."""
     sky = (SHADER_DIR / "sky.glsl").read_text()
     program = ctx.program(vertex_shader=VERTEX, fragment_shader=FRAGMENT.format(sky=sky))
-    program["u_visibility"].value = visibility_m
+    light = light_at(EnvironmentOptions(visibility_m=visibility_m))
+    for name, value in light.uniforms().items():
+        if name in program:
+            program[name].value = value
     program["u_distance"].value = distance_m
     target = ctx.simple_framebuffer((1, 1), components=4, dtype="f4")
     target.use()
@@ -49,3 +55,40 @@ def test_a_dark_object_keeps_five_percent_of_its_contrast_at_the_visibility(gl_c
     assert contrast(gl_context, visibility_m, visibility_m) == pytest.approx(-0.05, rel=1e-4)
     assert contrast(gl_context, visibility_m, visibility_m / 2) == pytest.approx(-math.sqrt(0.05), rel=1e-4)
     assert contrast(gl_context, visibility_m, 0.0) == pytest.approx(-1.0, rel=1e-6)
+
+
+CLOUD_PROGRAM = """#version 430
+{sky}
+uniform int u_columns;
+out vec4 f_colour;
+void main() {{
+    // pixel (i, j) looks at azimuth 2 pi i / columns and at elevation from 10 to 80 deg, evenly in sin
+    float azimuth = 6.2831853 * (gl_FragCoord.x / float(u_columns));
+    float z = mix(0.17, 0.98, gl_FragCoord.y / 64.0);
+    vec3 d = vec3(sqrt(1.0 - z * z) * cos(azimuth), sqrt(1.0 - z * z) * sin(azimuth), z);
+    f_colour = vec4(cloud_along(d), 0.0, 0.0, 1.0);
+}}
+"""
+
+
+def cloud_share(ctx, oktas: float) -> float:
+    """The share of the sky between 10 and 80 deg up that the clouds of sky.glsl cover (solid-angle weighted)."""
+    program = ctx.program(vertex_shader=VERTEX,
+                          fragment_shader=CLOUD_PROGRAM.format(sky=(SHADER_DIR / "sky.glsl").read_text()))
+    for name, value in light_at(EnvironmentOptions(cloud_cover_oktas=oktas)).uniforms().items():
+        if name in program:
+            program[name].value = value
+    program["u_columns"].value = 512
+    target = ctx.simple_framebuffer((512, 64), components=4, dtype="f4")
+    target.use()
+    ctx.vertex_array(program, []).render(vertices=3)
+    cover = np.frombuffer(target.read(components=4, dtype="f4"), np.float32).reshape(64, 512, 4)[..., 0]
+    program.release()
+    target.release()
+    return float(cover.mean())
+
+
+@pytest.mark.parametrize("oktas", [0, 1, 2, 4, 6, 7, 8])
+def test_the_clouds_cover_the_share_of_the_sky_the_oktas_say(gl_context, oktas):
+    """An observer reports cover in eighths of the sky: the drawn clouds cover oktas / 8 of it within an eighth."""
+    assert cloud_share(gl_context, oktas) == pytest.approx(oktas / 8.0, abs=0.1)
