@@ -14,6 +14,7 @@ uniform float u_tile_size[TILES];
 uniform vec3 u_eye;
 uniform sampler2D u_hull_mask;     // 1 inside the waterplane (vessel frame)
 uniform vec4 u_hull_rect;          // as the wake rect
+uniform vec4 u_wash;               // stern x, half beam (m, vessel frame), speed (m/s), 1: a hull to wash
 uniform float u_foam_on;           // 0: draw no foam (comparisons)
 
 #include "surface.glsl"
@@ -22,6 +23,33 @@ const vec3 DEEP = vec3(0.004, 0.030, 0.060);
 const vec3 SCATTER = vec3(0.02, 0.11, 0.10);
 const vec3 FOAM = vec3(0.85, 0.88, 0.90);
 const float F0 = 0.02;
+const float WASH_LIFETIME_S = 60.0;   // the white of the propeller wash fades as exp(-age / this)
+const float WASH_FULL_SPEED = 3.0;    // m/s: the wash is fully white from this speed on
+
+// The turbulent wake astern (vessel frame v): a band as wide as the beam at the stern that spreads as a
+// self-propelled body's wake does, its width growing as the distance to the 1/5 power (Tennekes & Lumley),
+// whose foam fades with the water's age since the stern passed; streaked along the track.
+float wash_foam(vec2 v) {
+    float speed = u_wash.z;
+    float behind = u_wash.x - v.x;
+    if (u_wash.w == 0.0 || speed <= 0.05 || behind <= 0.0) return 0.0;
+    float half_width = u_wash.y * pow(1.0 + behind / u_wash.y, 0.2);
+    float across = v.y / half_width;
+    float streaks = 0.55 + 0.9 * value_noise(vec2(v.x / 35.0, v.y / 1.8));
+    float fresh = smoothstep(0.0, 0.5 * u_wash.y, behind);  // it boils up just behind the transom
+    return clamp(exp(-2.0 * across * across) * exp(-behind / (speed * WASH_LIFETIME_S)) * streaks * fresh, 0.0, 1.0)
+           * min(speed / WASH_FULL_SPEED, 1.0);
+}
+
+// Foam where the water meets the hull: a ring a few metres wide outside the waterline (the waterplane mask
+// blurred by its mip levels), whiter with speed and at the bow, where the stem throws the water up.
+float contact_foam(vec2 v, vec2 mask_uv) {
+    if (u_wash.w == 0.0 || any(lessThan(mask_uv, vec2(0.0))) || any(greaterThan(mask_uv, vec2(1.0)))) return 0.0;
+    float near = textureLod(u_hull_mask, mask_uv, 3.0).r;
+    float ring = smoothstep(0.02, 0.3, near) * (1.0 - smoothstep(0.3, 0.5, near));
+    float bow = smoothstep(0.75, 0.95, (v.x - u_hull_rect.x) * u_hull_rect.z);  // the forward quarter
+    return ring * clamp(0.15 + u_wash.z / 6.0 + 0.5 * bow, 0.0, 1.0);
+}
 
 out vec4 f_colour;
 
@@ -33,9 +61,10 @@ float glitter(vec3 n, vec3 l, vec3 v, float roughness) {
 }
 
 void main() {
-    vec2 mask_uv = (vessel_frame(v_xy) - u_hull_rect.xy) * u_hull_rect.zw;
+    vec2 v_frame = vessel_frame(v_xy);
+    vec2 mask_uv = (v_frame - u_hull_rect.xy) * u_hull_rect.zw;
     if (all(greaterThan(mask_uv, vec2(0.0))) && all(lessThan(mask_uv, vec2(1.0)))
-        && texture(u_hull_mask, mask_uv).r > 0.5) discard;
+        && textureLod(u_hull_mask, mask_uv, 0.0).r > 0.5) discard;
 
     vec2 slope = vec2(0.0);
     // The surface's Jacobian is the product of the cascades' held ones, each over its tile mean
@@ -61,7 +90,8 @@ void main() {
     float deviation = sqrt(spread);
     float breaking = clamp((FOAM_J_START + deviation - folded) / (FOAM_J_START - FOAM_J_FULL + 2.0 * deviation),
                            0.0, 1.0);
-    float foam = u_foam_on * (1.0 - (1.0 - breaking) * (1.0 - local.z));
+    float vessel = max(local.z, max(wash_foam(v_frame), contact_foam(v_frame, mask_uv)));
+    float foam = u_foam_on * (1.0 - (1.0 - breaking) * (1.0 - vessel));
 
     vec3 to_eye = u_eye - v_position;
     float distance_m = length(to_eye);

@@ -45,14 +45,14 @@ def raw_slope(wake) -> np.ndarray:
     return np.hypot(dhdx, dhdy)
 
 
-def test_a_gentle_wake_is_drawn_as_computed_and_a_steep_one_is_capped_at_breaking(gentle, steep, wigley):
+def test_a_gentle_wake_is_drawn_as_computed_and_a_steep_one_is_capped_at_breaking(gentle, steep):
     assert np.percentile(raw_slope(gentle), 99.9) < BREAKING_SLOPE < np.percentile(raw_slope(steep), 99.9)
-    look = wake_appearance(gentle, wigley)
+    look = wake_appearance(gentle)
     assert look.shape == (*gentle.elevation.shape, 4) and look.dtype == np.float32
     np.testing.assert_array_equal(look[..., 0], gentle.elevation)
     for factor in (1.0, 2.0, 10.0):
         wake = dataclasses.replace(steep, elevation=factor * steep.elevation)
-        capped = wake_appearance(wake, wigley)
+        capped = wake_appearance(wake)
         steepest = np.percentile(slope(capped), 99.9)
         assert steepest <= BREAKING_SLOPE * (1.0 + 1e-5)
         assert steepest == pytest.approx(BREAKING_SLOPE, rel=1e-4), "scaled below breaking: the wake is flattened"
@@ -61,39 +61,21 @@ def test_a_gentle_wake_is_drawn_as_computed_and_a_steep_one_is_capped_at_breakin
         assert np.ptp(scale) < 1e-5 * scale.mean()
 
 
-def test_foam_ahead_of_the_stern_only_where_the_waves_near_breaking(gentle, steep, wigley):
-    stern = float(wigley.vertices[:, 0].min())
+def test_the_wakes_foam_only_where_its_waves_near_breaking(gentle, steep):
     lo, hi = WAKE_SLOPE_FOAM
     for wake in (gentle, steep):
-        look = wake_appearance(wake, wigley)
-        ahead = wake.x >= stern
-        foam, s = look[:, ahead, 3], slope(look)[:, ahead]
+        look = wake_appearance(wake)
+        foam, s = look[..., 3], slope(look)
         assert foam.min() >= 0.0 and look[..., 3].max() <= 1.0
         assert np.all(foam[s < lo * (1.0 - 1e-4)] == 0.0), "foam on water that is not near breaking"
     breaking = s > hi * (1.0 + 1e-4)
     assert breaking.any() and np.all(foam[breaking] == 1.0), "the steep wake's breaking crests carry no full foam"
 
 
-def test_the_wash_astern_fades_with_distance_and_is_the_same_to_port_and_starboard(gentle, wigley):
-    look = wake_appearance(gentle, wigley)
-    foam = look[..., 3]
-    stern = float(wigley.vertices[:, 0].min())
-    astern = (gentle.x < stern) & (gentle.x > stern - 3.0 * LENGTH_M)
-    assert np.count_nonzero(astern) > 50
-    centre = np.argsort(np.abs(gentle.y))[:2]  # the rows either side of the centreline
-    for row in centre:
-        by_distance = foam[row, astern][::-1]  # columns run forward: nearest the stern last
-        assert np.all(np.diff(by_distance) <= 0.0), "the wash grows somewhere astern"
-        assert by_distance[0] > 0.5 and by_distance[-1] < 0.5 * by_distance[0]
-    np.testing.assert_allclose(foam[:, astern], foam[::-1, astern], rtol=0, atol=1e-6)
-    beside = np.abs(gentle.y) > 5.0 * float(np.ptp(wigley.vertices[:, 1]))
-    assert foam[np.ix_(beside, astern)].max() < 0.05, "the wash is a band about as wide as the beam"
-
-
-def test_the_slopes_are_the_gradient_of_the_drawn_elevation(gentle, steep, wigley):
+def test_the_slopes_are_the_gradient_of_the_drawn_elevation(gentle, steep):
     """d/dx along the columns (x forward) and d/dy along the rows (y to port), of the capped elevation."""
     for wake in (gentle, steep):
-        look = wake_appearance(wake, wigley).astype(float)
+        look = wake_appearance(wake).astype(float)
         spacing = float(wake.x[1] - wake.x[0])
         h = look[..., 0]
         dhdx = (h[:, 2:] - h[:, :-2]) / (2.0 * spacing)

@@ -140,6 +140,60 @@ def test_the_wake_shows_behind_the_moving_vessel_and_not_ahead_of_it(underway):
     assert np.mean(along > wake.x[0] - 30.0) > 0.98, "wake drawn beyond the end of its grid"
 
 
+def overhead_brightening(scenario, speed_kn: float):
+    """From 900 m over the track a ship length astern, the Kelvin wake off and the sea calmed to a third (no
+    whitecaps): how much foam brightens each pixel (luminance), and the sea point (vessel frame) under each."""
+    calm = dataclasses.replace(scenario, sea=scaled_sea(scenario.sea, 0.3, 1.0, 0.0),
+                               vessel=dataclasses.replace(scenario.vessel, speed_m_s=speed_kn * 0.514444))
+    size = (480, 360)
+    frames = []
+    for foam in (True, False):
+        with offscreen(calm, size, wake=False, foam=foam) as view:
+            view.scene.camera_name = "free"
+            view.go_to(60.0)
+            pose = view.scene.sim.pose()
+            hull = view.scene.sim.vessel.hull.vertices
+            back = float(np.ptp(hull[:, 0]))
+            free = view.scene.cameras["free"]
+            free.position = (pose.x - back * math.cos(pose.heading), pose.y - back * math.sin(pose.heading), 900.0)
+            free.yaw_deg, free.pitch_deg = math.degrees(pose.heading), -89.9
+            frames.append(luminance(view.frame(hud=False)))
+            eye = view.scene.camera.eye(pose)
+    rows, cols = np.indices(size[::-1]).reshape(2, -1)
+    sea = sea_plane_points(eye, size, rows, cols)[:, :2] - [pose.x, pose.y]
+    c, s = math.cos(pose.heading), math.sin(pose.heading)
+    vessel = np.c_[sea @ [c, s], sea @ [-s, c]]
+    return (frames[0] - frames[1]).ravel(), vessel, hull
+
+
+def test_the_wash_astern_is_a_foam_band_that_spreads_and_fades_and_foam_meets_the_hull(underway):
+    """A ship making way leaves a white band astern as wide as her beam that widens (as a self-propelled wake,
+    x^1/5) and fades as its water ages; none ahead of the bow or far abeam; a collar of foam against her sides;
+    at rest no wash. A wash ahead of the bow, or one that grew astern, would tell a trainee the wrong course."""
+    brighter, v, hull = overhead_brightening(underway, 14.0)
+    stern, bow = hull[:, 0].min(), hull[:, 0].max()
+    length, half_beam = bow - stern, 0.5 * float(np.ptp(hull[:, 1]))
+
+    def mean_in(x0, x1, y0, y1, field=brighter):
+        inside = (v[:, 0] > x0) & (v[:, 0] < x1) & (np.abs(v[:, 1]) > y0) & (np.abs(v[:, 1]) < y1)
+        assert inside.sum() > 30, (x0, x1, y0, y1)
+        return float(field[inside].mean())
+
+    near, far = (stern - 0.25 * length, stern - 0.1 * length), (stern - 1.9 * length, stern - 1.75 * length)
+    centre_near, centre_far = mean_in(*near, 0.0, 0.3 * half_beam), mean_in(*far, 0.0, 0.3 * half_beam)
+    assert centre_near > 40.0, "no white wash just astern"
+    assert centre_far < 0.6 * centre_near, "the wash does not fade astern"
+    edge = (1.3 * half_beam, 1.6 * half_beam)
+    assert mean_in(*far, *edge) / centre_far > 2.0 * mean_in(*near, *edge) / centre_near, "the wash does not spread"
+    assert abs(mean_in(bow + 30.0, bow + 300.0, 0.0, 2.0 * half_beam)) < 2.0, "foam ahead of the bow"
+    assert abs(mean_in(stern, stern + 0.5 * length, 4.0 * half_beam, 8.0 * half_beam)) < 2.0, "foam far abeam"
+    sides = (stern + 0.3 * length, bow - 0.3 * length)
+    assert mean_in(*sides, half_beam + 0.5, half_beam + 4.0) > 5.0 * max(mean_in(*sides, half_beam + 15.0,
+                                                                               half_beam + 30.0), 1.0)
+    at_rest, v, _ = overhead_brightening(underway, 0.0)
+    assert mean_in(*near, 0.0, 0.3 * half_beam, field=at_rest) < 0.1 * centre_near, "a wash behind a ship at rest"
+
+
 def test_the_bridge_camera_rolls_and_pitches_with_the_ship():
     """The eye is the bridge point carried by the pose; its up vector tilts by exactly the roll and pitch."""
     camera = BridgeCamera((-105.0, 0.0, 32.0), look_pitch_deg=0.0)

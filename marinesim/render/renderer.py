@@ -85,7 +85,8 @@ class Renderer:
         self.foam = FoamLayer(ctx, len(tiles), n)
         self.wake = WakeLayer(ctx, sim, shown=options.wake)
         self.solver_field = SolverFieldLayer(ctx, sim)
-        self.hull_mask = HullMaskLayer(ctx, sim.vessel.hull if sim.vessel is not None else None)
+        self.hull_mask = HullMaskLayer(ctx, sim.vessel.hull if sim.vessel is not None else None,
+                                       speed=lambda: sim.speed_m_s)
         self.ocean = OceanLayer(ctx, tiles, n, foam_on=options.foam)
         self.vessel = VesselLayer(ctx, self.mesh, shown=options.vessel)
         vessel = sim.vessel

@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from marinesim.hull import Hull
 from marinesim.wake.compute import Wake
 
 BREAKING_SLOPE = 0.3
@@ -17,16 +16,15 @@ WAKE_SLOPE_FOAM = (0.2, 0.3)
 """Wake slopes where the wake's own foam starts and is full (breaking diverging waves)."""
 
 
-def wake_appearance(wake: Wake, hull: Hull) -> np.ndarray:
-    """The wake of ``hull`` as drawn, on the wake's grid: (ny, nx, 4) float32 of elevation (m), its
+def wake_appearance(wake: Wake) -> np.ndarray:
+    """The wake as drawn, on the wake's grid: (ny, nx, 4) float32 of elevation (m), its
     d/dx and d/dy (vessel frame: x forward, y to port) and foam (0..1).
 
     Thin-ship theory overpredicts the waves of full hulls, up to slopes no water wave survives: a
     field whose steepest waves (99.9th percentile of the slope) pass ``BREAKING_SLOPE`` is scaled
     down to it, as breaking would cap them. Foam: where the diverging waves are near breaking
-    (slope ``WAKE_SLOPE_FOAM``), and the turbulent wash astern, a band as wide as the beam that
-    spreads by a tenth of its width per beam travelled and fades over three hull lengths, stronger
-    at higher Froude number.
+    (slope ``WAKE_SLOPE_FOAM``). The turbulent wash astern and the foam against the hull are drawn by the
+    ocean at any speed (``shaders/ocean.frag``), wake or not.
     """
     h = np.asarray(wake.elevation, np.float64)
     spacing = float(wake.x[1] - wake.x[0])
@@ -36,13 +34,4 @@ def wake_appearance(wake: Wake, hull: Hull) -> np.ndarray:
     h, dhdx, dhdy, slope = h * limit, dhdx * limit, dhdy * limit, slope * limit
     lo, hi = WAKE_SLOPE_FOAM
     foam = np.clip((slope - lo) / (hi - lo), 0.0, 1.0)
-    stern = float(hull.vertices[:, 0].min())
-    beam = float(np.ptp(hull.vertices[:, 1]))
-    length = float(np.ptp(hull.vertices[:, 0]))
-    behind = np.maximum(stern - wake.x, 0.0)[None, :]
-    half_width = 0.5 * beam * (1.0 + 0.1 * behind / beam)
-    froude = float(wake.info.get("froude", 0.2))
-    wash = np.exp(-(wake.y[:, None] / half_width) ** 2) * np.exp(-behind / (3.0 * length))
-    wash *= (wake.x[None, :] < stern) * min(1.0, 3.0 * froude)
-    foam = np.maximum(foam, wash)
     return np.stack([h, dhdx, dhdy, foam], axis=-1).astype(np.float32)

@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import moderngl
 
-from marinesim.hull import Hull
 from marinesim.render.layers.base import blank_texture
 from marinesim.render.wake_look import wake_appearance
 from marinesim.session.timeline import Simulation
@@ -35,10 +34,10 @@ class WakeLayer:
         self._textures: dict[int, tuple[moderngl.Texture, Rect]] = {}
         self._blank = blank_texture(ctx)
 
-    def _texture(self, wake: Wake, hull: Hull) -> tuple[moderngl.Texture, Rect]:
+    def _texture(self, wake: Wake) -> tuple[moderngl.Texture, Rect]:
         key = id(wake)
         if key not in self._textures:
-            data = wake_appearance(wake, hull)
+            data = wake_appearance(wake)
             texture = self.ctx.texture((data.shape[1], data.shape[0]), 4, data.tobytes(), dtype="f4")
             texture.repeat_x = texture.repeat_y = False
             self._textures[key] = texture, wake_rect(wake)
@@ -52,7 +51,7 @@ class WakeLayer:
             texture, rect = self._blank, (0.0, 0.0, 1.0, 1.0)
             if slot < len(wakes):
                 wake, weights[slot] = wakes[slot]
-                texture, rect = self._texture(wake, self.sim.vessel.hull)
+                texture, rect = self._texture(wake)
             texture.use(unit + slot)
             values[f"u_wake{slot}"] = unit + slot
             values[f"u_wake_rect{slot}"] = rect
