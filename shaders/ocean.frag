@@ -16,6 +16,7 @@ uniform sampler2D u_hull_mask;     // 1 inside the waterplane (vessel frame)
 uniform vec4 u_hull_rect;          // as the wake rect
 uniform vec4 u_wash;               // stern x, half beam (m, vessel frame), speed (m/s), 1: a hull to wash
 uniform float u_foam_on;           // 0: draw no foam (comparisons)
+uniform vec3 u_wind;               // unit vector the wind blows towards (E frame x, y), speed at 10 m (m/s)
 
 #include "surface.glsl"
 
@@ -39,6 +40,23 @@ float wash_foam(vec2 v) {
     float fresh = smoothstep(0.0, 0.5 * u_wash.y, behind);  // it boils up just behind the transom
     return clamp(exp(-2.0 * across * across) * exp(-behind / (speed * WASH_LIFETIME_S)) * streaks * fresh, 0.0, 1.0)
            * min(speed / WASH_FULL_SPEED, 1.0);
+}
+
+// Foam blown in streaks along the wind (windrows): from Beaufort 7 (13.9 m/s, "foam begins to be blown in streaks")
+// to 10 (24.5 m/s, "the surface takes a white appearance"): thin winding lines along the wind (the mid-level contour
+// of a noise stretched 8 times along it), wider and whiter as the wind rises. Where a pixel's footprint spans
+// several, their mean cover instead of aliasing.
+float streak_foam(vec2 xy, float footprint_m) {
+    float amount = clamp((u_wind.z - 13.9) / (24.5 - 13.9), 0.0, 1.0);
+    if (amount <= 0.0) return 0.0;
+    vec2 along = u_wind.xy, across = vec2(-u_wind.y, u_wind.x);
+    vec2 p = vec2(dot(xy, along) / 64.0, dot(xy, across) / 8.0);
+    float n = 0.6 * value_noise(p) + 0.4 * value_noise(p * vec2(2.1, 2.7) + 5.2);
+    float ridge = 1.0 - abs(2.0 * n - 1.0);
+    float edge = 0.975 - 0.1 * amount;
+    float lines = smoothstep(edge, edge + 0.02, ridge);
+    float mean_cover = 0.03 + 0.22 * amount;
+    return mix(lines, mean_cover, smoothstep(1.0, 5.0, footprint_m)) * (0.4 + 0.6 * amount);
 }
 
 // Foam where the water meets the hull: a ring a few metres wide outside the waterline (the waterplane mask
@@ -91,7 +109,8 @@ void main() {
     float breaking = clamp((FOAM_J_START + deviation - folded) / (FOAM_J_START - FOAM_J_FULL + 2.0 * deviation),
                            0.0, 1.0);
     float vessel = max(local.z, max(wash_foam(v_frame), contact_foam(v_frame, mask_uv)));
-    float foam = u_foam_on * (1.0 - (1.0 - breaking) * (1.0 - vessel));
+    float streaks = streak_foam(v_xy, v_spacing);
+    float foam = u_foam_on * (1.0 - (1.0 - breaking) * (1.0 - vessel) * (1.0 - streaks));
 
     vec3 to_eye = u_eye - v_position;
     float distance_m = length(to_eye);

@@ -9,7 +9,9 @@ from a few published laws, stated where they are used:
 - the brightness of the sky against the sun's elevation, as an eye adapted to it sees it (day, civil, nautical
   and astronomical twilight, night), and the moon's light by its illuminated fraction ``(1 - cos psi) / 2``;
 - the global irradiance under ``N`` oktas of cloud, ``1 - 0.75 (N/8)^3.4`` of the clear sky's (Kasten &
-  Czeplak 1980), which sets how grey an overcast day is.
+  Czeplak 1980), which sets how grey an overcast day is;
+- the wind, when the scenario does not give it, from the sea: the first wave system's U10, or the wind of a fully
+  developed (Pierson-Moskowitz) sea of its peak period, ``U19.5 = 0.877 g / wp`` and ``U10 = U19.5 / 1.075``.
 
 Vectors are unit vectors towards the body in the E frame (x east, y north, z up).
 """
@@ -22,14 +24,20 @@ from datetime import timedelta
 
 import numpy as np
 
-from marinesim.angles import compass_to_math
+from marinesim.angles import compass_to_math, wave_beta_from_compass
+from marinesim.constants import G
 from marinesim.scenario.model import EnvironmentOptions
+from marinesim.sea.seastate import SeaState
 
 EXTINCTION = np.array([0.025, 0.060, 0.150])
 """Vertical optical depth of the air for the sun's red, green and blue (Rayleigh and aerosol, a clear day)."""
 ADAPTED_SKY = ((-18.0, -2.6), (-12.0, -2.2), (-6.0, -1.4), (0.0, -0.5), (6.0, -0.12), (12.0, 0.0))
 """log10 of the sky's brightness against a clear day as the adapted eye sees it, at sun elevations (deg): the
 real illuminance falls by eight decades from noon to night, the eye's adaptation takes up most of them."""
+PIERSON_MOSKOWITZ = 0.877
+"""wp U19.5 / g of a fully developed sea (Pierson & Moskowitz 1964)."""
+U19_5_TO_U10 = 1.075
+"""The wind at 19.5 m over the wind at 10 m (the neutral log profile over the sea)."""
 SUN_AT_ZENITH = np.array([1.00, 0.95, 0.88])
 """The sun's direct light from the zenith (linear RGB): the lower the sun, the redder (:data:`EXTINCTION`)."""
 MOON_PARALLAX_DEG = 0.9507
@@ -42,7 +50,8 @@ FULL_MOON = 10 ** -1.6
 class Light:
     """What lights the scene at one instant. ``sun``/``moon``: unit vectors (E frame); ``sun_colour`` and
     ``moon_colour``: their direct light on a surface facing them (linear RGB, 0 below the horizon, before clouds);
-    ``sky``: the sky's brightness against a clear day; ``cloud``: cloud cover (fraction 0..1); ``visibility_m``."""
+    ``sky``: the sky's brightness against a clear day; ``cloud``: cloud cover (fraction 0..1); ``visibility_m``;
+    ``wind``: the unit vector it blows towards (E frame, x and y) and its speed at 10 m (m/s)."""
 
     sun: tuple[float, float, float]
     moon: tuple[float, float, float]
@@ -51,6 +60,7 @@ class Light:
     sky: float
     cloud: float
     visibility_m: float
+    wind: tuple[float, float, float] = (0.0, 0.0, 0.0)
 
     @property
     def night(self) -> bool:
@@ -122,8 +132,27 @@ def bodies_at(environment: EnvironmentOptions, t_s: float) -> tuple[tuple[float,
     return sun, moon
 
 
-def light_at(environment: EnvironmentOptions, t_s: float = 0.0) -> Light:
-    """The light ``t_s`` seconds into a run under ``environment``."""
+def wind_of(environment: EnvironmentOptions, sea: SeaState | None) -> tuple[float, float, float]:
+    """The wind (unit vector it blows towards, E frame x and y, and speed at 10 m in m/s): the environment's, else
+    from the first wave system of ``sea`` (none without one)."""
+    first = next(iter(sea.systems), None) if sea is not None else None
+    speed, towards = environment.wind_speed_m_s, None
+    if environment.wind_from_deg is not None:
+        towards = wave_beta_from_compass(environment.wind_from_deg)  # blowing from a bearing, as waves come
+    if first is not None:
+        towards = first.beta if towards is None else towards
+        if speed is None:
+            spectrum = getattr(first, "spectrum", None)
+            u10 = getattr(spectrum, "u10", None)
+            period = spectrum.tp if spectrum is not None else first.period
+            speed = u10 if u10 is not None else PIERSON_MOSKOWITZ * G * period / (2.0 * math.pi) / U19_5_TO_U10
+    if speed is None or towards is None:
+        return (0.0, 0.0, 0.0)
+    return (math.cos(towards), math.sin(towards), float(speed))
+
+
+def light_at(environment: EnvironmentOptions, t_s: float = 0.0, sea: SeaState | None = None) -> Light:
+    """The light ``t_s`` seconds into a run under ``environment``, the wind from ``sea`` where it gives none."""
     sun, moon = bodies_at(environment, t_s)
     sun_elevation = math.degrees(math.asin(sun[2]))
     moon_elevation = math.degrees(math.asin(moon[2]))
@@ -133,7 +162,8 @@ def light_at(environment: EnvironmentOptions, t_s: float = 0.0) -> Light:
     return Light(sun=sun, moon=moon, sun_colour=direct_colour(sun_elevation),
                  moon_colour=direct_colour(moon_elevation, 2.0 * FULL_MOON * lit),
                  sky=clouds * (sky_brightness(sun_elevation) + moon_sky),
-                 cloud=environment.cloud_cover_oktas / 8.0, visibility_m=environment.visibility_m)
+                 cloud=environment.cloud_cover_oktas / 8.0, visibility_m=environment.visibility_m,
+                 wind=wind_of(environment, sea))
 
 
 def changed(environment: EnvironmentOptions, **keys: float) -> EnvironmentOptions:

@@ -109,7 +109,8 @@ class Renderer:
     def view(self, eye: Eye, size: tuple[int, int]) -> View:
         """The view of ``eye`` into a target of ``size`` (w, h) px, in the light of the simulation's time."""
         width, height = size
-        return View(eye, eye.view_projection(width / height), light_at(self.sim.environment, self.sim.time))
+        return View(eye, eye.view_projection(width / height),
+                    light_at(self.sim.environment, self.sim.time, self.sim.sea))
 
     def draw(self, eye: Eye, size: tuple[int, int]) -> None:
         """Draw the view of ``eye`` into the bound framebuffer of ``size`` (w, h) px."""

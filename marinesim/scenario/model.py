@@ -50,7 +50,7 @@ MIN_VISIBILITY_M, MAX_VISIBILITY_M = 50.0, 200_000.0
 NAV_LIGHTS = ("underway", "anchored", "none")
 """The navigation lights a vessel shows (COLREG): making way (masthead lights, sidelights, sternlight), at anchor
 (all-round white forward and aft), or none drawn."""
-WEATHER = ("visibility_m", "cloud_cover_oktas")
+WEATHER = ("visibility_m", "cloud_cover_oktas", "wind_speed_m_s")
 """The ``[environment]`` keys an event or the instructor may change during a run."""
 
 
@@ -312,6 +312,11 @@ class EnvironmentOptions(Section):
         30.0, description="height of the sun above the horizon (without time_utc): below -18 it is night")
     cloud_cover_oktas: Annotated[float, Quantity("oktas", ge=0.0, le=8.0)] = Field(
         0.0, description="eighths of the sky covered by cloud (8: overcast, no direct sun)")
+    wind_speed_m_s: Annotated[float | None, Quantity("m/s", ge=0.0, le=MAX_U10_M_S)] = Field(
+        None, description="wind at 10 m, which lays foam in streaks from Beaufort 7 (13.9 m/s); absent: the first "
+                          "wave system's u10_m_s, else the wind of a fully developed sea of its Tp")
+    wind_from_deg: Annotated[float | None, Quantity("deg", ge=0.0, le=360.0, what="a compass bearing")] = Field(
+        None, description="where the wind comes from; absent: the first wave system's from_deg")
     visibility_m: Annotated[float, Quantity("m", ge=MIN_VISIBILITY_M, le=MAX_VISIBILITY_M)] = Field(
         40_000.0, description="meteorological visibility: where a dark object's contrast against the horizon "
                               "falls to 0.05 (Koschmieder; 1 km is fog, 10 km moderate, 40 km very good)")
@@ -378,6 +383,8 @@ class EventOptions(Section):
         None, description="new visibility (fog rolling in, clearing)")
     cloud_cover_oktas: Annotated[float | None, Quantity("oktas", ge=0.0, le=8.0)] = Field(
         None, description="new cloud cover")
+    wind_speed_m_s: Annotated[float | None, Quantity("m/s", ge=0.0, le=MAX_U10_M_S)] = Field(
+        None, description="new wind speed (the foam streaks; the sea changes only by sea)")
 
     @model_validator(mode="after")
     def _one_trigger_and_an_action(self) -> EventOptions:
@@ -390,7 +397,7 @@ class EventOptions(Section):
                 raise _refuse("ramp_s", "a sea change blends in over ramp_s > 0 s, got 0")
         if all(getattr(self, key) is None for key in ("sea", "speed_kn", "heading_deg", "message", *WEATHER)):
             raise _refuse("message", "an event needs something to do: sea, speed_kn, heading_deg, "
-                                     "visibility_m, cloud_cover_oktas or message")
+                                     "visibility_m, cloud_cover_oktas, wind_speed_m_s or message")
         return self
 
 

@@ -69,7 +69,8 @@ class OceanLayer:
         layers bound to consecutive texture units from 0."""
         centre = np.floor(view.eye.position[:2] / (4.0 * INNER_SPACING_M)) * (4.0 * INNER_SPACING_M)
         values = view.shared() | {"u_view_projection": mat4(view.view_projection), "u_centre": tuple(centre),
-                                  "u_track": (pose.x, pose.y, pose.heading), "u_foam_on": float(self.foam_on)}
+                                  "u_track": (pose.x, pose.y, pose.heading), "u_foam_on": float(self.foam_on),
+                                  "u_wind": view.light.wind}
         unit = 0
         for layer in sampled:
             values |= layer.bind(unit)
