@@ -92,3 +92,37 @@ def cloud_share(ctx, oktas: float) -> float:
 def test_the_clouds_cover_the_share_of_the_sky_the_oktas_say(gl_context, oktas):
     """An observer reports cover in eighths of the sky: the drawn clouds cover oktas / 8 of it within an eighth."""
     assert cloud_share(gl_context, oktas) == pytest.approx(oktas / 8.0, abs=0.1)
+
+
+FINITE_PROGRAM = """#version 430
+{sky}
+out vec4 f_colour;
+void main() {{
+    // column i: azimuth 2 pi i / 720 (0.5 deg steps, the sun's own azimuth and its opposite among them); row j:
+    // elevation from -10 to 80 deg
+    float azimuth = 6.2831853 * floor(gl_FragCoord.x) / 720.0;
+    float elevation = radians(mix(-10.0, 80.0, gl_FragCoord.y / 64.0));
+    vec3 d = vec3(cos(elevation) * cos(azimuth), cos(elevation) * sin(azimuth), sin(elevation));
+    f_colour = vec4(sky_colour(d), 1.0);
+}}
+"""
+
+
+@pytest.mark.parametrize("air", [{}, {"sun_elevation_deg": -3.0, "sun_azimuth_deg": 270.0},
+                                 {"sun_elevation_deg": 12.0, "sun_azimuth_deg": 240.0, "cloud_cover_oktas": 7.0},
+                                 {"sun_elevation_deg": -40.0, "cloud_cover_oktas": 8.0}])
+def test_the_sky_is_finite_and_positive_in_every_direction(gl_context, air):
+    """Every direction, straight away from the sun included (where a rounding below -1 in a dot product once made
+    pow() of a negative number: black pixels in a line across the picture), has a finite, positive colour."""
+    program = gl_context.program(vertex_shader=VERTEX,
+                                 fragment_shader=FINITE_PROGRAM.format(sky=(SHADER_DIR / "sky.glsl").read_text()))
+    for name, value in light_at(EnvironmentOptions(**air)).uniforms().items():
+        if name in program:
+            program[name].value = value
+    target = gl_context.simple_framebuffer((720, 64), components=4, dtype="f4")
+    target.use()
+    gl_context.vertex_array(program, []).render(vertices=3)
+    colour = np.frombuffer(target.read(components=4, dtype="f4"), np.float32).reshape(64, 720, 4)[..., :3]
+    program.release()
+    target.release()
+    assert np.isfinite(colour).all() and (colour > 0.0).all()

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from datetime import timedelta, timezone
 
 import moderngl
 import numpy as np
@@ -19,6 +20,7 @@ from marinesim.gl import is_software
 from marinesim.render import CAMERAS
 from marinesim.render.camera import BridgeCamera, FreeCamera, OrbitCamera
 from marinesim.render.clock import FrameClock
+from marinesim.render.daylight import light_at
 from marinesim.render.hud import ALARM_COLOR, LEVEL_COLORS, Banner, Hud, Slider, StripHistory, font_px_for
 from marinesim.render.renderer import Renderer, RenderOptions
 from marinesim.scenario import Scenario
@@ -169,10 +171,27 @@ class Scene:
             lines.append(f"surge {m[0]:+6.2f}  sway {m[1]:+6.2f}  heave {m[2]:+6.2f} m")
             lines.append(f"roll {math.degrees(m[3]):+6.2f}  pitch {math.degrees(m[4]):+6.2f}  "
                          f"yaw {math.degrees(m[5]):+6.2f} deg")
+        if self.sim.vessel is not None and self.renderer.mesh is None:
+            lines.append("vessel not drawn: the scenario names no hull or visual_mesh (its motions are computed)")
+        lines.append(self.weather_line())
         line = f"camera {self.camera_name}"
+        if self.camera_name == "bridge" and self.cameras["bridge"].binoculars:
+            line += "   binoculars 7x"
         if self.clock is not None:
             line += f"   {self.clock.line()}"
         return lines + [line] + self.status
+
+    def weather_line(self) -> str:
+        """The light and the air now, as the instructor sets them: the clock (UTC) where the scenario has one, the
+        sun's elevation, visibility, cloud and wind."""
+        air = self.sim.environment
+        light = light_at(air, self.sim.time, self.sim.sea)
+        clock = ""
+        if air.time_utc is not None:
+            clock = f"{(air.time_utc + timedelta(seconds=self.sim.time)).astimezone(timezone.utc):%H:%M} UTC   "
+        elevation = math.degrees(math.asin(light.sun[2]))
+        return (f"{clock}sun {elevation:+.0f} deg   visibility {air.visibility_m / 1000:.3g} km   "
+                f"cloud {air.cloud_cover_oktas:g}/8   wind {light.wind[2]:.0f} m/s")
 
     def release(self) -> None:
         self.sim.close()
