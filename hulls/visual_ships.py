@@ -434,6 +434,21 @@ def decks_with_windows(n: int, height: float = 2.8, band: float = 0.9, sill: flo
     return [t for _ in range(n) for t in ((sill, body), (band, WINDOW), (height - sill - band, body))]
 
 
+def wheelhouse_interior(front: float, aft: float, mullion_ys: Sequence[float], sill_half: float, floor: float,
+                        window: tuple[float, float], console_half: float | None, floor_half: float) -> list[Part]:
+    """What the conning position sees inside a wheelhouse whose front windows face forward at ``x = front``:
+    mullions at ``mullion_ys`` and the sill (``sill_half`` a side) over the window band ``window`` (heights above
+    ``floor``), a console ``console_half`` a side below the windows (None: none), and the floor back to ``aft``."""
+    frame, console, deck = (52, 56, 60), (70, 76, 82), (64, 68, 74)
+    low, high = floor + window[0], floor + window[1]
+    parts = [box((front - 0.35, y - 0.06, low), (front - 0.17, y + 0.06, high), frame) for y in mullion_ys]
+    parts.append(box((front - 0.3, -sill_half, low), (front - 0.17, sill_half, low + 0.12), frame))
+    if console_half is not None:
+        parts.append(box((front - 1.9, -console_half, floor), (front - 0.6, console_half, floor + 1.1), console))
+    parts.append(box((aft, -floor_half, floor), (front - 0.1, floor_half, floor + 0.04), deck))
+    return parts
+
+
 # ----------------------------------------------------------------------------------------------- S175
 
 S175 = ShipForm(lpp=175.0, beam=25.4, draft=9.5, depth=15.4, midbody=(-6.0, 2.0), p_fwd=(1.4, 1.75, 2.5),
@@ -474,13 +489,16 @@ def s175(reference: Sequence[float]) -> tuple[Part, dict[str, list[float]]]:
     parts.append(box((-84.0, -11.5, deck), (-62.5, 11.5, deck + 1.2), WHITE))  # casing and poop front
     parts.append(tiered(aft, front, -9.0, 9.0, deck, decks_with_windows(4, height=3.1), chamfer=1.5))
     bridge_floor = deck + 12.4
-    parts.append(tiered(front - 6.0, front, -9.5, 9.5, bridge_floor, [(1.0, WHITE), (1.5, WINDOW), (0.6, WHITE)],
+    glass = front + 1.0  # the wheelhouse front overhangs the house by a metre: the conning position 2 m behind it
+    parts.append(tiered(front - 6.0, glass, -9.5, 9.5, bridge_floor, [(1.0, WHITE), (1.5, WINDOW), (0.6, WHITE)],
                         chamfer=1.0))
     parts.append(box((aft, -9.0, bridge_floor), (front - 6.0, 9.0, bridge_floor + 2.9), WHITE))  # chart room aft
-    parts.append(box((front - 6.3, -9.8, bridge_floor + 3.1), (front + 0.3, 9.8, bridge_floor + 3.4), WHITE))  # visor
+    parts += wheelhouse_interior(glass, front - 5.9, np.arange(-7.8, 7.9, 1.2), 8.5, bridge_floor, (1.0, 2.5), 6.0,
+                                 9.4)
+    parts.append(box((front - 6.3, -9.8, bridge_floor + 3.1), (glass + 0.3, 9.8, bridge_floor + 3.4), WHITE))  # visor
     for sign in (1.0, -1.0):
         y0, y1 = sorted((sign * 9.5, sign * float(f.half_breadth(front - 1.0, deck)) + sign * 0.3))
-        parts.append(box((front - 2.6, y0, bridge_floor - 0.4), (front, y1, bridge_floor + 1.1), WHITE))  # wing
+        parts.append(box((front - 2.6, y0, bridge_floor - 0.4), (glass, y1, bridge_floor + 1.1), WHITE))  # wing
     # funnel: behind the accommodation, black top
     funnel = rounded_rectangle(-87.5, -80.0, -3.2, 3.2, 2.0)
     parts += [prism(funnel, deck, bridge_floor + 4.5, (196, 64, 40)), prism(funnel, bridge_floor + 4.5,
@@ -536,6 +554,8 @@ def supply(reference: Sequence[float]) -> tuple[Part, dict[str, list[float]]]:
     parts.append(tiered(aft, front, -8.6, 8.6, fc, tiers, chamfer=3.0))
     wheelhouse = [(0.9, WHITE), (1.7, WINDOW), (0.6, WHITE)]
     parts.append(tiered(aft + 3.0, front + 0.5, -8.0, 8.0, bridge_floor, wheelhouse, chamfer=2.0))
+    parts += wheelhouse_interior(front + 0.5, aft + 3.1, np.arange(-5.4, 5.5, 1.2), 6.0, bridge_floor, (0.9, 2.6), None,
+                                 7.9)
     parts.append(box((aft + 2.7, -8.3, bridge_floor + 3.2), (front + 1.0, 8.3, bridge_floor + 3.5), WHITE))
     for sign in (1.0, -1.0):
         y0, y1 = sorted((sign * 8.0, sign * 9.7))
@@ -576,7 +596,7 @@ def supply(reference: Sequence[float]) -> tuple[Part, dict[str, list[float]]]:
               cylinder(tip + (0, 0.6, -0.5), tip + (0, 0.6, -6.5), 0.05, BLACK, 6),  # the hoist wire, inboard
               box(tip + (-0.4, 0.3, -7.3), tip + (0.4, 0.9, -6.5), CRANE_YELLOW)]  # of the tip, and the hook block
     eye = bridge_floor + 1.7
-    points = {"bridge": [front - 0.2, 0.0, eye], "crane_tip": list(tip), "aft_deck": [f.transom_x + 1.5, 0.0, deck],
+    points = {"bridge": [front - 1.5, 0.0, eye], "crane_tip": list(tip), "aft_deck": [f.transom_x + 1.5, 0.0, deck],
               "manifold_stbd": [2.0, -8.6, deck + 1.0], "forecastle": [38.0, 0.0, fc]}
     return join([closed(p, "part") for p in parts]), points
 
@@ -691,13 +711,8 @@ def tanker(reference: Sequence[float]) -> tuple[Part, dict[str, list[float]]]:
     parts.append(tiered(aft + 4.0, front + 0.4, -12.5, 12.5, bridge_floor, [(1.0, WHITE), (2.0, WINDOW), (0.5, WHITE)],
                         chamfer=1.5))
     parts.append(box((aft + 3.7, -13.0, bridge_floor + 3.5), (front + 0.9, 13.0, bridge_floor + 3.8), WHITE))  # visor
-    # inside the wheelhouse, seen from the conning position: mullions in the front windows, the console below them
-    for y in np.arange(-10.5, 11.0, 2.1):
-        parts.append(box((front - 0.35, y - 0.06, bridge_floor + 1.0), (front - 0.17, y + 0.06, bridge_floor + 3.0),
-                         (52, 56, 60)))
-    parts.append(box((front - 0.3, -12.0, bridge_floor + 1.0), (front - 0.17, 12.0, bridge_floor + 1.12), (52, 56, 60)))
-    parts.append(box((front - 1.9, -7.0, bridge_floor), (front - 0.6, 7.0, bridge_floor + 1.1), (70, 76, 82)))
-    parts.append(box((aft + 4.3, -12.2, bridge_floor), (front - 0.1, 12.2, bridge_floor + 0.04), (64, 68, 74)))  # floor
+    parts += wheelhouse_interior(front, aft + 4.3, np.arange(-10.5, 11.0, 2.1), 12.0, bridge_floor, (1.0, 3.0), 7.0,
+                                 12.2)
     for sign in (1.0, -1.0):
         y0, y1 = sorted((sign * 12.5, sign * (f.beam / 2 + 0.4)))
         parts.append(box((front - 3.0, y0, bridge_floor - 0.4), (front, y1, bridge_floor + 1.2), WHITE))  # wing
