@@ -14,6 +14,7 @@ import pytest
 from conftest import ROOT, offscreen
 from marinesim.cli import main
 from marinesim.scenario import load_scenario
+from marinesim.scenario.model import EnvironmentOptions
 from marinesim.session.exercise import Exercise
 from marinesim.session.timeline import Simulation
 
@@ -54,7 +55,10 @@ def test_every_shipped_scenario_shows_its_vessel(path):
     with offscreen(scenario) as view:
         view.go_to(0.0)
         with_vessel = view.frame(hud=False).astype(int)
+        own, view.scene.sim.environment = view.scene.sim.environment, EnvironmentOptions()
+        in_daylight = view.frame(hud=False).astype(int)  # the paint judged in clear daylight, not the scenario's haze
         view.scene.renderer.vessel.shown = False
+        view.scene.sim.environment = own
         without = view.frame(hud=False).astype(int)
     vessel = np.abs(with_vessel - without).sum(axis=2) > 30
     height, width = vessel.shape
@@ -62,7 +66,7 @@ def test_every_shipped_scenario_shows_its_vessel(path):
     assert vessel.mean() > 0.005, f"the vessel covers {vessel.mean():.2%} of the frame"
     assert abs(cols.mean() / width - 0.5) < 0.15 and abs(rows.mean() / height - 0.5) < 0.2, "the vessel is off centre"
     assert scenario.vessel.visual is not None, "a shipped scenario draws a ship, not its hydrodynamic hull"
-    pixels = with_vessel[vessel]
+    pixels = in_daylight[vessel]
     chroma = pixels.max(axis=1) - pixels.min(axis=1)
     assert np.median(chroma) > 15, "the visual mesh's paint is missing (a grey hull reads about 3)"
 
