@@ -1,6 +1,6 @@
-"""The picture gallery: every shipped scenario from the orbit camera and from its bridge, as headless marinesim
-draws them (960x540 JPEG of quality 85, the HUD on: a tenth of a PNG of the sea's detail), and
-docs/gallery/README.md listing them, so that the next change to the
+"""The picture gallery: every shipped scenario from the orbit camera and from its bridge, then the same ships at
+night, at dusk, in fog and in a gale, as headless marinesim draws them (960x540 JPEG of quality 85, the HUD on: a
+tenth of a PNG of the sea's detail), and docs/gallery/README.md listing them, so that the next change to the
 picture can be compared by eye.
 
 Run from the repository root: python docs/gallery/make_gallery.py
@@ -9,18 +9,82 @@ The frames are reproducible (headless renders use numpy.fft for the sea: the sam
 
 from __future__ import annotations
 
+import dataclasses
+import math
+from datetime import datetime, timezone
 from pathlib import Path
 
 from PIL import Image
 
+from marinesim.render.daylight import light_at
 from marinesim.render.offscreen import Offscreen
 from marinesim.render.renderer import RenderOptions
-from marinesim.scenario import load_scenario
+from marinesim.scenario import Scenario, load_scenario
+from marinesim.sea.seastate import scaled_sea
 
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parents[1]
 AT_S = {"heavy_weather_transit": 300.0, "helideck_landing": 920.0}
 """When to take the picture (s): an exercise's moment to show, else a minute in."""
+NORTH_SEA = {"latitude_deg": 60.5, "longitude_deg": 2.0}
+
+
+@dataclasses.dataclass(frozen=True)
+class Shot:
+    """A picture beyond the shipped ones: ``scenario`` (under configs/) at ``at_s`` under other ``[environment]``
+    keys and its sea's heights times ``hs_factor``, from ``camera`` (orbit: at ``azimuth_deg`` from astern and
+    ``elevation_deg``)."""
+
+    name: str
+    scenario: str
+    what: str
+    camera: str = "orbit"
+    at_s: float = 60.0
+    air: dict = dataclasses.field(default_factory=dict)
+    azimuth_deg: float | None = None
+    elevation_deg: float | None = None
+    hs_factor: float = 1.0
+
+
+SHOTS = (
+    Shot("night_tanker_port_bow", "default.toml", "The tanker at night from her port bow: masthead lights, red "
+         "sidelight, a waxing moon.", air={"time_utc": datetime(2026, 11, 22, 21, 0, tzinfo=timezone.utc),
+                                           **NORTH_SEA}, azimuth_deg=200.0, elevation_deg=6.0),
+    Shot("night_tanker_astern", "default.toml", "The same night from astern: her sternlight only.",
+         air={"time_utc": datetime(2026, 11, 22, 21, 0, tzinfo=timezone.utc), **NORTH_SEA}, azimuth_deg=10.0,
+         elevation_deg=6.0),
+    Shot("dusk_loading", "training/offshore_loading.toml", "Offshore loading at dusk, broken cloud.",
+         air={"time_utc": datetime(2026, 11, 25, 15, 10, tzinfo=timezone.utc), "cloud_cover_oktas": 5.0,
+              **NORTH_SEA}, azimuth_deg=140.0, elevation_deg=10.0),
+    Shot("fog_bridge", "default.toml", "Fog from the tanker's bridge: visibility 800 m, overcast; her lights are "
+         "lit (restricted visibility).", camera="bridge", air={"visibility_m": 800.0, "cloud_cover_oktas": 8.0}),
+    Shot("gale_transit", "training/heavy_weather_transit.toml", "The transit's gale at 900 s: Hs 6.5 m, "
+         "Beaufort 8 streaks, 7 oktas, 4 km visibility.", at_s=900.0),
+    Shot("storm_s175", "s175_heavy_weather.toml", "The S175 in a storm: the sea doubled, 24 m/s of wind (Beaufort "
+         "9), overcast.", air={"wind_speed_m_s": 24.0, "cloud_cover_oktas": 8.0, "visibility_m": 5000.0},
+         elevation_deg=12.0, hs_factor=2.0),
+)
+
+
+def save(scenario: Scenario, out: Path, camera: str, at_s: float, azimuth_deg: float | None = None,
+         elevation_deg: float | None = None) -> None:
+    with Offscreen(scenario, (960, 540), camera, "auto", RenderOptions(reproducible=True)) as view:
+        orbit = view.scene.cameras["orbit"]
+        if azimuth_deg is not None:
+            orbit.azimuth_deg = azimuth_deg
+        if elevation_deg is not None:
+            orbit.elevation_deg = elevation_deg
+        view.go_to(at_s)
+        Image.fromarray(view.frame()).save(out, format="JPEG", quality=85)
+    print(f"wrote {out.relative_to(ROOT)}")
+
+
+def light_words(scenario: Scenario, at_s: float) -> str:
+    air, light = scenario.environment, light_at(scenario.environment, at_s, scenario.sea)
+    when = f"{air.time_utc:%Y-%m-%d %H:%M} UTC at {air.latitude_deg:g} N {air.longitude_deg:g} E; " if air.time_utc \
+        else ""
+    return (f"{when}sun {math.degrees(math.asin(light.sun[2])):+.0f} deg high; cloud {air.cloud_cover_oktas:g} oktas; "
+            f"visibility {air.visibility_m / 1000:g} km; wind {light.wind[2]:.0f} m/s.")
 
 
 def main() -> None:
@@ -31,18 +95,26 @@ def main() -> None:
         shots = []
         for camera in ("orbit", "bridge"):
             out = HERE / f"{path.stem}_{camera}.jpg"
-            with Offscreen(scenario, (960, 540), camera, "auto", RenderOptions(reproducible=True)) as view:
-                view.go_to(at)
-                Image.fromarray(view.frame()).save(out, format="JPEG", quality=85)
+            save(scenario, out, camera, at)
             shots.append(f"![{path.stem}, {camera}]({out.name})")
-            print(f"wrote {out.relative_to(ROOT)}")
-        air = scenario.environment
-        rows.append(f"## {path.relative_to(ROOT)} at {at:g} s\n\nSun {air.sun_azimuth_deg:g} deg, "
-                    f"{air.sun_elevation_deg:g} deg high; visibility {air.visibility_m / 1000:g} km.\n\n"
+        rows.append(f"## {path.relative_to(ROOT)} at {at:g} s\n\n{light_words(scenario, at)}\n\n"
                     + "\n".join(shots) + "\n")
+    rows.append("# Night, dusk, fog and storm\n")
+    for shot in SHOTS:
+        scenario = load_scenario(ROOT / "configs" / shot.scenario)
+        sea = scaled_sea(scenario.sea, shot.hs_factor, 1.0, 0.0)
+        air = scenario.environment.model_dump(exclude_unset=True)
+        if "time_utc" in shot.air:
+            air = {k: v for k, v in air.items() if not k.startswith("sun_")}
+        environment = type(scenario.environment).model_validate(air | shot.air)
+        scenario = dataclasses.replace(scenario, sea=sea, environment=environment)
+        out = HERE / f"{shot.name}.jpg"
+        save(scenario, out, shot.camera, shot.at_s, shot.azimuth_deg, shot.elevation_deg)
+        rows.append(f"## {shot.name}: configs/{shot.scenario} at {shot.at_s:g} s\n\n{shot.what} "
+                    f"{light_words(scenario, shot.at_s)}\n\n![{shot.name}]({out.name})\n")
     (HERE / "README.md").write_text("# Picture gallery\n\nEvery shipped scenario from the orbit camera and from its "
-                                    "bridge, as `marinesim render --screenshot` draws them headless (960x540, "
-                                    "here on Mesa's llvmpipe). Made by "
+                                    "bridge, then night, dusk, fog and storm, as `marinesim render --screenshot` "
+                                    "draws them headless (960x540, here on Mesa's llvmpipe). Made by "
                                     "`python docs/gallery/make_gallery.py`.\n\n" + "\n".join(rows))
 
 
