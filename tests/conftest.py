@@ -197,3 +197,22 @@ def outcome(read: Callable[[Path], object], valid: type, path: Path) -> None:
         assert "\n" not in str(error) and str(error), repr(str(error))
     else:
         assert isinstance(result, valid)
+
+
+def ray_hits(tri: np.ndarray, origin, direction) -> tuple[np.ndarray, np.ndarray]:
+    """Distances along the ray and the faces of the triangles ``tri`` (t, 3, 3) it crosses, nearest first
+    (Moller-Trumbore)."""
+    o, d = np.asarray(origin, float), np.asarray(direction, float) / np.linalg.norm(direction)
+    e1, e2 = tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0]
+    p = np.cross(d, e2)
+    det = np.einsum("ij,ij->i", e1, p)
+    ok = np.abs(det) > 1e-12
+    inv = np.where(ok, 1.0 / np.where(ok, det, 1.0), 0.0)
+    s = o - tri[:, 0]
+    u = np.einsum("ij,ij->i", s, p) * inv
+    q = np.cross(s, e1)
+    v = (q @ d) * inv
+    t = np.einsum("ij,ij->i", e2, q) * inv
+    found = ok & (u >= 0) & (v >= 0) & (u + v <= 1) & (t > 1e-6)
+    order = np.argsort(t[found])
+    return t[found][order], np.flatnonzero(found)[order]

@@ -15,7 +15,7 @@ import functools
 import numpy as np
 import pytest
 
-from conftest import ROOT
+from conftest import ROOT, ray_hits
 from marinesim.hull import load_visual_mesh
 from marinesim.vessel import read_rao
 
@@ -56,22 +56,8 @@ def waterline(name: str, z: float) -> np.ndarray:
 
 
 def hits(name: str, origin, direction) -> tuple[np.ndarray, np.ndarray]:
-    """Distances along the ray and the faces it crosses, nearest first (Moller-Trumbore)."""
-    tri = triangles(name)
-    o, d = np.asarray(origin, float), np.asarray(direction, float) / np.linalg.norm(direction)
-    e1, e2 = tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0]
-    p = np.cross(d, e2)
-    det = np.einsum("ij,ij->i", e1, p)
-    ok = np.abs(det) > 1e-12
-    inv = np.where(ok, 1.0 / np.where(ok, det, 1.0), 0.0)
-    s = o - tri[:, 0]
-    u = np.einsum("ij,ij->i", s, p) * inv
-    q = np.cross(s, e1)
-    v = (q @ d) * inv
-    t = np.einsum("ij,ij->i", e2, q) * inv
-    found = ok & (u >= 0) & (v >= 0) & (u + v <= 1) & (t > 1e-6)
-    order = np.argsort(t[found])
-    return t[found][order], np.flatnonzero(found)[order]
+    """Distances along the ray and the faces of ship ``name`` it crosses, nearest first."""
+    return ray_hits(triangles(name), origin, direction)
 
 
 def first_hit(name: str, origin, direction) -> tuple[float, int]:

@@ -2,15 +2,19 @@
 
 A hull file that stops at the waterline (a WAMIT ``.gdf`` holds only the wetted surface) gets
 topsides: each of its waterline loops (:func:`~marinesim.hull.waterplane.waterline_loops`; two for
-a catamaran) extruded up by the freeboard and closed with a deck. A point on
-board above the deck (the bridge) gets a deckhouse around it. Colours: anti-fouling red below the
-waterline, dark topsides, a deck, a white deckhouse. Faces are wound counter-clockwise seen from
-outside, so back-face culling hides the deckhouse from an eye inside it (the bridge camera).
+a catamaran) extruded up by the freeboard, closed with a deck and edged with a bulwark. Paint:
+anti-fouling red below the boot-top, the black boot-top band about the waterline, the scenario's
+topsides colour above, a deck. A point on board above the deck (the bridge) gets a ship around it:
+the accommodation in decks with window bands, the wheelhouse with the eye in its window band and its
+wings out to the ship's sides, a funnel abaft it, a mast on its roof and a foremast; hatch covers on
+the deck forward of it for a ``hatches`` deck. Faces are wound counter-clockwise seen from outside,
+so back-face culling hides the wheelhouse from an eye inside it (the bridge camera).
 A scenario's visual mesh is drawn instead when it has one, in its own colours or these.
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -19,9 +23,19 @@ from marinesim.hull import Hull, VisualMesh
 from marinesim.hull.waterplane import waterline_loops
 
 BOTTOM = (0.45, 0.09, 0.07)
+BOOT_TOP = (0.05, 0.05, 0.06)
 TOPSIDES = (0.10, 0.12, 0.16)
 DECK = (0.33, 0.30, 0.26)
 HOUSE = (0.86, 0.86, 0.84)
+WINDOW = (0.10, 0.16, 0.22)
+FUNNEL = (0.62, 0.20, 0.12)
+BLACK = (0.04, 0.04, 0.04)
+MAST = (0.80, 0.80, 0.78)
+HATCH = (0.30, 0.34, 0.38)
+BOOT_TOP_M = (-0.5, 0.6)
+"""The boot-top band about the still waterline (m): between the bottom's paint and the topsides'."""
+DECK_HEIGHT_M = 2.8
+"""The height of one deck of the accommodation (m); each has a window band 0.9 m high, 1.1 m above its floor."""
 OPEN_TOP_BELOW_M = 0.05
 """A hull whose highest point is this close to the waterline is taken as open at the top."""
 
@@ -43,10 +57,11 @@ class VesselMesh:
         return _box_corners(self.positions.min(axis=0), self.positions.max(axis=0))
 
 
-def vessel_mesh(hull: Hull, freeboard_m: float | None = None, house_at: tuple[float, float, float] | None = None
-                ) -> VesselMesh:
-    """The drawable vessel for ``hull``; ``freeboard_m`` (default 0.6 x draft) for open hulls,
-    a deckhouse enclosing ``house_at`` (body frame, m) when it lies above the deck."""
+def vessel_mesh(hull: Hull, freeboard_m: float | None = None, house_at: tuple[float, float, float] | None = None,
+                topsides: tuple[float, float, float] = TOPSIDES, deck_layout: str = "flat") -> VesselMesh:
+    """The drawable vessel for ``hull``; ``freeboard_m`` (default 0.6 x draft) for open hulls; a ship's
+    superstructure around ``house_at`` (the bridge, body frame, m) when it lies above the deck; ``topsides`` the
+    hull's colour above the boot-top; ``deck_layout`` ``flat`` or ``hatches``."""
     v, f = np.asarray(hull.vertices, float), np.asarray(hull.faces)
     triangles = [v[f]]
     draft = -float(v[:, 2].min())
@@ -55,16 +70,61 @@ def vessel_mesh(hull: Hull, freeboard_m: float | None = None, house_at: tuple[fl
         deck_z = freeboard_m if freeboard_m is not None else max(0.6 * draft, 1.0)
         for loop in waterline_loops(hull):
             outline = np.c_[loop, np.zeros(len(loop))]
-            triangles += [_walls(outline, deck_z), _fan(outline, deck_z)]
-    house = house_at is not None and house_at[2] > deck_z + 1.0
-    if house:
-        triangles.append(_house(v, house_at, deck_z))
+            bulwark = _walls(outline, deck_z + 1.2, bottom=deck_z)
+            triangles += [_walls(outline, deck_z), _fan(outline, deck_z), bulwark, bulwark[:, ::-1]]
     corners = np.concatenate(triangles)
     normals = _face_normals(corners)
-    colours = _hull_colours(corners, normals)
-    if house:
-        colours[-12:] = HOUSE  # the house's 12 triangles, appended last
+    colours = _hull_colours(corners, normals, topsides)
+    if house_at is not None and house_at[2] > deck_z + 1.0:
+        parts = _superstructure(v, house_at, deck_z, deck_layout)
+        extra = np.concatenate([t for t, _ in parts])
+        corners = np.concatenate([corners, extra])
+        normals = np.concatenate([normals, _face_normals(extra)])
+        painted = np.concatenate([np.broadcast_to(np.asarray(c, float), (len(t), 3)) for t, c in parts])
+        colours = np.concatenate([colours, np.repeat(painted[:, None, :], 3, axis=1)])
     return _flat(corners, normals, colours)
+
+
+def _superstructure(v: np.ndarray, bridge: tuple[float, float, float], deck_z: float, deck_layout: str
+                    ) -> list[tuple[np.ndarray, tuple[float, float, float]]]:
+    """(triangles, colour) of the accommodation, wheelhouse, wings, funnel, masts and hatch covers around the
+    bridge point of a hull with vertices ``v`` and its deck at ``deck_z`` (m)."""
+    length, beam = float(np.ptp(v[:, 0])), float(np.ptp(v[:, 1]))
+    bow, stern = float(v[:, 0].max()), float(v[:, 0].min())
+    x0, x1, half = bridge[0] - 0.06 * length, bridge[0] + 2.0, 0.35 * beam  # the eye 2 m behind the glass
+    floor = bridge[2] - 1.7                            # the eye 1.7 m over the wheelhouse floor
+    roof = floor + 3.2
+    parts = []
+    decks = max(int((floor - deck_z) // DECK_HEIGHT_M), 1)
+    height = (floor - deck_z) / decks
+    bands = [(1.1, HOUSE), (0.9, WINDOW), (height - 2.0, HOUSE)] if height > 2.2 else [(height, HOUSE)]
+    tiers = [band for _ in range(decks) for band in bands] + [(1.0, HOUSE), (1.5, WINDOW), (0.7, HOUSE)]
+    z = deck_z
+    for tier, colour in tiers:
+        parts.append((_box((x0, -half, z), (x1, half, z + tier)), colour))
+        z += tier
+    frame = (x1 - 0.35, x1 - 0.2)                      # mullions and sill inside the front windows
+    for y in np.r_[-np.arange(0.7, half - 0.4, 1.4), np.arange(0.7, half - 0.4, 1.4)]:
+        parts.append((_box((frame[0], y - 0.05, floor + 1.0), (frame[1], y + 0.05, floor + 2.5)), BLACK))
+    parts.append((_box((frame[0], -half + 0.3, floor + 1.0), (frame[1], half - 0.3, floor + 1.12)), BLACK))
+    for sign in (1.0, -1.0):
+        y = sorted((sign * half, sign * (0.5 * beam + 0.3)))
+        parts.append((_box((x1 - 3.0, y[0], floor - 0.3), (x1, y[1], floor + 1.1)), HOUSE))  # bridge wing
+    funnel = (x0 - max(0.04 * length, 3.0), x0 - 0.5)
+    parts += [(_box((funnel[0], -0.08 * beam, deck_z), (funnel[1], 0.08 * beam, roof + 3.0)), FUNNEL),
+              (_box((funnel[0], -0.08 * beam, roof + 3.0), (funnel[1], 0.08 * beam, roof + 4.5)), BLACK)]
+    mast_x = 0.5 * (x0 + x1)
+    parts += [(_box((mast_x - 0.2, -0.2, roof), (mast_x + 0.2, 0.2, roof + 6.0)), MAST),
+              (_box((mast_x - 0.15, -0.12 * beam, roof + 4.5), (mast_x + 0.15, 0.12 * beam, roof + 4.8)), MAST)]
+    fore = bow - 0.08 * length
+    if fore > x1 + 5.0:
+        parts.append((_box((fore - 0.25, -0.25, deck_z), (fore + 0.25, 0.25, deck_z + max(8.0, 0.5 * (roof - deck_z)))),
+                      MAST))
+    if deck_layout == "hatches":
+        start, end = (x1 + 3.0, bow - 0.12 * length) if bridge[0] < 0.0 else (stern + 0.1 * length, x0 - 8.0)
+        for a in np.arange(start, end - 10.0, 14.0):
+            parts.append((_box((a, -0.3 * beam, deck_z), (a + 12.0, 0.3 * beam, deck_z + 1.2)), HATCH))
+    return parts
 
 
 def visual_mesh(mesh: VisualMesh) -> VesselMesh:
@@ -82,11 +142,12 @@ def _face_normals(corners: np.ndarray) -> np.ndarray:
     return normals / np.maximum(np.linalg.norm(normals, axis=1, keepdims=True), 1e-12)
 
 
-def _hull_colours(corners: np.ndarray, normals: np.ndarray) -> np.ndarray:
-    """RGB per corner (t, 3, 3) of triangles (t, 3, 3): bottom below the waterline (z = 0), topsides above
-    it, deck where they face up."""
+def _hull_colours(corners: np.ndarray, normals: np.ndarray, topsides=TOPSIDES) -> np.ndarray:
+    """RGB per corner (t, 3, 3) of triangles (t, 3, 3): bottom below the boot-top, the boot-top about the
+    waterline (z = 0), ``topsides`` above it, deck where they face up."""
     centre_z = corners[:, :, 2].mean(axis=1)
-    colours = np.where((centre_z < 0.0)[:, None], BOTTOM, TOPSIDES)
+    colours = np.where((centre_z < BOOT_TOP_M[0])[:, None], BOTTOM, np.asarray(topsides, float))
+    colours[(centre_z >= BOOT_TOP_M[0]) & (centre_z < BOOT_TOP_M[1])] = BOOT_TOP
     colours[(normals[:, 2] > 0.7) & (centre_z > 0.0)] = DECK
     return np.repeat(colours[:, None, :], 3, axis=1)
 
@@ -96,11 +157,12 @@ def _flat(corners: np.ndarray, normals: np.ndarray, colours: np.ndarray) -> Vess
     return VesselMesh(corners.reshape(-1, 3), np.repeat(normals, 3, axis=0), colours.reshape(-1, 3))
 
 
-def _walls(outline: np.ndarray, top: float) -> np.ndarray:
-    """Quads from each waterline edge (counter-clockwise seen from above) up to ``top``, facing out."""
-    a, b = outline, np.roll(outline, -1, axis=0)
+def _walls(outline: np.ndarray, top: float, bottom: float = 0.0) -> np.ndarray:
+    """Quads from each edge of ``outline`` (counter-clockwise seen from above) from ``bottom`` up to ``top``,
+    facing out."""
+    a, b = outline.copy(), np.roll(outline, -1, axis=0)
     a_top, b_top = a.copy(), b.copy()
-    a[:, 2] = b[:, 2] = 0.0
+    a[:, 2] = b[:, 2] = bottom
     a_top[:, 2] = b_top[:, 2] = top
     return np.concatenate([np.stack([a, b, b_top], axis=1), np.stack([b_top, a_top, a], axis=1)])
 
@@ -116,12 +178,9 @@ def _fan(outline: np.ndarray, top: float) -> np.ndarray:
     return fan
 
 
-def _house(v: np.ndarray, point: tuple[float, float, float], deck_z: float) -> np.ndarray:
-    """A box from the deck to 1.5 m above ``point``: 6 % of the length aft of it to 1 m ahead, 70 % of the beam."""
-    length, beam = np.ptp(v[:, 0]), np.ptp(v[:, 1])
-    lo = np.array([point[0] - 0.06 * length, -0.35 * beam, deck_z])
-    hi = np.array([point[0] + 1.0, 0.35 * beam, point[2] + 1.5])
-    c = _box_corners(lo, hi)
+def _box(lo: Sequence[float], hi: Sequence[float]) -> np.ndarray:
+    """The 12 triangles (12, 3, 3) of the box ``lo..hi``, wound counter-clockwise seen from outside."""
+    c = _box_corners(np.asarray(lo, float), np.asarray(hi, float))
     quads = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (1, 5, 7, 3), (0, 2, 6, 4)]
     return np.array([[c[q[0]], c[q[1]], c[q[2]]] for q in quads] + [[c[q[0]], c[q[2]], c[q[3]]] for q in quads])
 

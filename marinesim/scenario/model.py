@@ -242,6 +242,13 @@ class VesselOptions(Section):
     wake_speeds_kn: Annotated[list[float], Quantity("kn", gt=0.0, le=MAX_SPEED_KN, what="speeds")] = Field(
         default_factory=list, description="more speeds to precompute the Kelvin wake for (needs hull)")
     visual_mesh: str | None = Field(None, description="mesh drawn instead of the hull (may be open)")
+    topsides_rgb: Annotated[list[int] | None, Quantity("", ge=0, le=255, what="colour levels"),
+                            Field(min_length=3, max_length=3)] = Field(
+        None, description="hull colour above the boot-top, [r, g, b] 0..255, when the ship is drawn from its hull "
+                          "(no visual_mesh)")
+    deck_layout: Literal["flat", "hatches"] = Field(
+        "flat", description="the deck of a ship drawn from its hull: flat (tanker, supply) or hatch covers (bulk, "
+                            "container)")
     nav_lights: Literal[NAV_LIGHTS] = Field("underway", description="the navigation lights it shows at night and in "
                                        "restricted visibility (COLREG): underway, anchored (all-round white) or none")
     visual_mesh_units: Literal[tuple(UNITS)] = Field("m", description="the visual mesh's length units")

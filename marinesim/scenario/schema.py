@@ -44,6 +44,8 @@ class Vessel:
     wake_speeds_m_s: tuple[float, ...] = ()  # the vessel's speed (if > 0) and the extra wake speeds
     visual: VisualMesh | None = None        # drawn instead of the hull, body frame
     nav_lights: str = "underway"            # one of NAV_LIGHTS
+    topsides_rgb: tuple[int, int, int] | None = None  # a ship drawn from its hull: its hull colour, 0..255
+    deck_layout: str = "flat"               # ... and its deck: "flat" or "hatches"
 
     @property
     def speed_kn(self) -> float:
@@ -213,8 +215,9 @@ def _vessel(path: Path, options: VesselOptions) -> Vessel:
     speeds_kn = ([options.speed_kn] if options.speed_kn > 0 else []) + options.wake_speeds_kn
     wake_speeds = tuple(sorted({v * KNOT for v in speeds_kn}))
     points = {name: (p[0], p[1], p[2]) for name, p in options.points.items()}
+    topsides = tuple(options.topsides_rgb) if options.topsides_rgb is not None else None
     return Vessel(rao_path, rao, hull_path, hull, speed, options.heading_deg, points, wake_speeds, visual,
-                  options.nav_lights)
+                  options.nav_lights, topsides, options.deck_layout)
 
 
 def _mesh(path: Path, options: VesselOptions, key: str, names: dict[str, str],

@@ -7,18 +7,20 @@ import moderngl
 from marinesim.pose import Pose
 from marinesim.render.layers.base import View, mat4
 from marinesim.render.program import Program
-from marinesim.render.vessel_mesh import VesselMesh, vessel_mesh, visual_mesh
+from marinesim.render.vessel_mesh import TOPSIDES, VesselMesh, vessel_mesh, visual_mesh
 from marinesim.session.timeline import Simulation
 
 
 def drawn_mesh(sim: Simulation) -> VesselMesh | None:
-    """The vessel as drawn (body frame, m): the scenario's visual mesh, else the hull with topsides and a
-    deckhouse around the bridge point; None without either."""
+    """The vessel as drawn (body frame, m): the scenario's visual mesh, else a ship made from the hull (topsides,
+    paint, the superstructure around the bridge point); None without either."""
     vessel = sim.vessel
     if vessel is not None and vessel.visual is not None:
         return visual_mesh(vessel.visual)
     if vessel is not None and vessel.hull is not None:
-        return vessel_mesh(vessel.hull, house_at=vessel.points.get("bridge"))
+        topsides = TOPSIDES if vessel.topsides_rgb is None else tuple(c / 255.0 for c in vessel.topsides_rgb)
+        return vessel_mesh(vessel.hull, house_at=vessel.points.get("bridge"), topsides=topsides,
+                           deck_layout=vessel.deck_layout)
     return None
 
 
