@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 from conftest import luminance, offscreen
-from marinesim.render.daylight import bodies_at, illuminated_fraction, light_at
+from marinesim.render.daylight import bodies_at, illuminated_fraction, light_at, visible_drops_m3
 from marinesim.render.nav_lights import (CUT_OFF_DEG, NAUTICAL_MILE_M, THRESHOLD_LUX, TRANSMISSIVITY, NavLight,
                                          illuminance_lux, lit, luminous_intensity_cd, place_lights, sector_weight)
 from marinesim.scenario.model import EnvironmentOptions
@@ -179,3 +179,27 @@ def test_an_overcast_sky_takes_the_suns_glitter_off_the_water(default):
             image = view.frame(hud=False)
         brightest[oktas] = float(np.percentile(luminance(image[image.shape[0] // 2:]), 99.5))
     assert brightest[8] < 0.6 * brightest[0], brightest
+
+
+def rain_streaks(scenario, rain_mm_h: float) -> np.ndarray:
+    """Pixels that rain of ``rain_mm_h`` changes in the tanker's bridge view, HUD off: a (rows, cols) bool mask."""
+    frames = []
+    for rate in (rain_mm_h, 0.0):
+        with offscreen(night_of(scenario, rain_mm_h=rate, cloud_cover_oktas=8.0, wind_speed_m_s=0.0),
+                       size=(480, 270)) as view:
+            view.scene.camera_name = "bridge"
+            view.go_to(10.0)
+            frames.append(view.frame(hud=False).astype(int))
+    return np.abs(frames[0] - frames[1]).max(axis=-1) > 8
+
+
+def test_rain_falls_in_upright_streaks_more_of_them_the_harder_it_rains(default):
+    """Light rain (2.5 mm/h) has a ninth of the visible drops (over 1 mm) of violent showers (50 mm/h) by Marshall
+    and Palmer's sizes: far fewer streaks; in calm air they fall upright: each streak runs down the picture several
+    times further than across it."""
+    assert visible_drops_m3(2.5) / visible_drops_m3(50.0) == pytest.approx(0.107, abs=0.005)
+    light, violent = rain_streaks(default, 2.5), rain_streaks(default, 50.0)
+    assert 0.0005 < light.mean() < 0.3 * violent.mean()
+    from test_render_offscreen import run_lengths
+
+    assert run_lengths(violent.T) > 3.0 * run_lengths(violent)

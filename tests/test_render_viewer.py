@@ -129,8 +129,10 @@ def walkthrough(tmp_path: Path) -> None:
         press(key.F, "f")                                 # the instructor: fog thickens, a cloud comes
         press(key.F, "f")
         press(key.K, "k")
+        press(key.O, "o")                                 # a rain shower
         press(key.T, "t")                                 # the default's sun is fixed: said, nothing changes
         assert sim.environment.visibility_m == clear.visibility_m / 4 and sim.environment.cloud_cover_oktas == 1
+        assert sim.environment.rain_mm_h == 2.5
         assert "only a time_utc moves it" in controls.message
 
         press(key.M, "m")                                 # the instructor types a message
@@ -155,7 +157,7 @@ def walkthrough(tmp_path: Path) -> None:
     keys = [e["key"] for e in lines if e["kind"] == "key"]
     assert keys[:4] == ["R", "R", "R", "BRACKETRIGHT"] and "RETURN" not in keys  # typing keys are the message's
     assert [e["action"] for e in lines if e["kind"] == "action"] == ["change", "change", "weather", "weather",
-                                                                      "weather", "message"]
+                                                                      "weather", "weather", "message"]
     again = replay_session(session)
     assert again.sim.environment == environment, "the replay's weather is not the session's"
     recording = sorted(tmp_path.glob(f"{scenario.name}_*.csv"))[-1]  # the second: from t = 3 s to the end

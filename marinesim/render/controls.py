@@ -32,6 +32,8 @@ HEADING_STEP_DEG = 5.0
 TIME_SCALES = (0.125, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0)
 VISIBILITY_STEP = 2.0  # each press: visibility / 2 (fog thickens) or x 2 (it lifts)
 TIME_STEP_H = 1.0
+RAIN_STEPS_MM_H = (0.0, 2.5, 10.0, 50.0)
+"""The instructor's O steps the rain through these: none, light, heavy, violent showers."""
 SEEK_STEP_S = 30.0
 """A replay's LEFT / RIGHT: back / forward this long (s)."""
 FREE_SPEED_M_S = 40.0
@@ -148,6 +150,7 @@ class Controls:
             "K": weather(cloud_cover_oktas=min(air.cloud_cover_oktas + 1.0, 8.0)),
             "J": weather(cloud_cover_oktas=max(air.cloud_cover_oktas - 1.0, 0.0)),
             "T": weather(hours=TIME_STEP_H), "Y": weather(hours=-TIME_STEP_H),
+            "O": weather(rain_mm_h=next((r for r in RAIN_STEPS_MM_H if r > air.rain_mm_h), 0.0)),
         }
         if sim.vessel is not None:
             actions |= {
@@ -257,6 +260,7 @@ HELP = [
     "UP / DOWN      speed +/- 1 kn       LEFT / RIGHT   heading -/+ 5 deg",
     "F / G          instructor: fog thickens / lifts (visibility / 2, x 2)",
     "J / K          instructor: cloud cover -/+ 1 okta    Y / T   clock -/+ 1 h (scenarios with time_utc)",
+    "O              instructor: rain none / light / heavy / violent showers",
     "R              start / stop recording the motions (CSV, as marinesim export)",
     "H              this help            ESC      quit",
 ]

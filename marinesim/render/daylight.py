@@ -10,6 +10,9 @@ from a few published laws, stated where they are used:
   and astronomical twilight, night), and the moon's light by its illuminated fraction ``(1 - cos psi) / 2``;
 - the global irradiance under ``N`` oktas of cloud, ``1 - 0.75 (N/8)^3.4`` of the clear sky's (Kasten &
   Czeplak 1980), which sets how grey an overcast day is;
+- rain by the Marshall & Palmer (1948) drop sizes, ``N(D) = N0 exp(-Lambda D)``, ``N0 = 8000 m^-3 mm^-1``,
+  ``Lambda = 4.1 R^-0.21 mm^-1`` for a rate ``R`` (mm/h): the drops large enough to be seen as streaks (over 1 mm)
+  number ``N0 / Lambda exp(-Lambda)`` per m^3, which sets how many streaks fall;
 - the wind, when the scenario does not give it, from the sea: the first wave system's U10, or the wind of a fully
   developed (Pierson-Moskowitz) sea of its peak period, ``U19.5 = 0.877 g / wp`` and ``U10 = U19.5 / 1.075``.
 
@@ -34,6 +37,8 @@ EXTINCTION = np.array([0.025, 0.060, 0.150])
 ADAPTED_SKY = ((-18.0, -2.6), (-12.0, -2.2), (-6.0, -1.4), (0.0, -0.5), (6.0, -0.12), (12.0, 0.0))
 """log10 of the sky's brightness against a clear day as the adapted eye sees it, at sun elevations (deg): the
 real illuminance falls by eight decades from noon to night, the eye's adaptation takes up most of them."""
+MARSHALL_PALMER_N0, MARSHALL_PALMER_SLOPE, VISIBLE_DROP_MM = 8000.0, 4.1, 1.0
+"""N0 (m^-3 mm^-1), the slope's factor (mm^-1) and the smallest drop seen as a streak (mm)."""
 PIERSON_MOSKOWITZ = 0.877
 """wp U19.5 / g of a fully developed sea (Pierson & Moskowitz 1964)."""
 U19_5_TO_U10 = 1.075
@@ -51,7 +56,7 @@ class Light:
     """What lights the scene at one instant. ``sun``/``moon``: unit vectors (E frame); ``sun_colour`` and
     ``moon_colour``: their direct light on a surface facing them (linear RGB, 0 below the horizon, before clouds);
     ``sky``: the sky's brightness against a clear day; ``cloud``: cloud cover (fraction 0..1); ``visibility_m``;
-    ``wind``: the unit vector it blows towards (E frame, x and y) and its speed at 10 m (m/s)."""
+    ``wind``: the unit vector it blows towards (E frame, x and y) and its speed at 10 m (m/s); ``rain_mm_h``."""
 
     sun: tuple[float, float, float]
     moon: tuple[float, float, float]
@@ -61,6 +66,7 @@ class Light:
     cloud: float
     visibility_m: float
     wind: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    rain_mm_h: float = 0.0
 
     @property
     def night(self) -> bool:
@@ -151,6 +157,14 @@ def wind_of(environment: EnvironmentOptions, sea: SeaState | None) -> tuple[floa
     return (math.cos(towards), math.sin(towards), float(speed))
 
 
+def visible_drops_m3(rain_mm_h: float) -> float:
+    """Drops over 1 mm across per m^3 of air in rain of ``rain_mm_h`` (Marshall & Palmer 1948); 0 without rain."""
+    if rain_mm_h <= 0.0:
+        return 0.0
+    slope = MARSHALL_PALMER_SLOPE * rain_mm_h ** -0.21  # Lambda, per mm
+    return MARSHALL_PALMER_N0 / slope * math.exp(-slope * VISIBLE_DROP_MM)
+
+
 def light_at(environment: EnvironmentOptions, t_s: float = 0.0, sea: SeaState | None = None) -> Light:
     """The light ``t_s`` seconds into a run under ``environment``, the wind from ``sea`` where it gives none."""
     sun, moon = bodies_at(environment, t_s)
@@ -163,7 +177,7 @@ def light_at(environment: EnvironmentOptions, t_s: float = 0.0, sea: SeaState | 
                  moon_colour=direct_colour(moon_elevation, 2.0 * FULL_MOON * lit),
                  sky=clouds * (sky_brightness(sun_elevation) + moon_sky),
                  cloud=environment.cloud_cover_oktas / 8.0, visibility_m=environment.visibility_m,
-                 wind=wind_of(environment, sea))
+                 wind=wind_of(environment, sea), rain_mm_h=environment.rain_mm_h)
 
 
 def changed(environment: EnvironmentOptions, **keys: float) -> EnvironmentOptions:

@@ -12,7 +12,8 @@ draws a camera's view into the bound framebuffer:
    (vessel frame) and the solver's field (Earth-fixed grid); shaded with Fresnel, sky reflection,
    subsurface tint, glitter, foam and haze; no water inside the hull;
 3. the vessel mesh (the scenario's visual mesh, else one made from the hull) in its 6-DOF pose;
-4. its navigation lights, by night and in restricted visibility (COLREG sectors and intensities).
+4. its navigation lights, by night and in restricted visibility (COLREG sectors and intensities);
+5. rain, as streaks of falling drops over it all.
 
 Everything is in the Earth frame (m); the shaders state their inputs' units.
 """
@@ -35,6 +36,7 @@ from marinesim.render.layers.foam import FoamLayer
 from marinesim.render.layers.hull_mask import HullMaskLayer
 from marinesim.render.layers.lights import NavLightsLayer
 from marinesim.render.layers.ocean import OceanLayer
+from marinesim.render.layers.rain import RainLayer
 from marinesim.render.layers.sky import SkyLayer
 from marinesim.render.layers.synthesis import CascadeSynthesis
 from marinesim.render.layers.solver_field import SolverFieldLayer
@@ -93,6 +95,7 @@ class Renderer:
         self.nav_lights = NavLightsLayer(ctx, place_lights(self.mesh.positions, vessel.nav_lights,
                                                            vessel.points.get("bridge"))
                                          if self.mesh is not None and options.vessel else [])
+        self.rain = RainLayer(ctx)
 
     def update(self) -> None:
         """Bring the GPU to the simulation's time: the cascades' fields, their mipmaps and the foam."""
@@ -122,10 +125,11 @@ class Renderer:
         self.ocean.draw(view, pose, (self.cascades, self.foam, self.wake, self.solver_field, self.hull_mask))
         self.vessel.draw(view, pose)
         self.nav_lights.draw(view, pose, size[1])
+        self.rain.draw(view, self.sim.time)
 
     def release(self) -> None:
         if self.synthesis is not None:
             self.synthesis.release()
         for layer in (self.sky, self.cascades, self.foam, self.wake, self.solver_field, self.hull_mask, self.ocean,
-                      self.vessel, self.nav_lights):
+                      self.vessel, self.nav_lights, self.rain):
             layer.release()

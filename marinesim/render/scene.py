@@ -190,8 +190,9 @@ class Scene:
         if air.time_utc is not None:
             clock = f"{(air.time_utc + timedelta(seconds=self.sim.time)).astimezone(timezone.utc):%H:%M} UTC   "
         elevation = math.degrees(math.asin(light.sun[2]))
+        rain = f"   rain {air.rain_mm_h:g} mm/h" if air.rain_mm_h > 0.0 else ""
         return (f"{clock}sun {elevation:+.0f} deg   visibility {air.visibility_m / 1000:.3g} km   "
-                f"cloud {air.cloud_cover_oktas:g}/8   wind {light.wind[2]:.0f} m/s")
+                f"cloud {air.cloud_cover_oktas:g}/8   wind {light.wind[2]:.0f} m/s{rain}")
 
     def release(self) -> None:
         self.sim.close()

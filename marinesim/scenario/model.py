@@ -45,12 +45,14 @@ MAX_EVENTS = 1000
 MAX_CRITERIA = 64
 MAX_MESSAGE = 500
 """The most characters in an event's message."""
+MAX_RAIN_MM_H = 200.0
+"""The heaviest rain drawn (mm/h): cloudburst."""
 MIN_VISIBILITY_M, MAX_VISIBILITY_M = 50.0, 200_000.0
 """The range of the meteorological visibility (m): thick fog to the clearest air."""
 NAV_LIGHTS = ("underway", "anchored", "none")
 """The navigation lights a vessel shows (COLREG): making way (masthead lights, sidelights, sternlight), at anchor
 (all-round white forward and aft), or none drawn."""
-WEATHER = ("visibility_m", "cloud_cover_oktas", "wind_speed_m_s")
+WEATHER = ("visibility_m", "cloud_cover_oktas", "wind_speed_m_s", "rain_mm_h")
 """The ``[environment]`` keys an event or the instructor may change during a run."""
 
 
@@ -324,6 +326,9 @@ class EnvironmentOptions(Section):
                           "wave system's u10_m_s, else the wind of a fully developed sea of its Tp")
     wind_from_deg: Annotated[float | None, Quantity("deg", ge=0.0, le=360.0, what="a compass bearing")] = Field(
         None, description="where the wind comes from; absent: the first wave system's from_deg")
+    rain_mm_h: Annotated[float, Quantity("mm/h", ge=0.0, le=MAX_RAIN_MM_H)] = Field(
+        0.0, description="rain rate drawn as falling streaks (2.5 light, 10 heavy, 50 violent showers); the "
+                         "visibility is its own key")
     visibility_m: Annotated[float, Quantity("m", ge=MIN_VISIBILITY_M, le=MAX_VISIBILITY_M)] = Field(
         40_000.0, description="meteorological visibility: where a dark object's contrast against the horizon "
                               "falls to 0.05 (Koschmieder; 1 km is fog, 10 km moderate, 40 km very good)")
@@ -392,6 +397,8 @@ class EventOptions(Section):
         None, description="new cloud cover")
     wind_speed_m_s: Annotated[float | None, Quantity("m/s", ge=0.0, le=MAX_U10_M_S)] = Field(
         None, description="new wind speed (the foam streaks; the sea changes only by sea)")
+    rain_mm_h: Annotated[float | None, Quantity("mm/h", ge=0.0, le=MAX_RAIN_MM_H)] = Field(
+        None, description="new rain rate (a squall; 0 ends it)")
 
     @model_validator(mode="after")
     def _one_trigger_and_an_action(self) -> EventOptions:
@@ -404,7 +411,7 @@ class EventOptions(Section):
                 raise _refuse("ramp_s", "a sea change blends in over ramp_s > 0 s, got 0")
         if all(getattr(self, key) is None for key in ("sea", "speed_kn", "heading_deg", "message", *WEATHER)):
             raise _refuse("message", "an event needs something to do: sea, speed_kn, heading_deg, "
-                                     "visibility_m, cloud_cover_oktas, wind_speed_m_s or message")
+                                     "visibility_m, cloud_cover_oktas, wind_speed_m_s, rain_mm_h or message")
         return self
 
 

@@ -82,7 +82,7 @@ class Event:
             parts.append(f"heading {self.heading_deg:g} deg")
         change = " ".join(parts) + (f" over {self.ramp_s:g} s" if parts else "")
         words = {"visibility_m": "visibility {:g} m", "cloud_cover_oktas": "cloud {:g} oktas",
-                 "wind_speed_m_s": "wind {:g} m/s"}
+                 "wind_speed_m_s": "wind {:g} m/s", "rain_mm_h": "rain {:g} mm/h"}
         weather = " ".join(words[key].format(value) for key, value in self.weather.items())
         change = "; ".join(p for p in (change, weather) if p)
         trigger = f"at {self.at_s:g} s" if self.at_s is not None else f"when {self.condition}"
