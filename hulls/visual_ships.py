@@ -760,20 +760,33 @@ def tanker(reference: Sequence[float]) -> tuple[Part, dict[str, list[float]]]:
 
 # ----------------------------------------------------------------------------------------------- main
 
-SHIPS = (("s175_visual.glb", RAO / "s175" / "input.re1", S175, s175),
-         ("supply_visual.glb", RAO / "supply" / "input.re1", SUPPLY, supply),
-         ("semisub_visual.glb", RAO / "semisub" / "semisub.4", None, semisub),
-         ("tanker_visual.glb", RAO / "tanker" / "tanker.4", TANKER, tanker))
-"""File, RAO file, hull form (None: the frame's z = 0 is the waterline, not the baseline), builder."""
+SHIPS = (("s175_visual.glb", RAO / "s175" / "input.re1", S175, s175, "s175_hull.stl"),
+         ("supply_visual.glb", RAO / "supply" / "input.re1", SUPPLY, supply, "supply_hull.stl"),
+         ("semisub_visual.glb", RAO / "semisub" / "semisub.4", None, semisub, None),
+         ("tanker_visual.glb", RAO / "tanker" / "tanker.4", TANKER, tanker, None))
+"""File, RAO file, hull form (None: the frame's z = 0 is the waterline, not the baseline), builder, and the file for
+the bare hull (for the wake, the wash and the hydrostatics; None where the RAO file's own panels serve)."""
+
+
+def write_hull_stl(form: ShipForm, reference: np.ndarray, path: Path) -> None:
+    """The bare hull of ``form`` in the body frame as a binary STL: 12 waterlines up to the draft, two above it."""
+    levels = np.r_[np.linspace(0.0, form.draft, 13), form.draft + 0.5 * (form.depth - form.draft), form.depth]
+    part = hull(form, levels, by_height([(np.inf, STEEL)]), STEEL).moved(-reference)
+    mesh = trimesh.Trimesh(part.v, part.f, process=True)
+    mesh.export(path)
+    print(f"{path.name}: {len(mesh.faces)} triangles, watertight {mesh.is_watertight}, "
+          f"volume {mesh.volume:.0f} m^3 (whole hull to the deck)")
 
 if __name__ == "__main__":
-    for name, rao, form, make in SHIPS:
+    for name, rao, form, make, hull_file in SHIPS:
         reference = np.asarray(read_rao(rao).reference_point, float)  # (XMTN, 0, ZMTN) for VERES, 0 for WAMIT
         if rao.suffix == ".4" and form is not None:
             reference = reference + (0.0, 0.0, form.draft)  # WAMIT's origin: midships on the waterline
         model, points = make(reference)
         body = model.moved(-reference)  # into the body frame: origin at the RAO reference point
         write_glb(body, HERE / name)
+        if hull_file is not None:
+            write_hull_stl(form, reference, HERE / hull_file)
         draft = 0.0 if form is None else form.draft
         print(f"  RAO reference point {reference.tolist()} (drawing frame); still waterline at body z = "
               f"{draft - reference[2]:+.2f} m" + ("" if form is None else f"; Cb {block_coefficient(form):.3f}"))
