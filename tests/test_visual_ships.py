@@ -163,6 +163,7 @@ def test_the_tanker_has_the_underwater_body_of_its_wamit_panels():
 
 
 def test_s175_points():
+    ref = reference("s175/input.re1")
     wl = 9.5 - ref[2]
     bridge = (-70.0, 0.0, 20.0)
     t, face = first_hit("s175", bridge, (1.0, 0.0, 0.0))
