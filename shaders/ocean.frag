@@ -36,9 +36,11 @@ float wash_foam(vec2 v) {
     if (u_wash.w == 0.0 || speed <= 0.05 || behind <= 0.0) return 0.0;
     float half_width = u_wash.y * pow(1.0 + behind / u_wash.y, 0.2);
     float across = v.y / half_width;
+    float fading = exp(-behind / (speed * WASH_LIFETIME_S));
+    if (abs(across) > 2.5 || fading < 0.01) return 0.0;  // outside the band: no foam to draw
     float streaks = 0.55 + 0.9 * value_noise(vec2(v.x / 35.0, v.y / 1.8));
     float fresh = smoothstep(0.0, 0.5 * u_wash.y, behind);  // it boils up just behind the transom
-    return clamp(exp(-2.0 * across * across) * exp(-behind / (speed * WASH_LIFETIME_S)) * streaks * fresh, 0.0, 1.0)
+    return clamp(exp(-2.0 * across * across) * fading * streaks * fresh, 0.0, 1.0)
            * min(speed / WASH_FULL_SPEED, 1.0);
 }
 
@@ -129,8 +131,9 @@ void main() {
     float sun_in = max(dot(n, u_sun), 0.0);
     vec3 refracted = (DEEP + SCATTER * crest * (0.4 + 0.6 * sun_in) * pow(1.0 - cos_theta, 2.0)) * u_sky;
     float roughness = 0.06 + 0.002 * v_spacing;  // distant glitter spreads: unresolved waves
-    vec3 colour = mix(refracted, reflected, fresnel)
-                + fresnel * 0.25 * (sun * glitter(n, u_sun, v, roughness) + moon * glitter(n, u_moon, v, roughness));
+    vec3 lights = sun * glitter(n, u_sun, v, roughness);
+    if (moon != vec3(0.0)) lights += moon * glitter(n, u_moon, v, roughness);
+    vec3 colour = mix(refracted, reflected, fresnel) + fresnel * 0.25 * lights;
     colour = mix(colour, FOAM * (0.35 * u_sky + 0.7 * sun * sun_in + 0.7 * moon * max(dot(n, u_moon), 0.0)), foam);
     f_colour = finish(with_haze(colour, -v, distance_m));
 }

@@ -17,9 +17,10 @@ void main() {
     c += u_sun_colour * 40.0 * smoothstep(SUN_DISC - DISC_EDGE, SUN_DISC + DISC_EDGE, dot(d, u_sun)) * above * clear;
     c += u_moon_colour * 60.0 * smoothstep(SUN_DISC - DISC_EDGE, SUN_DISC + DISC_EDGE, dot(d, u_moon)) * above * clear;
     // stars: a few per square degree where the sky is dark enough, twinkling neither in time nor with the view
-    vec2 cell = floor(vec2(atan(d.y, d.x) * 600.0, d.z * 600.0));
-    float star = step(0.9965, hash(cell)) * hash(cell + 7.0);
-    c += vec3(0.9, 0.92, 1.0) * star * 0.05 * smoothstep(0.01, 0.002, u_sky) * above * clear
-         * smoothstep(0.0, 0.1, d.z);
+    if (u_sky < 0.01 && d.z > 0.0) {
+        vec2 cell = floor(vec2(atan(d.y, d.x) * 600.0, d.z * 600.0));
+        float star = step(0.9965, hash(cell)) * hash(cell + 7.0);
+        c += vec3(0.9, 0.92, 1.0) * star * 0.05 * smoothstep(0.01, 0.002, u_sky) * clear * smoothstep(0.0, 0.1, d.z);
+    }
     f_colour = finish(c);
 }
