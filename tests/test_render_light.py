@@ -17,7 +17,7 @@ import pytest
 
 from conftest import luminance, offscreen
 from marinesim.render.daylight import bodies_at, illuminated_fraction, light_at, visible_drops_m3
-from marinesim.render.nav_lights import (CUT_OFF_DEG, NAUTICAL_MILE_M, THRESHOLD_LUX, TRANSMISSIVITY, NavLight,
+from marinesim.render.nav_lights import (CUT_OFF_DEG, NAUTICAL_MILE_M, RED, THRESHOLD_LUX, TRANSMISSIVITY, WHITE,
                                          illuminance_lux, lit, luminous_intensity_cd, place_lights, sector_weight)
 from marinesim.scenario.model import EnvironmentOptions
 
@@ -98,6 +98,13 @@ def test_sectors_cover_the_horizon_as_rule_21_draws_them(default):
     assert lights["port sidelight"].position[1] > 0 > lights["starboard sidelight"].position[1]
     anchored = place_lights(mesh, "anchored")
     assert [light.sector_deg for light in anchored] == [(0.0, 360.0)] * 2
+    restricted = place_lights(mesh, "restricted", default.vessel.points["bridge"])
+    signal = [light for light in restricted if light.name.startswith("restricted")]
+    assert [light.colour for light in signal] == [RED, WHITE, RED], "Rule 27 (b): red, white, red from below"
+    heights = [light.position[2] for light in signal]
+    assert np.allclose(np.diff(heights), 2.0) and all(light.sector_deg == (0.0, 360.0) for light in signal)
+    assert len({light.position[:2] for light in signal}) == 1, "not in a vertical line"
+    assert {light.name for light in restricted} >= set(lights), "restricted drops the lights of a vessel underway"
 
 
 def test_lights_are_lit_from_sunset_and_in_restricted_visibility():

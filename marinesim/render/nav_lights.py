@@ -13,6 +13,8 @@ shows, how bright each must be, and how bright it is at an eye.
   ``sigma = ln 20 / V`` (Koschmieder) for the scenario's visibility ``V``: at ``E = T`` the light is at the limit
   of being seen.
 - Lit from sunset to sunrise and in restricted visibility (Rule 20), here below 2 nm.
+- A vessel restricted in her ability to manoeuvre (Rule 27 (b): dredging, diving, a crane lift, a DP operation)
+  adds three all-round lights in a vertical line, red, white, red, 2 m apart.
 
 Positions are in the body frame (m): x forward, y to port, z up from the waterline.
 """
@@ -110,6 +112,12 @@ def place_lights(positions: np.ndarray, kind: str, bridge: tuple[float, float, f
     fore_z = top_near(fore_x, 0.08 * length) + 2.0
     aft_x = bridge[0] if bridge is not None else x_min + 0.2 * length
     aft_z = max(top_near(aft_x, 0.05 * length) + 2.0, fore_z + AFTER_MASTHEAD_ABOVE_M)
+    if kind == "restricted":  # Rule 27 (b): red, white, red all round in a vertical line over the after mast
+        lights = place_lights(p, "underway", bridge)
+        top = aft_z + 2.0 + 2.0 * np.arange(3)
+        return lights + [NavLight(f"restricted {name}", (aft_x - 1.0, 0.0, z), colour, (0.0, 360.0), reach["all_round"])
+                         for name, colour, z in (("lower red", RED, top[0]), ("white", WHITE, top[1]),
+                                                 ("upper red", RED, top[2]))]
     if kind == "anchored":
         return [NavLight("anchor forward", (fore_x, 0.0, aft_z), WHITE, (0.0, 360.0), reach["all_round"]),
                 NavLight("anchor aft", (x_min + 0.05 * length, 0.0, aft_z - AFTER_MASTHEAD_ABOVE_M), WHITE,

@@ -49,9 +49,10 @@ MAX_RAIN_MM_H = 200.0
 """The heaviest rain drawn (mm/h): cloudburst."""
 MIN_VISIBILITY_M, MAX_VISIBILITY_M = 50.0, 200_000.0
 """The range of the meteorological visibility (m): thick fog to the clearest air."""
-NAV_LIGHTS = ("underway", "anchored", "none")
-"""The navigation lights a vessel shows (COLREG): making way (masthead lights, sidelights, sternlight), at anchor
-(all-round white forward and aft), or none drawn."""
+NAV_LIGHTS = ("underway", "restricted", "anchored", "none")
+"""The navigation lights a vessel shows (COLREG): making way (masthead lights, sidelights, sternlight), restricted
+in her ability to manoeuvre (those and red-white-red all round), at anchor (all-round white forward and aft), or
+none drawn."""
 WEATHER = ("visibility_m", "cloud_cover_oktas", "wind_speed_m_s", "rain_mm_h")
 """The ``[environment]`` keys an event or the instructor may change during a run."""
 
@@ -252,7 +253,8 @@ class VesselOptions(Section):
         "flat", description="the deck of a ship drawn from its hull: flat (tanker, supply) or hatch covers (bulk, "
                             "container)")
     nav_lights: Literal[NAV_LIGHTS] = Field("underway", description="the navigation lights it shows at night and in "
-                                       "restricted visibility (COLREG): underway, anchored (all-round white) or none")
+                                       "restricted visibility (COLREG): underway, restricted (in her ability to "
+                                       "manoeuvre: red-white-red added), anchored (all-round white) or none")
     visual_mesh_units: Literal[tuple(UNITS)] = Field("m", description="the visual mesh's length units")
     visual_mesh_scale: Annotated[float, Quantity(gt=0.0)] = Field(1.0, description="its geometric scale")
     visual_mesh_axes: str = Field("x,y,z", description="its axes that become body x, y, z")
