@@ -62,13 +62,16 @@ float streak_foam(vec2 xy, float footprint_m) {
 }
 
 // Foam where the water meets the hull: a ring a few metres wide outside the waterline (the waterplane mask
-// blurred by its mip levels), whiter with speed and at the bow, where the stem throws the water up.
+// blurred by its mip levels), whiter with speed and at the bow, where the stem throws the water up, the more so
+// in head seas (the wind sea meeting the bow: its wind against the heading, from Beaufort 4 to 8).
 float contact_foam(vec2 v, vec2 mask_uv) {
     if (u_wash.w == 0.0 || any(lessThan(mask_uv, vec2(0.0))) || any(greaterThan(mask_uv, vec2(1.0)))) return 0.0;
     float near = textureLod(u_hull_mask, mask_uv, 3.0).r;
     float ring = smoothstep(0.02, 0.3, near) * (1.0 - smoothstep(0.3, 0.5, near));
     float bow = smoothstep(0.75, 0.95, (v.x - u_hull_rect.x) * u_hull_rect.z);  // the forward quarter
-    return ring * clamp(0.15 + u_wash.z / 6.0 + 0.5 * bow, 0.0, 1.0);
+    float head_seas = max(-dot(u_wind.xy, vec2(cos(u_track.z), sin(u_track.z))), 0.0)
+                    * smoothstep(5.5, 17.2, u_wind.z);
+    return ring * clamp(0.15 + u_wash.z / 6.0 + (0.5 + head_seas) * bow, 0.0, 1.0);
 }
 
 out vec4 f_colour;
