@@ -81,8 +81,9 @@ def test_sky_above_the_horizon_water_below_and_the_vessel_where_its_pose_puts_it
 
 
 def foam_fraction(scenario, hs_factor: float) -> float:
-    """Share of the water's pixels that foam brightens (the same frame with foam off is the reference)."""
-    rough = dataclasses.replace(scenario, sea=scaled_sea(scenario.sea, hs_factor, 1.0, 0.0))
+    """Share of the water's pixels that foam brightens (the same frame with foam off is the reference): the sea's own
+    whitecaps, without a ship (whose wash and collar of foam are no whitecaps)."""
+    rough = dataclasses.replace(scenario, sea=scaled_sea(scenario.sea, hs_factor, 1.0, 0.0), vessel=None)
     with offscreen(rough) as view, offscreen(rough, foam=False) as plain:
         for v in (view, plain):
             v.go_to(20.0)

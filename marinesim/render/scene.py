@@ -173,10 +173,10 @@ class Scene:
                          f"yaw {math.degrees(m[5]):+6.2f} deg")
         if self.sim.vessel is not None and self.renderer.mesh is None:
             lines.append("vessel not drawn: the scenario names no hull or visual_mesh (its motions are computed)")
-        lines.append(self.weather_line())
         line = f"camera {self.camera_name}"
         if self.camera_name == "bridge" and self.cameras["bridge"].binoculars:
-            line += "   binoculars 7x"
+            line += " (binoculars 7x)"
+        line += f"   {self.weather_line()}"
         if self.clock is not None:
             line += f"   {self.clock.line()}"
         return lines + [line] + self.status
@@ -188,11 +188,11 @@ class Scene:
         light = light_at(air, self.sim.time, self.sim.sea)
         clock = ""
         if air.time_utc is not None:
-            clock = f"{(air.time_utc + timedelta(seconds=self.sim.time)).astimezone(timezone.utc):%H:%M} UTC   "
+            clock = f"{(air.time_utc + timedelta(seconds=self.sim.time)).astimezone(timezone.utc):%H:%M} UTC  "
         elevation = math.degrees(math.asin(light.sun[2]))
-        rain = f"   rain {air.rain_mm_h:g} mm/h" if air.rain_mm_h > 0.0 else ""
-        return (f"{clock}sun {elevation:+.0f} deg   visibility {air.visibility_m / 1000:.3g} km   "
-                f"cloud {air.cloud_cover_oktas:g}/8   wind {light.wind[2]:.0f} m/s{rain}")
+        rain = f"  rain {air.rain_mm_h:g} mm/h" if air.rain_mm_h > 0.0 else ""
+        return (f"{clock}sun {elevation:+.0f}  vis {air.visibility_m / 1000:.3g} km  "
+                f"cloud {air.cloud_cover_oktas:g}/8  wind {light.wind[2]:.0f} m/s{rain}")
 
     def release(self) -> None:
         self.sim.close()
