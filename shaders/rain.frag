@@ -33,10 +33,13 @@ void main() {
     float azimuth = atan(d.y, d.x);
     vec2 tangent = vec2(-sin(azimuth), cos(azimuth));
     float lean = dot(u_wind.xy, tangent) * u_wind.z / FALL_M_S;      // the wind blows the drops sideways
-    float u = (azimuth * radius - lean * (at.z - u_eye.z)) / COLUMN_M;
+    float u = (azimuth * radius + lean * (at.z - u_eye.z)) / COLUMN_M;  // a drop drifts downwind as it falls
     float column = floor(u);
     float seed = hash(vec2(column, float(u_layer) * 17.0));
-    float v = (at.z + u_time * FALL_M_S + 40.0 * seed) / SPACING_M;
+    // the fall wrapped at 1200 spacings keeps the hash's inputs small (float32); an hour of fall is 14 of them, so
+    // the hourly wrap of u_time is seamless
+    float fallen = mod(u_time * FALL_M_S, 1200.0 * SPACING_M);
+    float v = (at.z + fallen + 40.0 * seed) / SPACING_M;
     float falling = step(1.0 - u_drops, hash(vec2(column + 0.5, floor(v) + 31.0 * float(u_layer))));
     float along = fract(v) * SPACING_M;
     float centre = 0.5 + 0.6 * (seed - 0.5);

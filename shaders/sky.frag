@@ -16,11 +16,11 @@ void main() {
     float clear = 1.0 - cloud_along(d);
     c += u_sun_colour * 40.0 * smoothstep(SUN_DISC - DISC_EDGE, SUN_DISC + DISC_EDGE, dot(d, u_sun)) * above * clear;
     c += u_moon_colour * 60.0 * smoothstep(SUN_DISC - DISC_EDGE, SUN_DISC + DISC_EDGE, dot(d, u_moon)) * above * clear;
-    // stars: a few per square degree where the sky is dark enough, twinkling neither in time nor with the view
+    // stars: about one in three square degrees where the sky is dark enough, twinkling neither in time nor with the view
     if (u_sky < 0.01 && d.z > 0.0) {
         vec2 cell = floor(vec2(atan(d.y, d.x) * 600.0, d.z * 600.0));
         float star = step(0.9965, hash(cell)) * hash(cell + 7.0);
-        c += vec3(0.9, 0.92, 1.0) * star * 0.05 * smoothstep(0.01, 0.002, u_sky) * clear * smoothstep(0.0, 0.1, d.z);
+        c += vec3(0.9, 0.92, 1.0) * star * 0.05 * (1.0 - smoothstep(0.002, 0.01, u_sky)) * clear * smoothstep(0.0, 0.1, d.z);
     }
     f_colour = finish(c);
 }

@@ -59,7 +59,8 @@ vec3 clear_sky(vec3 d) {
     float mu = max(dot(d, u_sun), 0.0);
     c += u_sun_colour * (0.20 * pow(mu, 6.0) + 0.50 * pow(mu, 200.0));
     // around sunset the horizon under the sun glows: strongest for a sun just below it, gone by -10 deg
-    float glow = exp(-pow((u_sun.z + 0.03) / 0.09, 2.0));
+    float below = (u_sun.z + 0.03) / 0.09;
+    float glow = exp(-below * below);
     if (glow > 1e-3) {
         vec2 flat_d = normalize(d.xy + 1e-6), flat_sun = normalize(u_sun.xy + 1e-6);
         float towards = pow(max(0.5 + 0.5 * dot(flat_d, flat_sun), 0.0), 3.0);  // pow of a negative is undefined

@@ -49,6 +49,17 @@ def test_sun_and_moon_stand_where_a_second_ephemeris_puts_them(when, latitude, l
     assert illuminated_fraction(sun, moon) == pytest.approx(ephem.Moon(observer).phase / 100.0, abs=0.01)
 
 
+def test_a_time_with_another_offset_is_the_same_instant():
+    """16:00+02:00 is 14:00 UTC for the sun and the moon alike (astral's moon reads the clock, not the offset)."""
+    from datetime import timedelta
+
+    utc = EnvironmentOptions(time_utc=datetime(2026, 11, 25, 22, 0, tzinfo=timezone.utc), latitude_deg=60.0,
+                             longitude_deg=2.0)
+    local = EnvironmentOptions(time_utc=datetime(2026, 11, 26, 0, 0, tzinfo=timezone(timedelta(hours=2))),
+                               latitude_deg=60.0, longitude_deg=2.0)
+    assert np.allclose(bodies_at(utc, 0.0), bodies_at(local, 0.0), atol=1e-9)
+
+
 def test_the_sun_moves_with_the_run():
     """An hour into a run the sun has moved by about 15 deg of hour angle: it stands higher in the morning."""
     morning = EnvironmentOptions(time_utc=datetime(2026, 6, 21, 6, 0, tzinfo=timezone.utc), latitude_deg=60.0,
@@ -105,6 +116,8 @@ def test_sectors_cover_the_horizon_as_rule_21_draws_them(default):
     assert np.allclose(np.diff(heights), 2.0) and all(light.sector_deg == (0.0, 360.0) for light in signal)
     assert len({light.position[:2] for light in signal}) == 1, "not in a vertical line"
     assert {light.name for light in restricted} >= set(lights), "restricted drops the lights of a vessel underway"
+    on_dp = place_lights(mesh, "restricted", default.vessel.points["bridge"], making_way=False)
+    assert on_dp == signal, "Rule 27 (b)(iii): not making way, only red-white-red"
 
 
 def test_lights_are_lit_from_sunset_and_in_restricted_visibility():

@@ -8,6 +8,7 @@ import pytest
 
 from conftest import ROOT, VESSEL_SCENARIO, offscreen, write
 from marinesim.constants import KNOT
+from marinesim.errors import ParameterError
 from marinesim.scenario import load_scenario
 from marinesim.session.exercise import Exercise
 from marinesim.session.timeline import Simulation
@@ -212,4 +213,7 @@ def test_fog_rolls_in_when_its_event_happens_and_the_instructor_clears_it(tmp_pa
     exercise.act("weather", visibility_m=5000.0)
     assert simulation.environment.visibility_m == 5000.0 and simulation.environment.cloud_cover_oktas == 8.0
     assert scenario.environment.visibility_m == 40_000.0
+    for hours in ("x", float("nan"), 1e300):  # a hand-edited session log: one line, not a traceback
+        with pytest.raises(ParameterError, match="hours"):
+            exercise.act("weather", hours=hours)
     simulation.close()

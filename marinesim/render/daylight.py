@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from datetime import timedelta
+from datetime import timedelta, timezone
 
 import numpy as np
 
@@ -67,11 +67,6 @@ class Light:
     visibility_m: float
     wind: tuple[float, float, float] = (0.0, 0.0, 0.0)
     rain_mm_h: float = 0.0
-
-    @property
-    def night(self) -> bool:
-        """Whether the sun is below the horizon: the navigation lights are lit."""
-        return self.sun[2] < 0.0
 
     def uniforms(self) -> dict[str, object]:
         """The uniforms of ``shaders/sky.glsl``."""
@@ -127,7 +122,7 @@ def bodies_at(environment: EnvironmentOptions, t_s: float) -> tuple[tuple[float,
     import astral.moon
     import astral.sun
 
-    when = environment.time_utc + timedelta(seconds=t_s)
+    when = (environment.time_utc + timedelta(seconds=t_s)).astimezone(timezone.utc)  # astral's moon reads the clock
     observer = astral.Observer(environment.latitude_deg, environment.longitude_deg)
     # astral's sun elevation includes refraction; its moon is geocentric: seen from the Earth's surface it stands
     # lower by the parallax, the mean horizontal parallax times the cosine of its elevation
@@ -178,9 +173,3 @@ def light_at(environment: EnvironmentOptions, t_s: float = 0.0, sea: SeaState | 
                  sky=clouds * (sky_brightness(sun_elevation) + moon_sky),
                  cloud=environment.cloud_cover_oktas / 8.0, visibility_m=environment.visibility_m,
                  wind=wind_of(environment, sea), rain_mm_h=environment.rain_mm_h)
-
-
-def changed(environment: EnvironmentOptions, **keys: float) -> EnvironmentOptions:
-    """``environment`` with some keys replaced, validated as the scenario's are."""
-    return EnvironmentOptions.model_validate(environment.model_dump(exclude_unset=True) | keys)
-

@@ -1,4 +1,4 @@
-"""Navigation lights (COLREG 1972, Rules 21, 22 and 30, Annex I): where a vessel carries them, the sector each
+"""Navigation lights (COLREG 1972, Rules 20 to 23, 27 and 30, Annex I): where a vessel carries them, the sector each
 shows, how bright each must be, and how bright it is at an eye.
 
 - Sectors, as bearings of the eye from the light relative to the bow (deg, positive to port): a masthead light
@@ -14,7 +14,7 @@ shows, how bright each must be, and how bright it is at an eye.
   of being seen.
 - Lit from sunset to sunrise and in restricted visibility (Rule 20), here below 2 nm.
 - A vessel restricted in her ability to manoeuvre (Rule 27 (b): dredging, diving, a crane lift, a DP operation)
-  adds three all-round lights in a vertical line, red, white, red, 2 m apart.
+  adds three all-round lights in a vertical line, red, white, red, 2 m apart; not making way (on DP), only those.
 
 Positions are in the body frame (m): x forward, y to port, z up from the waterline.
 """
@@ -91,11 +91,13 @@ def ranges_nm(length_m: float) -> dict[str, float]:
     return {"masthead": 2.0, "side": 1.0, "stern": 2.0, "all_round": 2.0}
 
 
-def place_lights(positions: np.ndarray, kind: str, bridge: tuple[float, float, float] | None = None
-                 ) -> list[NavLight]:
+def place_lights(positions: np.ndarray, kind: str, bridge: tuple[float, float, float] | None = None,
+                 making_way: bool = True) -> list[NavLight]:
     """The lights of a vessel drawn by the body-frame vertices ``positions`` (n, 3) m, showing ``kind`` (one of
-    :data:`~marinesim.scenario.model.NAV_LIGHTS`): the masthead lights on its centreline (the after one over the bridge, or a fifth of the
-    length from the stern), the sidelights at its sides abreast the bridge, the sternlight at the stern's top."""
+    :data:`~marinesim.scenario.model.NAV_LIGHTS`): the masthead lights on its centreline (the after one over the
+    bridge, or a fifth of the length from the stern), the sidelights at its sides abreast the bridge, the sternlight
+    at the stern's top. ``making_way``: a vessel restricted in her ability to manoeuvre shows the lights of a vessel
+    underway only when making way through the water (Rule 27 (b)(iii))."""
     if kind == "none" or len(positions) == 0:
         return []
     p = np.asarray(positions, float)
@@ -112,8 +114,8 @@ def place_lights(positions: np.ndarray, kind: str, bridge: tuple[float, float, f
     fore_z = top_near(fore_x, 0.08 * length) + 2.0
     aft_x = bridge[0] if bridge is not None else x_min + 0.2 * length
     aft_z = max(top_near(aft_x, 0.05 * length) + 2.0, fore_z + AFTER_MASTHEAD_ABOVE_M)
-    if kind == "restricted":  # Rule 27 (b): red, white, red all round in a vertical line over the after mast
-        lights = place_lights(p, "underway", bridge)
+    if kind == "restricted":  # Rule 27 (b): red, white, red all round in a vertical line over the after mast; when
+        lights = place_lights(p, "underway", bridge) if making_way else []  # making way, a vessel's lights too
         top = aft_z + 2.0 + 2.0 * np.arange(3)
         return lights + [NavLight(f"restricted {name}", (aft_x - 1.0, 0.0, z), colour, (0.0, 360.0), reach["all_round"])
                          for name, colour, z in (("lower red", RED, top[0]), ("white", WHITE, top[1]),

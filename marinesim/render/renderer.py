@@ -93,7 +93,7 @@ class Renderer:
         self.vessel = VesselLayer(ctx, self.mesh, shown=options.vessel)
         vessel = sim.vessel
         self.nav_lights = NavLightsLayer(ctx, place_lights(self.mesh.positions, vessel.nav_lights,
-                                                           vessel.points.get("bridge"))
+                                                           vessel.points.get("bridge"), vessel.speed_m_s > 0.0)
                                          if self.mesh is not None and options.vessel else [])
         self.rain = RainLayer(ctx)
 

@@ -92,13 +92,15 @@ def _superstructure(v: np.ndarray, bridge: tuple[float, float, float], deck_z: f
     length, beam = float(np.ptp(v[:, 0])), float(np.ptp(v[:, 1]))
     bow, stern = float(v[:, 0].max()), float(v[:, 0].min())
     x0, x1, half = bridge[0] - 0.06 * length, bridge[0] + 2.0, 0.35 * beam  # the eye 2 m behind the glass
-    floor = bridge[2] - 1.7                            # the eye 1.7 m over the wheelhouse floor
+    floor = max(bridge[2] - 1.7, deck_z)               # the eye 1.7 m over the wheelhouse floor (or the deck)
     roof = floor + 3.2
     parts = []
-    decks = max(int((floor - deck_z) // DECK_HEIGHT_M), 1)
-    height = (floor - deck_z) / decks
-    bands = [(1.1, HOUSE), (0.9, WINDOW), (height - 2.0, HOUSE)] if height > 2.2 else [(height, HOUSE)]
-    tiers = [band for _ in range(decks) for band in bands] + [(1.0, HOUSE), (1.5, WINDOW), (0.7, HOUSE)]
+    decks = int((floor - deck_z) // DECK_HEIGHT_M)
+    tiers = [(floor - deck_z, HOUSE)] if floor - deck_z > 0.1 else []
+    if decks:
+        height = (floor - deck_z) / decks
+        tiers = [band for _ in range(decks) for band in ((1.1, HOUSE), (0.9, WINDOW), (height - 2.0, HOUSE))]
+    tiers += [(1.0, HOUSE), (1.5, WINDOW), (0.7, HOUSE)]
     z = deck_z
     for tier, colour in tiers:
         parts.append((_box((x0, -half, z), (x1, half, z + tier)), colour))

@@ -352,10 +352,15 @@ class EnvironmentOptions(Section):
         """This environment ``hours`` later (with ``time_utc``) and with some keys replaced, validated as the
         scenario's are (a :class:`~marinesim.errors.ParameterError` names a value out of range)."""
         values = self.model_dump(exclude_unset=True) | keys
+        if isinstance(hours, bool) or not isinstance(hours, (int, float)) or not abs(hours) <= MAX_DURATION_S / 3600:
+            raise ParameterError(f"hours: expected a number of hours within a week, got {hours!r}")
         if hours:
             if self.time_utc is None:
                 raise ParameterError("the sun is fixed by the scenario's sun keys: only a time_utc moves it")
-            values["time_utc"] = self.time_utc + timedelta(hours=hours)
+            try:
+                values["time_utc"] = self.time_utc + timedelta(hours=hours)
+            except OverflowError:
+                raise ParameterError(f"time_utc {self.time_utc} moved {hours:g} h leaves the calendar") from None
         try:
             return EnvironmentOptions.model_validate(values)
         except ValidationError as error:

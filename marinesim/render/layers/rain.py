@@ -19,7 +19,8 @@ LAYERS = 4
 
 
 class RainLayer:
-    """Draws the rain of the view's light over whatever is in the framebuffer (blended, no depth)."""
+    """Draws the rain of the view's light over the scene, blended, each cylinder of drops at its own depth (depth test
+    on, no depth writes)."""
 
     def __init__(self, ctx: moderngl.Context) -> None:
         self.ctx = ctx
