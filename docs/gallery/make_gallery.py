@@ -54,8 +54,8 @@ SHOTS = (
          air={"time_utc": datetime(2026, 11, 22, 21, 0, tzinfo=timezone.utc), **NORTH_SEA}, azimuth_deg=10.0,
          elevation_deg=6.0),
     Shot("night_crane_lift", "training/crane_lift.toml", "The supply vessel lifting on DP at night from her port "
-         "bow: masthead lights, red sidelight, and red-white-red all round (restricted in her ability to "
-         "manoeuvre).", air={"sun_elevation_deg": -25.0}, azimuth_deg=250.0, elevation_deg=6.0),
+         "bow: red-white-red all round over her mast (restricted in her ability to manoeuvre, not making way: no "
+         "masthead or sidelights).", air={"sun_elevation_deg": -25.0}, azimuth_deg=250.0, elevation_deg=6.0),
     Shot("dusk_loading", "training/offshore_loading.toml", "Offshore loading at dusk, broken cloud.",
          air={"time_utc": datetime(2026, 11, 25, 15, 10, tzinfo=timezone.utc), "cloud_cover_oktas": 5.0,
               **NORTH_SEA}, azimuth_deg=140.0, elevation_deg=10.0),
