@@ -28,7 +28,7 @@ from marinesim.errors import ParameterError
 from marinesim.gl import is_software
 from marinesim.render import CASCADES
 from marinesim.render.camera import Eye
-from marinesim.render.daylight import light_at
+from marinesim.render.daylight import Light, light_at
 from marinesim.render.nav_lights import place_lights
 from marinesim.render.layers.base import View
 from marinesim.render.layers.cascades import CascadeLayer
@@ -77,6 +77,7 @@ class Renderer:
     def __init__(self, ctx: moderngl.Context, sim: Simulation, options: RenderOptions = RenderOptions()) -> None:
         self.ctx, self.sim, self.options = ctx, sim, options
         self._last_time: float | None = None
+        self._light: tuple[tuple, Light] | None = None
         tiles, n = sim.ocean.tiles, sim.ocean.resolution
         self.mesh = drawn_mesh(sim)
         self.sky = SkyLayer(ctx)
@@ -109,11 +110,18 @@ class Renderer:
             self.cascades.upload(self.sim.ocean.fields(t, self.options.reproducible))
         self.foam.update(self.cascades, dt)
 
+    def light(self) -> Light:
+        """The light at the simulation's time (the sun and moon from astral take 0.7 ms: worked out once a frame,
+        whatever the views and the HUD ask)."""
+        key = (self.sim.time, self.sim.environment, id(self.sim.sea))
+        if self._light is None or self._light[0] != key:
+            self._light = key, light_at(self.sim.environment, self.sim.time, self.sim.sea)
+        return self._light[1]
+
     def view(self, eye: Eye, size: tuple[int, int]) -> View:
         """The view of ``eye`` into a target of ``size`` (w, h) px, in the light of the simulation's time."""
         width, height = size
-        return View(eye, eye.view_projection(width / height),
-                    light_at(self.sim.environment, self.sim.time, self.sim.sea))
+        return View(eye, eye.view_projection(width / height), self.light())
 
     def draw(self, eye: Eye, size: tuple[int, int]) -> None:
         """Draw the view of ``eye`` into the bound framebuffer of ``size`` (w, h) px."""

@@ -20,7 +20,6 @@ from marinesim.gl import is_software
 from marinesim.render import CAMERAS
 from marinesim.render.camera import BridgeCamera, FreeCamera, OrbitCamera
 from marinesim.render.clock import FrameClock
-from marinesim.render.daylight import light_at
 from marinesim.render.hud import ALARM_COLOR, LEVEL_COLORS, Banner, Hud, Slider, StripHistory, font_px_for
 from marinesim.render.renderer import Renderer, RenderOptions
 from marinesim.scenario import Scenario
@@ -185,7 +184,7 @@ class Scene:
         """The light and the air now, as the instructor sets them: the clock (UTC) where the scenario has one, the
         sun's elevation, visibility, cloud and wind."""
         air = self.sim.environment
-        light = light_at(air, self.sim.time, self.sim.sea)
+        light = self.renderer.light()
         clock = ""
         if air.time_utc is not None:
             clock = f"{(air.time_utc + timedelta(seconds=self.sim.time)).astimezone(timezone.utc):%H:%M} UTC  "
