@@ -54,6 +54,10 @@ def test_good_scenario_converts_directions(tmp_path):
                "sun_elevation_deg = 10.0\n[run]"), "or the sun's keys, not both"),
     (("[run]", "[environment]\nlatitude_deg = 60.0\n[run]"), "only with time_utc"),
     (("[run]", "[environment]\ncloud_cover_oktas = 9\n[run]"), "environment.cloud_cover_oktas: must be in 0..8"),
+    (("[run]", "[environment]\nrain_mm_h = -1.0\n[run]"), "environment.rain_mm_h: must be in 0..200 mm/h"),
+    (("[run]", "[environment]\nwind_speed_m_s = 100.0\n[run]"), "environment.wind_speed_m_s: must be in 0..60 m/s"),
+    (("[run]", "[environment]\nwind_from_deg = 400.0\n[run]"), "environment.wind_from_deg: must be a compass"),
+    (("[run]", "[[events]]\nat_s = 5.0\nrain_mm_h = 500.0\n[run]"), "events[0].rain_mm_h"),
     (("[run]", "[[events]]\nat_s = 5.0\nvisibility_m = 20.0\n[run]"), "events[0].visibility_m"),
     (("[run]", "[environment]\nfog = true\n[run]"), "environment.fog: unknown key"),
     (("[[sea]]", "[[sea]\n"), "not valid TOML"),
@@ -223,7 +227,10 @@ def test_run_overrides_are_checked_by_the_model(tmp_path, overrides, message):
     (("speed_kn = 6.0", "speed_kn = 6.0\nhull_units = \"mm\""), "vessel.hull: .*units='m' gives 256.9 m"),
     (("speed_kn = 6.0", "speed_kn = 6.0\nhull_draft_m = -1.0"), "vessel.hull_draft_m: must be > 0 m"),
     (("speed_kn = 6.0", "speed_kn = 6.0\nwake_speeds_kn = [0.0]"), "vessel.wake_speeds_kn: expected speeds"),
-    (("hull = ", "hull_trim_deg = 1.0\n# hull = "), "vessel.hull_trim_deg: given without vessel.hull"),
+    (("hull = ", "hull_trim_deg = 1.0\n# hull = "), "vessel.hull_trim_deg: given without vessel.hull"),    (("speed_kn = 6.0", "speed_kn = 6.0\nnav_lights = \"blinking\""), "vessel.nav_lights: .*underway"),
+    (("speed_kn = 6.0", "speed_kn = 6.0\ndeck_layout = \"tilted\""), "vessel.deck_layout: .*hatches"),
+    (("speed_kn = 6.0", "speed_kn = 6.0\ntopsides_rgb = [10, 20]"), "vessel.topsides_rgb"),
+    (("speed_kn = 6.0", "speed_kn = 6.0\ntopsides_rgb = [300, 0, 0]"), "vessel.topsides_rgb: expected colour levels in 0..255"),
 ])
 def test_bad_vessel_sections_are_refused_with_the_key(tmp_path, change, message):
     path = write(tmp_path, SCENARIO.replace(*change))
