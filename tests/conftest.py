@@ -216,3 +216,10 @@ def ray_hits(tri: np.ndarray, origin, direction) -> tuple[np.ndarray, np.ndarray
     found = ok & (u >= 0) & (v >= 0) & (u + v <= 1) & (t > 1e-6)
     order = np.argsort(t[found])
     return t[found][order], np.flatnonzero(found)[order]
+
+
+def run_lengths(mask: np.ndarray) -> float:
+    """Mean length (px) of the runs of True along the rows of ``mask``."""
+    edges = np.diff(np.pad(mask.astype(int), ((0, 0), (1, 1))), axis=1)
+    starts, ends = np.nonzero(edges == 1), np.nonzero(edges == -1)
+    return float(np.mean(ends[1] - starts[1])) if len(starts[1]) else 0.0

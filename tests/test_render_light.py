@@ -15,7 +15,7 @@ import ephem
 import numpy as np
 import pytest
 
-from conftest import luminance, offscreen
+from conftest import luminance, offscreen, run_lengths
 from marinesim.render.daylight import bodies_at, illuminated_fraction, light_at, visible_drops_m3
 from marinesim.render.nav_lights import (CUT_OFF_DEG, NAUTICAL_MILE_M, RED, THRESHOLD_LUX, TRANSMISSIVITY, WHITE,
                                          illuminance_lux, lit, luminous_intensity_cd, place_lights, sector_weight)
@@ -220,6 +220,4 @@ def test_rain_falls_in_upright_streaks_more_of_them_the_harder_it_rains(default)
     assert visible_drops_m3(2.5) / visible_drops_m3(50.0) == pytest.approx(0.107, abs=0.005)
     light, violent = rain_streaks(default, 2.5), rain_streaks(default, 50.0)
     assert 0.0005 < light.mean() < 0.3 * violent.mean()
-    from test_render_offscreen import run_lengths
-
     assert run_lengths(violent.T) > 3.0 * run_lengths(violent)

@@ -16,7 +16,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from conftest import DEFAULT, RENDER_SIZE as SIZE, ROOT, luminance, offscreen
+from conftest import DEFAULT, RENDER_SIZE as SIZE, ROOT, luminance, offscreen, run_lengths
 from marinesim.cli import main
 from marinesim.pose import Pose
 from marinesim.render.camera import BridgeCamera
@@ -157,13 +157,6 @@ def streak_foam(scenario, wind_m_s: float) -> np.ndarray:
             view.go_to(10.0)
             frames.append(luminance(view.frame(hud=False)))
     return frames[0] - frames[1] > 20.0
-
-
-def run_lengths(mask: np.ndarray) -> float:
-    """Mean length (px) of the runs of True along the rows of ``mask``."""
-    edges = np.diff(np.pad(mask.astype(int), ((0, 0), (1, 1))), axis=1)
-    starts, ends = np.nonzero(edges == 1), np.nonzero(edges == -1)
-    return float(np.mean(ends[1] - starts[1])) if len(starts[1]) else 0.0
 
 
 def test_a_rising_wind_lays_more_foam_in_streaks_along_it(default):
