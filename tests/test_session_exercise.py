@@ -134,6 +134,18 @@ def test_a_condition_fires_once_at_its_first_evaluation_that_holds(tmp_path):
     simulation.close()
 
 
+def test_seeking_to_a_time_whose_row_rounds_past_it_lands_on_it(tmp_path):
+    """396.2 s is row 3962 at 0.1 s, whose time 3962 x 0.1 rounds to 396.20000000000005: the seek stops at the
+    time asked for, not past it (it stopped past it and then refused to step the clock back)."""
+    scenario = load_scenario(write(tmp_path, CONDITIONAL.format(threshold=100.0)))
+    assert 3962 * scenario.run.dt_s > 396.2
+    simulation = Simulation(scenario, wake=False)
+    exercise = Exercise(simulation)
+    exercise.seek(396.2)
+    assert simulation.time == 396.2 and exercise.evaluated_s[-1] <= 396.2
+    simulation.close()
+
+
 def test_a_condition_that_never_holds_changes_nothing(tmp_path):
     scenario = load_scenario(write(tmp_path, CONDITIONAL.format(threshold=100.0)))
     simulation = Simulation(scenario, wake=False)

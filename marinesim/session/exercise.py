@@ -189,7 +189,7 @@ class Exercise:
             if self.monitor is not None:
                 stride = self.monitor.stride
                 stop_row = min(last, -(-self.row // stride) * stride)  # the next evaluation
-            stop = stop_row * self.dt
+            stop = min(stop_row * self.dt, target)  # the last row's time may round past the target
             self._ask_timed(stop)
             self._move_clock(stop, step_solver)
             block = self._record(self.row, stop_row, last if rows else stop_row)
