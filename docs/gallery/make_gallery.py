@@ -1,5 +1,5 @@
 """The picture gallery: every shipped scenario from the orbit camera and from its bridge, then the same ships at
-night, at dusk, in fog and in a gale, as headless marinesim draws them (960x540 JPEG of quality 85, the HUD on: a
+night, at dusk, in fog, in a gale and slamming, as headless marinesim draws them (960x540 JPEG of quality 85, the HUD on: a
 tenth of a PNG of the sea's detail), and docs/gallery/README.md listing them, so that the next change to the
 picture can be compared by eye.
 
@@ -33,7 +33,7 @@ NORTH_SEA = {"latitude_deg": 60.5, "longitude_deg": 2.0}
 class Shot:
     """A picture beyond the shipped ones: ``scenario`` (under configs/) at ``at_s`` under other ``[environment]``
     keys and its sea's heights times ``hs_factor``, from ``camera`` (orbit: at ``azimuth_deg`` from astern and
-    ``elevation_deg``)."""
+    ``elevation_deg``, ``distance_m`` out)."""
 
     name: str
     scenario: str
@@ -44,6 +44,7 @@ class Shot:
     azimuth_deg: float | None = None
     elevation_deg: float | None = None
     hs_factor: float = 1.0
+    distance_m: float | None = None
 
 
 SHOTS = (
@@ -66,17 +67,22 @@ SHOTS = (
     Shot("storm_s175", "s175_heavy_weather.toml", "The S175 in a storm: the sea doubled, 24 m/s of wind (Beaufort "
          "9), overcast.", air={"wind_speed_m_s": 24.0, "cloud_cover_oktas": 8.0, "visibility_m": 5000.0},
          elevation_deg=12.0, hs_factor=2.0),
+    Shot("slam_s175", "s175_heavy_weather.toml", "The S175 half a second after her hardest slam of the first ten "
+         "minutes (the sea rising at 1.7 times Ochi's threshold against her stem): spray off both sides of the bow.",
+         at_s=401.2, azimuth_deg=125.0, elevation_deg=12.0, distance_m=200.0),
 )
 
 
 def save(scenario: Scenario, out: Path, camera: str, at_s: float, azimuth_deg: float | None = None,
-         elevation_deg: float | None = None) -> None:
+         elevation_deg: float | None = None, distance_m: float | None = None) -> None:
     with Offscreen(scenario, (960, 540), camera, "auto", RenderOptions(reproducible=True)) as view:
         orbit = view.scene.cameras["orbit"]
         if azimuth_deg is not None:
             orbit.azimuth_deg = azimuth_deg
         if elevation_deg is not None:
             orbit.elevation_deg = elevation_deg
+        if distance_m is not None:
+            orbit.distance_m = distance_m
         view.go_to(at_s)
         Image.fromarray(view.frame()).save(out, format="JPEG", quality=85)
     print(f"wrote {out.relative_to(ROOT)}")
@@ -112,7 +118,7 @@ def main() -> None:
         environment = type(scenario.environment).model_validate(air | shot.air)
         scenario = dataclasses.replace(scenario, sea=sea, environment=environment)
         out = HERE / f"{shot.name}.jpg"
-        save(scenario, out, shot.camera, shot.at_s, shot.azimuth_deg, shot.elevation_deg)
+        save(scenario, out, shot.camera, shot.at_s, shot.azimuth_deg, shot.elevation_deg, shot.distance_m)
         rows.append(f"## {shot.name}: configs/{shot.scenario} at {shot.at_s:g} s\n\n{shot.what} "
                     f"{light_words(scenario, shot.at_s)}\n\n![{shot.name}]({out.name})\n")
     (HERE / "README.md").write_text("# Picture gallery\n\nEvery shipped scenario from the orbit camera and from its "

@@ -12,8 +12,9 @@ draws a camera's view into the bound framebuffer:
    (vessel frame) and the solver's field (Earth-fixed grid); shaded with Fresnel, sky reflection,
    subsurface tint, glitter, foam and haze; no water inside the hull;
 3. the vessel mesh (the scenario's visual mesh, else one made from the hull) in its 6-DOF pose;
-4. its navigation lights, by night and in restricted visibility (COLREG sectors and intensities);
-5. rain, as streaks of falling drops over it all.
+4. spray thrown up where the bow slams and blown off the crests in a gale (:mod:`~marinesim.render.spray`);
+5. its navigation lights, by night and in restricted visibility (COLREG sectors and intensities);
+6. rain, as streaks of falling drops over it all.
 
 Everything is in the Earth frame (m); the shaders state their inputs' units.
 """
@@ -23,6 +24,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import moderngl
+import numpy as np
 
 from marinesim.errors import ParameterError
 from marinesim.gl import is_software
@@ -30,6 +32,7 @@ from marinesim.render import CASCADES
 from marinesim.render.camera import Eye
 from marinesim.render.daylight import Light, light_at
 from marinesim.render.nav_lights import place_lights
+from marinesim.render.spray import Bow, Spray
 from marinesim.render.layers.base import View
 from marinesim.render.layers.cascades import CascadeLayer
 from marinesim.render.layers.foam import FoamLayer
@@ -38,6 +41,7 @@ from marinesim.render.layers.lights import NavLightsLayer
 from marinesim.render.layers.ocean import OceanLayer
 from marinesim.render.layers.rain import RainLayer
 from marinesim.render.layers.sky import SkyLayer
+from marinesim.render.layers.spray import SprayLayer
 from marinesim.render.layers.synthesis import CascadeSynthesis
 from marinesim.render.layers.solver_field import SolverFieldLayer
 from marinesim.render.layers.vessel import VesselLayer, drawn_mesh
@@ -47,7 +51,7 @@ from marinesim.session.timeline import Simulation
 
 @dataclass(frozen=True)
 class RenderOptions:
-    """What to draw: the Kelvin wake, foam, the vessel, the local solver (``solver_size`` cells a side).
+    """What to draw: the Kelvin wake, foam, spray, the vessel, the local solver (``solver_size`` cells a side).
     The light comes from the simulation's ``[environment]`` (:mod:`~marinesim.render.daylight`). ``cascades``: where the
     ocean's fields are synthesised each frame, ``"gpu"`` (compute shaders), ``"cpu"`` (the ocean's FFTs,
     uploaded) or ``"auto"`` (the GPU where there is one; the CPU on a software renderer, where the compute
@@ -56,6 +60,7 @@ class RenderOptions:
 
     wake: bool = True
     foam: bool = True
+    spray: bool = True
     vessel: bool = True
     solver: bool = False
     solver_size: int = 512
@@ -97,9 +102,13 @@ class Renderer:
                                                            vessel.points.get("bridge"), vessel.speed_m_s > 0.0)
                                          if self.mesh is not None and options.vessel else [])
         self.rain = RainLayer(ctx)
+        bow = (Bow.of(vessel.hull, self.mesh.positions) if vessel is not None and vessel.hull is not None
+               and self.mesh is not None and options.vessel else None)
+        self.spray = Spray(sim, bow) if options.spray else None
+        self.spray_layer = SprayLayer(ctx)
 
     def update(self) -> None:
-        """Bring the GPU to the simulation's time: the cascades' fields, their mipmaps and the foam."""
+        """Bring the layers to the simulation's time: the cascades' fields, their mipmaps, the foam and the spray."""
         t = self.sim.time
         dt = 0.0 if self._last_time is None else max(t - self._last_time, 0.0)
         self._last_time = t
@@ -109,6 +118,9 @@ class Renderer:
         else:
             self.cascades.upload(self.sim.ocean.fields(t, self.options.reproducible))
         self.foam.update(self.cascades, dt)
+        if self.spray is not None:
+            wind = self.light().wind
+            self.spray.update(np.array([wind[0] * wind[2], wind[1] * wind[2], 0.0]))
 
     def light(self) -> Light:
         """The light at the simulation's time (the sun and moon from astral take 0.7 ms: worked out once a frame,
@@ -132,6 +144,8 @@ class Renderer:
         pose = self.sim.pose()
         self.ocean.draw(view, pose, (self.cascades, self.foam, self.wake, self.solver_field, self.hull_mask))
         self.vessel.draw(view, pose)
+        if self.spray is not None:
+            self.spray_layer.draw(view, self.spray.puffs, size[1])
         self.nav_lights.draw(view, pose, size[1])
         self.rain.draw(view, self.sim.time)
 
@@ -139,5 +153,5 @@ class Renderer:
         if self.synthesis is not None:
             self.synthesis.release()
         for layer in (self.sky, self.cascades, self.foam, self.wake, self.solver_field, self.hull_mask, self.ocean,
-                      self.vessel, self.nav_lights, self.rain):
+                      self.vessel, self.nav_lights, self.rain, self.spray_layer):
             layer.release()

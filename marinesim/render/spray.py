@@ -1,0 +1,292 @@
+"""Spray: sheets thrown up where the bow slams into the sea, and spindrift torn off the crests in a gale. Puffs of
+drops that fly, fall and drift with the wind, stepped on the CPU with the simulation's clock and drawn by
+:mod:`~marinesim.render.layers.spray`.
+
+Bow spray. The bow slams when the sea rises against it faster than Ochi's (1964) threshold
+``v_th = 0.093 sqrt(g L)`` (L the waterline length; REFERENCES section 8's slamming criterion). The rising speed
+is the time derivative of the water's height over the stem's point on the calm waterline, linear as the
+export's relative motion of a point: the incident sea along the stem's path (met at the encounter frequency)
+less the stem's heave and pitch, taken while the water is at the bow (between the forefoot and the deck). From
+:data:`SPRAY_ONSET` of the threshold on, a plunge sweeps up the flare and throws
+:data:`SLAM_PUFFS_PER_S` ``x ((v / v_th)^2 - SPRAY_ONSET^2)`` puffs a second up and out from it, on top of the
+stem's own velocity, at Wagner's (1932) jet speed ``pi v / (2 tan beta)`` for a flare at ``beta`` 20-40 deg
+to the water.
+
+Spindrift. From Beaufort 8 (17.2 m/s at 10 m), when "edges of crests begin to break into spindrift" (WMO),
+crests within :data:`SPINDRIFT_RADIUS_M` of the vessel shed puffs at a rate proportional to the whitecap
+cover ``W = 3.84e-6 U^3.41`` (Monahan & O'Muircheartaigh 1980), faded in over Beaufort 8.
+
+A puff is drops of one size: their drag time ``tau`` is their terminal fall speed over g (Gunn & Kinzer 1949: a
+sheet breaks into drops of about 3 mm, 8.1 m/s; spindrift 0.4 mm, 1.6 m/s). They follow
+``dv/dt = -g z + (w - v) / tau`` with ``w`` the wind at 10 m (E frame), integrated exactly over each step for a
+steady wind, so the path does not depend on the frame rate. A puff spreads as it flies and is gone when it
+falls back below the mean sea level or after :data:`LIFE_S`. The stream is seeded by the run's seed and the
+time: the same run gives the same spray.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from marinesim.constants import G
+from marinesim.hull import Hull
+from marinesim.hull.waterplane import waterline_loops
+from marinesim.sea.ocean import Components
+from marinesim.session.timeline import Simulation
+
+OCHI_THRESHOLD = 0.093
+"""Slamming threshold velocity over sqrt(g L) (Ochi 1964)."""
+SPRAY_ONSET = 0.5
+"""The bow throws spray from this fraction of the slamming threshold on: a plunge that sweeps up the flare."""
+SLAM_PUFFS_PER_S = 1000.0
+"""Puffs a second for each unit of ``(v / v_th)^2 - SPRAY_ONSET^2``: at the threshold, 750 a second."""
+DROP_TAU_S, SPINDRIFT_TAU_S = 8.06 / G, 1.62 / G
+"""Drag time (s) of 3 mm drops (bow spray: a sheet breaks into large drops) and 0.4 mm drops (spindrift): their
+terminal speed over g (Gunn & Kinzer 1949)."""
+BEAUFORT_8_M_S, BEAUFORT_9_M_S = 17.2, 20.8
+SPINDRIFT_RADIUS_M = 150.0
+SPINDRIFT_PUFFS_PER_M2_S = 0.01
+"""Puffs a second per square metre of whitecap (Monahan's W) once spindrift is fully on."""
+CREST_SIGMA = 1.0
+"""Spindrift leaves crests higher than this many standard deviations of the elevation."""
+CREST_VARIANCE = 0.9
+"""Share of the sea's variance in the components that place the crests spindrift leaves (the largest)."""
+LIFE_S = 6.0
+MAX_PUFFS = 4096
+STEP_S = 1.0 / 30.0
+"""Longest step of the puffs' integration (the emission is sampled at it; the flight is exact)."""
+WARM_UP_S = 4.0
+"""A jump in time (a first frame, a seek) starts the spray this long before, so that a still shows it in flight."""
+STEM_BLOCK = 256
+"""Time steps of the sea at the stem summed at once (their phasor table: 256 x components x 16 bytes)."""
+BOW_REACH = 0.05
+"""Puffs leave the flare over this fraction of the waterline length aft of the stem."""
+
+
+@dataclass
+class Puffs:
+    """The puffs in flight: E-frame position (n, 3) and velocity (n, 3) (m, m/s), age (s), drag time (s), kind
+    (0 bow spray, 1 spindrift)."""
+
+    position: np.ndarray
+    velocity: np.ndarray
+    age: np.ndarray
+    tau: np.ndarray
+    kind: np.ndarray
+
+    @classmethod
+    def none(cls) -> Puffs:
+        return cls(np.zeros((0, 3)), np.zeros((0, 3)), np.zeros(0), np.zeros(0), np.zeros(0, np.int8))
+
+    def __len__(self) -> int:
+        return self.age.size
+
+    def joined(self, other: Puffs) -> Puffs:
+        keep = max(MAX_PUFFS - len(other), 0)
+        return Puffs(*(np.concatenate([a[-keep:] if keep else a[:0], b]) for a, b in
+                       zip((self.position, self.velocity, self.age, self.tau, self.kind),
+                           (other.position, other.velocity, other.age, other.tau, other.kind))))
+
+    def where(self, keep: np.ndarray) -> Puffs:
+        return Puffs(self.position[keep], self.velocity[keep], self.age[keep], self.tau[keep], self.kind[keep])
+
+
+def flown(position: np.ndarray, velocity: np.ndarray, tau: np.ndarray, wind: np.ndarray, h: float
+          ) -> tuple[np.ndarray, np.ndarray]:
+    """Position and velocity (n, 3) after ``h`` s of ``dv/dt = -g z + (wind - v) / tau`` (exact for a steady wind;
+    ``wind`` (3,) m/s, ``tau`` (n,) s)."""
+    terminal = wind[None, :] - np.outer(G * tau, (0.0, 0.0, 1.0))
+    decay = np.exp(-h / tau)[:, None]
+    return (position + terminal * h + (velocity - terminal) * tau[:, None] * (1.0 - decay),
+            terminal + (velocity - terminal) * decay)
+
+
+def whitecap_fraction(u10: float) -> float:
+    """Monahan & O'Muircheartaigh (1980): the sea's whitecap cover at a 10 m wind of ``u10`` m/s (fraction)."""
+    return min(3.84e-6 * max(u10, 0.0) ** 3.41, 1.0)
+
+
+@dataclass(frozen=True)
+class Bow:
+    """Where bow spray leaves the hull (body frame, m): the stem on the waterline, how far aft the flare throws
+    it, the half-breadth there, the waterline length, the draft at the stem and the freeboard of the bow."""
+
+    stem: np.ndarray
+    reach_m: float
+    half_breadth_m: float
+    length_m: float
+    draft_m: float
+    freeboard_m: float
+
+    @classmethod
+    def of(cls, hull: Hull, drawn: np.ndarray) -> Bow | None:
+        """The bow of ``hull`` (its waterline), its freeboard from the ``drawn`` mesh's vertices (n, 3), or None."""
+        loops = waterline_loops(hull)
+        if not loops:
+            return None
+        points = np.concatenate(loops)
+        length = float(np.ptp(points[:, 0]))
+        x_stem = float(points[:, 0].max())
+        reach = BOW_REACH * length
+        forward = points[points[:, 0] > x_stem - reach]
+        near = np.asarray(drawn, float)
+        near = near[near[:, 0] > x_stem - reach]
+        hull_v = np.asarray(hull.vertices, float)
+        below = hull_v[hull_v[:, 0] > x_stem - reach]
+        return cls(np.array([x_stem, 0.0, 0.0]), reach, float(np.abs(forward[:, 1]).max()), length,
+                   float(max(-below[:, 2].min(), 0.5)) if below.size else 0.5,
+                   float(max(near[:, 2].max(), 0.5)) if near.size else 0.5)
+
+
+class Spray:
+    """The spray of ``sim`` (its vessel's ``bow``, or None for spindrift only), moved on to the simulation's time by
+    :meth:`update`."""
+
+    def __init__(self, sim: Simulation, bow: Bow | None) -> None:
+        self.sim, self.bow = sim, bow
+        self.puffs = Puffs.none()
+        self.time: float | None = None
+        self._components: tuple[int, Components, float] | None = None
+        self._stem: tuple[object, np.ndarray] | None = None
+
+    def update(self, wind: np.ndarray) -> None:
+        """Move the puffs on to the simulation's time in ``wind`` (3,) (E frame, m/s at 10 m); a jump (the first
+        call, a seek, a step back) starts afresh :data:`WARM_UP_S` before."""
+        t = self.sim.time
+        if self.time is None or t < self.time or t - self.time > WARM_UP_S:
+            self.puffs, self.time = Puffs.none(), max(t - WARM_UP_S, 0.0)
+        steps = math.ceil((t - self.time) / STEP_S - 1e-9)
+        if steps == 0:
+            return
+        h = (t - self.time) / steps
+        times = self.time + h * np.arange(steps)
+        stem = self.at_stem(self.time, h, steps) if self.bow is not None and self.sim.vessel is not None else None
+        for i, start in enumerate(times):
+            self._fly(h, wind)
+            rng = np.random.default_rng([self.sim.scenario.run.seed, 7, int(round(start * 1000.0))])
+            if stem is not None:
+                self._bow_spray(start, h, stem[i], rng)
+            self._spindrift(start, h, wind, rng)
+        self.time = t
+
+    def _fly(self, h: float, wind: np.ndarray) -> None:
+        p = self.puffs
+        if len(p):
+            position, velocity = flown(p.position, p.velocity, p.tau, wind, h)
+            p = Puffs(position, velocity, p.age + h, p.tau, p.kind)
+            self.puffs = p.where((p.age < LIFE_S) & (p.position[:, 2] > -0.5))
+
+    def _add(self, new: Puffs) -> None:
+        self.puffs = self.puffs.joined(new)
+
+    def _track_velocity(self) -> np.ndarray:
+        """The vessel's velocity along its newest track (E frame, m/s, (2,)); zero without a vessel."""
+        if self.sim.vessel is None:
+            return np.zeros(2)
+        track = self.sim.response(len(self.sim.legs) - 1).track
+        return track.speed * np.array([math.cos(track.heading), math.sin(track.heading)])
+
+    def _crests(self) -> tuple[Components, float]:
+        """The largest wave components, :data:`CREST_VARIANCE` of the variance (where the crests are), and the
+        standard deviation of the whole sea's elevation (m)."""
+        sim = self.sim
+        key = id(sim.sea)
+        if self._components is None or self._components[0] != key:
+            c = (sim.response(len(sim.legs) - 1).components if sim.vessel is not None
+                 else sim.assembly.components(sim.time))
+            power = np.abs(c.amplitude) ** 2
+            order = np.argsort(power)[::-1]
+            count = int(np.searchsorted(np.cumsum(power[order]), CREST_VARIANCE * power.sum())) + 1
+            keep = np.sort(order[:count])
+            largest = Components(c.omega[keep], c.kx[keep], c.ky[keep], c.amplitude[keep], c.tile[keep])
+            self._components = key, largest, math.sqrt(c.variance)
+        return self._components[1], self._components[2]
+
+    def sea_at(self, x: np.ndarray, y: np.ndarray, t: float) -> np.ndarray:
+        """Elevation (m) of the sea's largest components (:meth:`_crests`) at points (x, y) (n,) (m, E frame) at
+        ``t`` (s)."""
+        c, _ = self._crests()
+        phase = c.omega * t - np.outer(np.ravel(x), c.kx) - np.outer(np.ravel(y), c.ky)
+        return (np.exp(1j * phase) @ c.amplitude).real
+
+    def at_stem(self, start: float, h: float, steps: int) -> np.ndarray:
+        """At the stem at ``start + h * arange(steps)`` (s), (steps, 4): the height of the water over the stem's
+        point on the calm waterline (m), how fast it rises against it (m/s), and the stem's own height (m) and
+        vertical velocity (m/s); linear, as the export's relative motion of a point, from the newest leg's
+        response (a sea or course change under way is taken as done)."""
+        response = self.sim.response(len(self.sim.legs) - 1)
+        if self._stem is None or self._stem[0] is not response:
+            c, track, x_stem = response.components, response.track, float(self.bow.stem[0])
+            at_origin = c.amplitude * np.exp(-1j * (c.kx * track.x0 + c.ky * track.y0))
+            along = c.kx * math.cos(track.heading) + c.ky * math.sin(track.heading)
+            water = at_origin * np.exp(-1j * along * x_stem)
+            stem = (response.transfer[:, 2] - x_stem * response.transfer[:, 4]) * at_origin  # heave - x pitch
+            self._stem = response, np.stack([water - stem, stem], axis=1)
+        coefficients, omega_e = self._stem[1], response.omega_e
+        rates = 1j * omega_e[:, None] * coefficients
+        weights = np.stack([coefficients[:, 0], rates[:, 0], coefficients[:, 1], rates[:, 1]], axis=1)
+        out = np.empty((steps, 4))
+        for lo in range(0, steps, STEM_BLOCK):  # (block, components) phasors at a time: memory stays bounded
+            n = min(STEM_BLOCK, steps - lo)
+            turns = np.ones((n, omega_e.size), complex)
+            turns[1:] = np.exp(1j * omega_e * h)
+            phasors = np.exp(1j * omega_e * (start + lo * h)) * np.cumprod(turns, axis=0)
+            out[lo:lo + n] = (phasors @ weights).real
+        return out
+
+    def threshold_m_s(self) -> float:
+        """Ochi's slamming threshold velocity (m/s) for this bow."""
+        return OCHI_THRESHOLD * math.sqrt(G * self.bow.length_m)
+
+    def _bow_spray(self, t: float, h: float, stem: np.ndarray, rng: np.random.Generator) -> None:
+        """Puffs thrown in the step from ``t`` (s) for ``h`` (s), ``stem`` being :meth:`at_stem`'s row for ``t``."""
+        bow = self.bow
+        height, rising, stem_z, stem_vz = stem
+        v_th = self.threshold_m_s()
+        if rising <= SPRAY_ONSET * v_th or not -bow.draft_m < height < bow.freeboard_m:
+            return
+        n = int(rng.poisson(SLAM_PUFFS_PER_S * min((rising / v_th) ** 2 - SPRAY_ONSET ** 2, 4.0) * h))
+        if n == 0:
+            return
+        side = rng.choice((-1.0, 1.0), n)
+        body = np.c_[-rng.uniform(0.0, bow.reach_m, n), side * bow.half_breadth_m * rng.uniform(0.3, 1.0, n),
+                     np.full(n, max(height, 0.0))]          # from the stem
+        elevation = np.radians(rng.uniform(45.0, 75.0, n))
+        speed = rising * math.pi / (2.0 * np.tan(np.radians(rng.uniform(20.0, 40.0, n))))  # Wagner's jet
+        launch = np.c_[0.2 * speed, side * speed * np.cos(elevation), speed * np.sin(elevation)]
+        now = self.sim.pose()   # the frame's pose, carried back along the track to t (a few seconds at most)
+        rotation = now.matrix()[:3, :3]
+        u = self._track_velocity()
+        at = now.world(bow.stem[None, :])[0]
+        at[:2] -= u * (self.sim.time - t)
+        at[2] = stem_z
+        self._add(Puffs(at + body @ rotation.T, np.array([*u, stem_vz]) + launch @ rotation.T, np.zeros(n),
+                        np.full(n, DROP_TAU_S), np.zeros(n, np.int8)))
+
+    def _spindrift(self, t: float, h: float, wind: np.ndarray, rng: np.random.Generator) -> None:
+        u10 = float(np.hypot(wind[0], wind[1]))
+        on = np.clip((u10 - BEAUFORT_8_M_S) / (BEAUFORT_9_M_S - BEAUFORT_8_M_S), 0.0, 1.0)
+        if on <= 0.0:
+            return
+        area = math.pi * SPINDRIFT_RADIUS_M ** 2
+        expected = SPINDRIFT_PUFFS_PER_M2_S * whitecap_fraction(u10) * on * area * h
+        above = 0.5 * math.erfc(CREST_SIGMA / math.sqrt(2.0))  # share of the sea above the crest level
+        tries = min(int(rng.poisson(expected / above)), 512)
+        if tries == 0:
+            return
+        now = self.sim.pose()
+        centre = np.array([now.x, now.y]) - self._track_velocity() * (self.sim.time - t)
+        r = SPINDRIFT_RADIUS_M * np.sqrt(rng.uniform(0.0, 1.0, tries))
+        a = rng.uniform(0.0, 2.0 * math.pi, tries)
+        x, y = centre[0] + r * np.cos(a), centre[1] + r * np.sin(a)
+        eta = self.sea_at(x, y, t)
+        crest = eta > CREST_SIGMA * self._crests()[1]
+        n = int(crest.sum())
+        if n == 0:
+            return
+        position = np.c_[x[crest], y[crest], eta[crest] + 0.3]
+        velocity = np.outer(rng.uniform(0.3, 0.8, n), wind) + np.c_[np.zeros((n, 2)), rng.uniform(0.5, 2.0, n)]
+        self._add(Puffs(position, velocity, np.zeros(n), np.full(n, SPINDRIFT_TAU_S), np.ones(n, np.int8)))
