@@ -11,7 +11,7 @@ draws a camera's view into the bound framebuffer:
 2. the ocean: rings of vertices around the camera, displaced by the cascades, the Kelvin wake
    (vessel frame) and the solver's field (Earth-fixed grid); shaded with Fresnel, sky reflection,
    subsurface tint, glitter, foam and haze; no water inside the hull;
-3. the vessel mesh (the scenario's visual mesh, else one made from the hull) in its 6-DOF pose;
+3. the vessel mesh (the scenario's visual mesh, else one made from the hull) in its 6-DOF pose, draft marks on;
 4. spray thrown up where the bow slams and blown off the crests in a gale (:mod:`~marinesim.render.spray`);
 5. its navigation lights, by night and in restricted visibility (COLREG sectors and intensities);
 6. rain, as streaks of falling drops over it all.
@@ -31,6 +31,7 @@ from marinesim.gl import is_software
 from marinesim.render import CASCADES
 from marinesim.render.camera import Eye
 from marinesim.render.daylight import Light, light_at
+from marinesim.render.draft_marks import draft_marks
 from marinesim.render.nav_lights import place_lights
 from marinesim.render.spray import Bow, Spray
 from marinesim.render.layers.base import View
@@ -96,8 +97,10 @@ class Renderer:
         self.hull_mask = HullMaskLayer(ctx, sim.vessel.hull if sim.vessel is not None else None,
                                        speed=lambda: sim.speed_m_s)
         self.ocean = OceanLayer(ctx, tiles, n, foam_on=options.foam)
-        self.vessel = VesselLayer(ctx, self.mesh, shown=options.vessel)
         vessel = sim.vessel
+        marks = (draft_marks(vessel.hull, self.mesh.positions) if vessel is not None and vessel.hull is not None
+                 and self.mesh is not None else None)
+        self.vessel = VesselLayer(ctx, self.mesh, shown=options.vessel, marks=marks)
         self.nav_lights = NavLightsLayer(ctx, place_lights(self.mesh.positions, vessel.nav_lights,
                                                            vessel.points.get("bridge"), vessel.speed_m_s > 0.0)
                                          if self.mesh is not None and options.vessel else [])

@@ -4,7 +4,8 @@ A hull file that stops at the waterline (a WAMIT ``.gdf`` holds only the wetted 
 topsides: each of its waterline loops (:func:`~marinesim.hull.waterplane.waterline_loops`; two for
 a catamaran) extruded up by the freeboard, closed with a deck and edged with a bulwark. Paint:
 anti-fouling red below the boot-top, the black boot-top band about the waterline, the scenario's
-topsides colour above, a deck. A point on board above the deck (the bridge) gets a ship around it:
+topsides colour above, a deck (the draft marks are painted by the shader: :mod:`~marinesim.render.draft_marks`).
+A point on board above the deck (the bridge) gets a ship around it:
 the accommodation in decks with window bands, the wheelhouse with the eye in its window band and its
 wings out to the ship's sides, a funnel abaft it, a mast on its roof and a foremast; hatch covers on
 the deck forward of it for a ``hatches`` deck. Faces are wound counter-clockwise seen from outside,

@@ -1,10 +1,12 @@
-"""The vessel pass: the drawn mesh (body frame) carried by the 6-DOF pose, lit by the sky and sun."""
+"""The vessel pass: the drawn mesh (body frame) carried by the 6-DOF pose, lit by the sky and sun, its draft marks
+painted on (:mod:`~marinesim.render.draft_marks`)."""
 
 from __future__ import annotations
 
 import moderngl
 
 from marinesim.pose import Pose
+from marinesim.render.draft_marks import NO_MARKS, DraftMarks
 from marinesim.render.layers.base import View, mat4
 from marinesim.render.program import Program
 from marinesim.render.vessel_mesh import TOPSIDES, VesselMesh, vessel_mesh, visual_mesh
@@ -25,10 +27,12 @@ def drawn_mesh(sim: Simulation) -> VesselMesh | None:
 
 
 class VesselLayer:
-    """Draws ``mesh`` with back faces culled; nothing when it is None or not ``shown``."""
+    """Draws ``mesh`` with back faces culled and ``marks`` painted on; nothing when it is None or not ``shown``."""
 
-    def __init__(self, ctx: moderngl.Context, mesh: VesselMesh | None, shown: bool = True) -> None:
+    def __init__(self, ctx: moderngl.Context, mesh: VesselMesh | None, shown: bool = True,
+                 marks: DraftMarks | None = None) -> None:
         self.ctx, self.mesh, self.shown = ctx, mesh, shown
+        self.marks = marks.uniforms() if marks is not None else NO_MARKS
         self.program = Program.from_files(ctx, "vessel")
         self.vao = self._vbo = None
         if mesh is not None:
@@ -41,8 +45,8 @@ class VesselLayer:
         if self.vao is None or not self.shown:
             return
         self.ctx.enable(moderngl.CULL_FACE)
-        self.program.update(view.shared() | {"u_model": mat4(pose.matrix()),
-                                             "u_view_projection": mat4(view.view_projection)})
+        self.program.update(view.shared() | self.marks | {"u_model": mat4(pose.matrix()),
+                                                          "u_view_projection": mat4(view.view_projection)})
         self.vao.render(moderngl.TRIANGLES)
         self.ctx.disable(moderngl.CULL_FACE)
 
