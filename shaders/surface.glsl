@@ -22,9 +22,16 @@ float inside(vec2 uv) {           // 1 inside the unit square, fading to 0 over 
     return clamp(min(edge.x, edge.y) / 0.05, 0.0, 1.0);
 }
 
+// A wake grid's weight: fading over its outer 5 % astern and abeam; none at its front edge, where the field is at
+// the still level already (the waves start at the bow, the local flow is tapered to it: render/wake_look.py).
+float inside_wake(vec2 uv) {
+    if (uv.x > 1.0) return 0.0;
+    return clamp(min(uv.x, min(uv.y, 1.0 - uv.y)) / 0.05, 0.0, 1.0);
+}
+
 vec4 wake_sample(sampler2D wake, vec4 rect, vec2 v) {  // (h, dh/dx, dh/dy, foam) in the vessel frame
     vec2 uv = (v - rect.xy) * rect.zw;
-    return texture(wake, uv) * inside(uv);
+    return texture(wake, uv) * inside_wake(uv);
 }
 
 vec3 solver_sample(vec2 xy) {      // (h, dh/dx, dh/dy) in the E frame

@@ -35,7 +35,8 @@ def test_the_picture_of_unresolvable_waves_is_the_colour_of_the_mean_level(tmp_p
     white, none red or blue (before, they beat into bands of colour)."""
     short = field_of_waves(2.1).astype(np.float32)
     nx, ny = short.shape[1], short.shape[0]
-    wake = Wake(short, np.arange(nx) * SPACING_M - 700.0, (np.arange(ny) - ny / 2) * SPACING_M,
+    wake = Wake(short, np.zeros_like(short), np.arange(nx) * SPACING_M - 700.0,
+                (np.arange(ny) - ny / 2) * SPACING_M,
                 np.linspace(1.0, 3.0, 20), np.ones(20, complex),
                 {"bow_x_m": 100.0, "speed_kn": 10.0, "froude": 0.2, "wave_resistance_N": 1e5, "hull_source": "x.stl"})
     plot_wake(wake, tmp_path / "wake.png")

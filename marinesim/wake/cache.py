@@ -69,10 +69,11 @@ def _is_entry_of(wake: Wake, hull: Hull, speed_m_s: float, grid: WakeGrid, rho: 
         x, y = stored.axes()
     except (KeyError, TypeError, ValueError):
         return False
-    return (wake.elevation.shape == (stored.ny, stored.nx) and wake.elevation.dtype == np.float32
+    return (wake.elevation.shape == wake.local.shape == (stored.ny, stored.nx)
+            and wake.elevation.dtype == wake.local.dtype == np.float32
             and np.array_equal(wake.x, x) and np.array_equal(wake.y, y)
             and wake.sec.ndim == 1 and wake.sec.shape == wake.amplitude.shape
-            and bool(np.isfinite(wake.elevation).all()))
+            and bool(np.isfinite(wake.elevation).all()) and bool(np.isfinite(wake.local).all()))
 
 
 def precompute_wakes(hull: Hull, speeds_m_s: Iterable[float], grid: WakeGrid = WakeGrid(), *,

@@ -5,7 +5,9 @@ CONVENTIONS (x forward, y to port, origin at the hull's origin on the waterline)
 ``nx`` columns along x and ``ny`` rows across y, as an array ``elevation[row(y), column(x)]``.
 By default the grid starts a few cells ahead of the bow and reaches back ``nx`` cells of
 ``spacing = lambda0 / 16`` (lambda0 = 2 pi U^2 / g, the transverse wavelength), coarser only
-when that would not reach three hull lengths, and never above lambda0 / 4.
+when that would not reach three hull lengths, and never above lambda0 / 4. The waves (``elevation``) come
+from A(theta); the local flow about the hull (``local``: the water raised at the stem and the stern and lowered
+along the shoulders, :mod:`marinesim.wake.local`) is kept apart on the same grid, for the renderer to add.
 """
 
 from __future__ import annotations
@@ -27,6 +29,7 @@ from marinesim.hull import Hull, Hydrostatics, hydrostatics
 from marinesim.wake.amplitude import (hull_reach, resistance_from_amplitude, resistance_quadrature, tuck_amplitude,
                                       wavenumber)
 from marinesim.wake.field import wake_spectrum
+from marinesim.wake.local import local_flow
 from marinesim.wake.measure import kelvin_half_angle_deg, transverse_wavelength
 
 CELLS_PER_WAVELENGTH = 16
@@ -38,8 +41,9 @@ THIN_SHIP_MAX_BEAM_LENGTH = 0.15
 THIN_SHIP_MAX_BLOCK_COEFFICIENT = 0.7
 """Largest block coefficient V / (L B T) reported without a caveat (:func:`thin_ship_note`)."""
 PLOTTED_ANGLES = 400  # A(theta) samples kept in the result, for plots
-BYTES_PER_CELL = 48  # the field's half and whole (float64), the fade, the float32 copy, the measurements' work
-WAKE_FORMAT = 3
+BYTES_PER_CELL = 60  # the field's half and whole (float64), the fade, the float32 copies, the local flow sampled,
+# the measurements' work
+WAKE_FORMAT = 4
 """Version of the wake's numerics and of its file (``info["wake_format"]``): bumped whenever either changes."""
 
 
@@ -71,9 +75,10 @@ class WakeGrid:
 
 @dataclass
 class Wake:
-    """A computed wake: the field on its grid and the numbers that describe it."""
+    """A computed wake: the waves and the local flow on its grid and the numbers that describe them."""
 
-    elevation: np.ndarray  # (ny, nx) float32, m
+    elevation: np.ndarray  # (ny, nx) float32, m: the waves
+    local: np.ndarray  # (ny, nx) float32, m: the local flow's elevation (0 where its grid does not reach)
     x: np.ndarray  # (nx,) m, vessel frame, forward
     y: np.ndarray  # (ny,) m, to port
     sec: np.ndarray  # sec(theta) samples of A, for plots
@@ -86,22 +91,24 @@ class Wake:
         gives the same bytes)."""
         with atomic_path(path) as temp:
             with open(temp, "wb") as handle:
-                np.savez_compressed(handle, elevation_m=self.elevation, x_m=self.x, y_m=self.y, sec_theta=self.sec,
+                np.savez_compressed(handle, elevation_m=self.elevation, local_m=self.local, x_m=self.x, y_m=self.y,
+                                    sec_theta=self.sec,
                                     amplitude_m=self.amplitude, info_json=np.array(json.dumps(self.info)))
 
     @classmethod
     def load(cls, path: str | Path) -> "Wake":
         try:
             with np.load(path) as data:
-                return cls(data["elevation_m"], data["x_m"], data["y_m"], data["sec_theta"], data["amplitude_m"],
-                           json.loads(str(data["info_json"])))
+                return cls(data["elevation_m"], data["local_m"], data["x_m"], data["y_m"], data["sec_theta"],
+                           data["amplitude_m"], json.loads(str(data["info_json"])))
         except Exception as error:  # numpy, zipfile and zlib raise many kinds (even SyntaxError) for damaged files
             raise FileFormatError(path, None, f"not a marinesim wake file: {error}") from None
 
 
 def compute_wake(hull: Hull, speed_m_s: float, grid: WakeGrid = WakeGrid(), *, rho: float = RHO_SEAWATER,
                  g: float = G, refinement: float = 1.0) -> Wake:
-    """Tuck's A(theta), Michell's wave resistance and the far-field wake of ``hull`` at ``speed_m_s``."""
+    """Tuck's A(theta), Michell's wave resistance, the far-field wake and the local flow of ``hull`` at
+    ``speed_m_s``."""
     k0 = wavenumber(speed_m_s, g)
     wavelength = 2.0 * math.pi / k0
     statics = hydrostatics(hull, rho)
@@ -129,6 +136,10 @@ def compute_wake(hull: Hull, speed_m_s: float, grid: WakeGrid = WakeGrid(), *, r
     elevation = spectrum.on_grid(x, y) * _bow_fade(x, bow, stern)
     field_seconds = time.perf_counter() - started
 
+    started = time.perf_counter()
+    local = local_flow(surface, speed_m_s, g).sample(x, y) * _front_taper(x, grid)[None, :]
+    local_seconds = time.perf_counter() - started
+
     info = {
         "speed_m_s": speed_m_s, "speed_kn": speed_m_s / KNOT, "froude": froude, "k0_per_m": k0,
         "transverse_wavelength_m": wavelength, "wave_resistance_N": resistance,
@@ -154,8 +165,8 @@ def compute_wake(hull: Hull, speed_m_s: float, grid: WakeGrid = WakeGrid(), *, r
     if x.min() > stern:
         info["grid_note"] = "the grid ends before the stern: give more columns (nx) or a larger spacing"
     kept = slice(None, None, max(1, len(sec) // PLOTTED_ANGLES))
-    return Wake(elevation.astype(np.float32), x, y, sec[kept], a[kept], info,
-                {"amplitude": amplitude_seconds, "field": field_seconds})
+    return Wake(elevation.astype(np.float32), local.astype(np.float32), x, y, sec[kept], a[kept], info,
+                {"amplitude": amplitude_seconds, "field": field_seconds, "local": local_seconds})
 
 
 def thin_ship_note(statics: Hydrostatics) -> str | None:
@@ -194,4 +205,11 @@ def thin_ship_note(statics: Hydrostatics) -> str | None:
 def _bow_fade(x: np.ndarray, bow: float, stern: float) -> np.ndarray:
     """0 ahead of the bow, rising smoothly to 1 at the stern: the far-field form holds behind the hull."""
     r = np.clip((bow - x) / max(bow - stern, 1e-9), 0.0, 1.0)
+    return r * r * (3.0 - 2.0 * r)
+
+
+def _front_taper(x: np.ndarray, grid: WakeGrid) -> np.ndarray:
+    """1 from :data:`AHEAD_CELLS` cells inside the grid's front edge, falling smoothly to 0 at it: the water the
+    bow raises ahead goes to the still level there, not in a step."""
+    r = np.clip((grid.front_m - x) / (AHEAD_CELLS * grid.spacing_m), 0.0, 1.0)
     return r * r * (3.0 - 2.0 * r)
