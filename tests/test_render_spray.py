@@ -1,4 +1,4 @@
-"""Spray: the drops' flight, the slam that throws it (Ochi's threshold on the relative velocity at the stem),
+"""Spray: the drops' flight, the bow impact that throws it (Ochi's threshold on the relative velocity at the stem),
 spindrift from Beaufort 8, and the puffs on the picture."""
 
 from __future__ import annotations
@@ -135,19 +135,19 @@ def test_spindrift_blows_off_the_crests_from_beaufort_8_and_not_below(heavy):
     assert np.mean(drift.velocity[:, 1]) < -10.0 and abs(np.mean(drift.velocity[:, 0])) < 2.0
 
 
-def test_a_slam_shows_white_spray_at_the_bow_and_nowhere_else(heavy):
-    """The frame just after the hardest slam of the first 200 s, with the puffs and without: the spray
+def test_a_bow_impact_shows_white_spray_at_the_bow_and_nowhere_else(heavy):
+    """The frame just after the hardest bow impact of the first 200 s, with the puffs and without: the spray
     brightens the picture around the bow only."""
     sim, spray = spray_of(heavy)
     height, rising = spray.at_stem(0.0, STEP, 6000)[:, :2].T
     rising[(height < -spray.bow.draft_m) | (height > spray.bow.freeboard_m)] = 0.0
-    slam = float(np.argmax(rising)) * STEP
+    impact = float(np.argmax(rising)) * STEP
     assert rising.max() > spray.threshold_m_s()
     sim.close()
     with offscreen(heavy, (480, 270)) as view:
         orbit = view.scene.cameras["orbit"]
         orbit.azimuth_deg, orbit.elevation_deg, orbit.distance_m = 125.0, 12.0, 200.0
-        view.go_to(slam + 0.5)
+        view.go_to(impact + 0.5)
         puffs = view.scene.renderer.spray.puffs
         assert len(puffs) > 50
         with_spray = luminance(view.frame(hud=False))

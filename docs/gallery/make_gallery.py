@@ -1,7 +1,7 @@
 """The picture gallery: every shipped scenario from the orbit camera and from its bridge, then the same ships at
-night, at dusk, in fog, in a gale and slamming, as headless marinesim draws them (960x540 JPEG of quality 85, the HUD on: a
-tenth of a PNG of the sea's detail), and docs/gallery/README.md listing them, so that the next change to the
-picture can be compared by eye.
+night, at dusk, in fog, in a gale and throwing spray, as headless marinesim draws them (960x540 JPEG of quality
+85, the HUD on: a tenth of a PNG of the sea's detail), and docs/gallery/README.md listing them, so that the next
+change to the picture can be compared by eye.
 
 Run from the repository root: python docs/gallery/make_gallery.py
 The frames are reproducible (headless renders use numpy.fft for the sea: the same scenario gives the same bytes).
@@ -67,8 +67,9 @@ SHOTS = (
     Shot("storm_s175", "s175_heavy_weather.toml", "The S175 in a storm: the sea doubled, 24 m/s of wind (Beaufort "
          "9), overcast.", air={"wind_speed_m_s": 24.0, "cloud_cover_oktas": 8.0, "visibility_m": 5000.0},
          elevation_deg=12.0, hs_factor=2.0),
-    Shot("slam_s175", "s175_heavy_weather.toml", "The S175 half a second after her hardest slam of the first ten "
-         "minutes (the sea rising at 1.7 times Ochi's threshold against her stem): spray off both sides of the bow.",
+    Shot("bow_impact_s175", "s175_heavy_weather.toml", "The S175 half a second after the hardest bow impact of her "
+         "first ten minutes (the sea rising against her stem at 1.7 times Ochi's slamming velocity; her forefoot stays "
+         "in the water, so the slamming criterion stays at 0): spray off both sides of the bow.",
          at_s=401.2, azimuth_deg=125.0, elevation_deg=12.0, distance_m=200.0),
 )
 

@@ -1,16 +1,16 @@
-"""Spray: sheets thrown up where the bow slams into the sea, and spindrift torn off the crests in a gale. Puffs of
+"""Spray: sheets thrown up where the bow meets the rising sea, and spindrift torn off the crests in a gale. Puffs of
 drops that fly, fall and drift with the wind, stepped on the CPU with the simulation's clock and drawn by
 :mod:`~marinesim.render.layers.spray`.
 
-Bow spray. The bow slams when the sea rises against it faster than Ochi's (1964) threshold
-``v_th = 0.093 sqrt(g L)`` (L the waterline length; REFERENCES section 8's slamming criterion). The rising speed
-is the time derivative of the water's height over the stem's point on the calm waterline, linear as the
-export's relative motion of a point: the incident sea along the stem's path (met at the encounter frequency)
-less the stem's heave and pitch, taken while the water is at the bow (between the forefoot and the deck). From
-:data:`SPRAY_ONSET` of the threshold on, a plunge sweeps up the flare and throws
-:data:`SLAM_PUFFS_PER_S` ``x ((v / v_th)^2 - SPRAY_ONSET^2)`` puffs a second up and out from it, on top of the
-stem's own velocity, at Wagner's (1932) jet speed ``pi v / (2 tan beta)`` for a flare at ``beta`` 20-40 deg
-to the water.
+Bow spray. Ochi (1964) takes the sea rising against the bow faster than ``v_th = 0.093 sqrt(g L)`` (L the
+waterline length; REFERENCES section 8) as the impact of a slam; a bottom slam also needs the forefoot out of the
+water (the slamming criterion), a flare impact does not, and both throw spray. The rising speed is the time
+derivative of the water's height over the stem's point on the calm waterline, linear as the export's relative
+motion of a point: the incident sea along the stem's path (met at the encounter frequency) less the stem's heave
+and pitch, taken while the water is at the bow (between the forefoot and the deck). From :data:`SPRAY_ONSET` of
+the threshold on, a plunge sweeps up the flare and throws :data:`SLAM_PUFFS_PER_S`
+``x ((v / v_th)^2 - SPRAY_ONSET^2)`` puffs a second up and out from it, on top of the stem's own velocity, at
+Wagner's (1932) jet speed ``pi v / (2 tan beta)`` for a flare at ``beta`` 20-40 deg to the water.
 
 Spindrift. From Beaufort 8 (17.2 m/s at 10 m), when "edges of crests begin to break into spindrift" (WMO),
 crests within :data:`SPINDRIFT_RADIUS_M` of the vessel shed puffs at a rate proportional to the whitecap
