@@ -208,9 +208,10 @@ def test_the_picture_shows_the_criteria_and_the_message(tmp_path):
 
 
 def test_fog_rolls_in_when_its_event_happens_and_the_instructor_clears_it(tmp_path):
-    """A scripted event brings the visibility down to 800 m and the cloud to 8 oktas at its time, not before (a
-    fog that came early or never would make a different exercise); the instructor's weather action lifts the
-    fog; the run's scenario keeps its own [environment] for a second run."""
+    """A scripted event brings the visibility down to 800 m and the cloud to 8 oktas from its time, not before (a
+    fog that came early or never would make a different exercise), over its ramp (10 s): halfway, the fog's
+    extinction (1 / visibility) and the cloud are halfway; the instructor's weather action lifts the fog at once;
+    the run's scenario keeps its own [environment] for a second run."""
     text = CONDITIONAL.format(threshold=100.0).replace(
         'message = "two hundred seconds"', 'message = "fog"\nvisibility_m = 800.0\ncloud_cover_oktas = 8.0')
     scenario = load_scenario(write(tmp_path, text))
@@ -219,7 +220,11 @@ def test_fog_rolls_in_when_its_event_happens_and_the_instructor_clears_it(tmp_pa
     exercise = Exercise(simulation, log=lines.append)
     exercise.advance_to(199.0)
     assert simulation.environment == scenario.environment
-    exercise.advance_to(201.0)
+    exercise.advance_to(205.0)
+    halfway = simulation.environment
+    assert 1.0 / halfway.visibility_m == pytest.approx(0.5 / 40_000.0 + 0.5 / 800.0)
+    assert halfway.cloud_cover_oktas == pytest.approx(0.5 * scenario.environment.cloud_cover_oktas + 4.0)
+    exercise.advance_to(210.0)
     assert (simulation.environment.visibility_m, simulation.environment.cloud_cover_oktas) == (800.0, 8.0)
     assert lines[-1].endswith("at 200 s: visibility 800 m cloud 8 oktas; 'fog'")
     exercise.act("weather", visibility_m=5000.0)

@@ -391,7 +391,7 @@ class EventOptions(Section):
         None, description='instead of at_s: the first evaluation at which a criterion\'s value (or a '
                           '"[point.]quantity") meets a comparison, e.g. "bridge.vertical_acc_rms_m_s2 > 1.0"')
     ramp_s: Annotated[float, Quantity("s", ge=0.0, le=MAX_RAMP_S)] = Field(
-        CHANGE_RAMP_S, description="how long the change blends in (> 0 for a sea change)")
+        CHANGE_RAMP_S, description="how long the change blends in, weather too (> 0 for a sea change)")
     sea: list[SeaOptions] | None = Field(None, description="wave systems that replace the sea (as [[sea]])")
     speed_kn: Annotated[float | None, Quantity("kn", ge=0.0, le=MAX_SPEED_KN)] = Field(None, description="new speed")
     heading_deg: Annotated[float | None, Quantity("deg", ge=0.0, le=360.0, what="a compass heading")] = Field(

@@ -276,7 +276,7 @@ class Exercise:
     def _happen(self, index: int, t: float, early: bool = False) -> None:
         happened = Happened(index, t, self.events[index], early)
         if happened.event.weather:
-            self.sim.environment = self.sim.environment.changed(**happened.event.weather)
+            self.sim.change_weather(ramp_s=happened.event.ramp_s, **happened.event.weather)
         self.happened.append(happened)
         self.note("event", index=index, what=happened.event.describe(), **({"early": True} if early else {}))
         self.log(happened.line())
@@ -292,7 +292,7 @@ class Exercise:
         if action == "change":
             self.sim.change(**fields)
         elif action == "weather":
-            self.sim.environment = self.sim.environment.changed(**fields)
+            self.sim.change_weather(**fields)
         elif action == "trigger":
             self._trigger(fields["index"])
         elif action == "message":

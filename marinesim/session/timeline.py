@@ -30,7 +30,7 @@ from marinesim.errors import ParameterError, require_at_least, require_positive
 from marinesim.pose import Pose
 from marinesim.recent import Recent
 from marinesim.scenario import Scenario
-from marinesim.scenario.model import CHANGE_RAMP_S, MAX_SPEED_KN
+from marinesim.scenario.model import CHANGE_RAMP_S, MAX_SPEED_KN, WEATHER, EnvironmentOptions
 from marinesim.sea.ocean import smoothstep
 from marinesim.sea.seastate import SeaState, scaled_sea
 from marinesim.session.assembly import Assembly
@@ -63,6 +63,31 @@ class _Change:
 
 
 @dataclass(frozen=True)
+class _WeatherRamp:
+    """A weather change from ``before`` to ``after`` over ``ramp_s`` from ``start`` (s), with the sea's smoothstep:
+    the fog thickens as its extinction (1 / visibility) blends, cloud, wind and rain blend linearly; a key that
+    one side leaves to the sea (the wind) changes at once."""
+
+    start: float
+    ramp_s: float
+    before: EnvironmentOptions
+    after: EnvironmentOptions
+
+    def at(self, t: float) -> EnvironmentOptions:
+        s = (t - self.start) / self.ramp_s if self.ramp_s > 0.0 else 1.0
+        if s >= 1.0:
+            return self.after
+        w = float(smoothstep(max(s, 0.0)))
+        keys: dict[str, float] = {}
+        for key in WEATHER:
+            a, b = getattr(self.before, key), getattr(self.after, key)
+            if a is None or b is None or a == b:
+                continue
+            keys[key] = 1.0 / ((1.0 - w) / a + w / b) if key == "visibility_m" else (1.0 - w) * a + w * b
+        return self.after.changed(**keys) if keys else self.after
+
+
+@dataclass(frozen=True)
 class Leg:
     """From ``start`` (s) the vessel follows ``track`` in ``sea``, blending in over ``ramp_s``."""
 
@@ -91,8 +116,7 @@ class Simulation:
         self.assembly = Assembly(scenario) if assembly is None else assembly
         self.ocean = self.assembly.ocean
         self.time = 0.0
-        self.environment = scenario.environment
-        """The light and the air now: the scenario's, as events and the instructor have changed them."""
+        self._weather = _WeatherRamp(0.0, 0.0, scenario.environment, scenario.environment)
         self.vessel = scenario.vessel
         heading = compass_to_math(self.vessel.heading_deg) if self.vessel else 0.0
         speed = self.vessel.speed_m_s if self.vessel else 0.0
@@ -207,6 +231,24 @@ class Simulation:
                                          prepared=self._preparing.submit(self.ocean.prepare, sea))
         self._pending.append(change)
         self._move_clock(self.time)
+
+    @property
+    def environment(self) -> EnvironmentOptions:
+        """The light and the air now: the scenario's, as events and the instructor have changed them, a change
+        under way blended (:class:`_WeatherRamp`)."""
+        return self._weather.at(self.time)
+
+    @environment.setter
+    def environment(self, value: EnvironmentOptions) -> None:
+        self._weather = _WeatherRamp(self.time, 0.0, value, value)
+
+    def change_weather(self, hours: float = 0.0, ramp_s: float = 0.0, **keys: float) -> None:
+        """Change the weather now: ``keys`` (the :data:`~marinesim.scenario.model.WEATHER` keys) blend in over
+        ``ramp_s`` (s) from the weather of the moment; the clock (``hours``, with ``time_utc``) moves at once."""
+        before = self.environment
+        after = before.changed(hours, **keys)
+        ramp = require_at_least("ramp time (s)", ramp_s, 0.0)
+        self._weather = _WeatherRamp(self.time, ramp, before.changed(hours) if hours else before, after)
 
     def _start(self, change: _Change, at: float) -> None:
         t, last = at, self.legs[-1]
