@@ -20,8 +20,8 @@ A puff is drops of one size: their drag time ``tau`` is their terminal fall spee
 sheet breaks into drops of about 3 mm, 8.1 m/s; spindrift 0.4 mm, 1.6 m/s). They follow
 ``dv/dt = -g z + (w - v) / tau`` with ``w`` the wind at 10 m (E frame), integrated exactly over each step for a
 steady wind, so the path does not depend on the frame rate. A puff spreads as it flies and is gone when it
-falls back below the mean sea level or after :data:`LIFE_S`. The stream is seeded by the run's seed and the
-time: the same run gives the same spray.
+falls half a metre below the still water level or after :data:`LIFE_S`. The stream is seeded by the run's seed
+and the time: the same run gives the same spray.
 """
 
 from __future__ import annotations
@@ -35,7 +35,8 @@ from marinesim.constants import G
 from marinesim.hull import Hull
 from marinesim.hull.waterplane import waterline_loops
 from marinesim.sea.ocean import Components
-from marinesim.session.timeline import Simulation
+from marinesim.session.timeline import Leg, Simulation
+from marinesim.vessel.response import Response
 
 OCHI_THRESHOLD = 0.093
 """Slamming threshold velocity over sqrt(g L) (Ochi 1964)."""
@@ -55,13 +56,16 @@ CREST_SIGMA = 1.0
 CREST_VARIANCE = 0.9
 """Share of the sea's variance in the components that place the crests spindrift leaves (the largest)."""
 LIFE_S = 6.0
+"""The longest a puff flies (s): its drops have spread too thin to see."""
 MAX_PUFFS = 4096
+"""Most puffs in flight (the sprite buffer's size): the oldest go first."""
 STEP_S = 1.0 / 30.0
-"""Longest step of the puffs' integration (the emission is sampled at it; the flight is exact)."""
+"""The births' clock: puffs are born at multiples of it (their flight in between is exact)."""
 WARM_UP_S = 4.0
 """A jump in time (a first frame, a seek) starts the spray this long before, so that a still shows it in flight."""
-STEM_BLOCK = 256
-"""Time steps of the sea at the stem summed at once (their phasor table: 256 x components x 16 bytes)."""
+STEM_BLOCK = 32
+"""Time steps of the sea at the stem summed at once (their phasor table: 32 x components x 16 bytes, 5 MB for the
+S175's 10,465)."""
 BOW_REACH = 0.05
 """Puffs leave the flare over this fraction of the waterline length aft of the stem."""
 
@@ -79,18 +83,21 @@ class Puffs:
 
     @classmethod
     def none(cls) -> Puffs:
+        """No puffs."""
         return cls(np.zeros((0, 3)), np.zeros((0, 3)), np.zeros(0), np.zeros(0), np.zeros(0, np.int8))
 
     def __len__(self) -> int:
         return self.age.size
 
     def joined(self, other: Puffs) -> Puffs:
+        """These puffs and ``other``'s, the oldest of these dropped beyond :data:`MAX_PUFFS`."""
         keep = max(MAX_PUFFS - len(other), 0)
         return Puffs(*(np.concatenate([a[-keep:] if keep else a[:0], b]) for a, b in
                        zip((self.position, self.velocity, self.age, self.tau, self.kind),
                            (other.position, other.velocity, other.age, other.tau, other.kind))))
 
     def where(self, keep: np.ndarray) -> Puffs:
+        """The puffs where ``keep`` (n,) bool is true."""
         return Puffs(self.position[keep], self.velocity[keep], self.age[keep], self.tau[keep], self.kind[keep])
 
 
@@ -149,38 +156,38 @@ class Spray:
         self.sim, self.bow = sim, bow
         self.puffs = Puffs.none()
         self.time: float | None = None
-        self._components: tuple[int, Components, float] | None = None
-        self._stem: tuple[object, np.ndarray] | None = None
+        self._crest_set: tuple[Leg, Components, float] | None = None
+        self._stem: tuple[Response, np.ndarray] | None = None
 
     def update(self, wind: np.ndarray) -> None:
         """Move the puffs on to the simulation's time in ``wind`` (3,) (E frame, m/s at 10 m); a jump (the first
-        call, a seek, a step back) starts afresh :data:`WARM_UP_S` before."""
+        call, a seek, a step back) starts afresh :data:`WARM_UP_S` before. Puffs are born on the steps
+        ``k STEP_S`` of the run's clock, each step's from its own seeded stream, and fly exactly in between: the
+        same run gives the same spray whatever the frame rate."""
         t = self.sim.time
         if self.time is None or t < self.time or t - self.time > WARM_UP_S:
             self.puffs, self.time = Puffs.none(), max(t - WARM_UP_S, 0.0)
-        steps = math.ceil((t - self.time) / STEP_S - 1e-9)
-        if steps == 0:
-            return
-        h = (t - self.time) / steps
-        times = self.time + h * np.arange(steps)
-        stem = self.at_stem(self.time, h, steps) if self.bow is not None and self.sim.vessel is not None else None
-        for i, start in enumerate(times):
-            self._fly(h, wind)
-            rng = np.random.default_rng([self.sim.scenario.run.seed, 7, int(round(start * 1000.0))])
+        first, last = math.floor(self.time / STEP_S) + 1, math.floor(t / STEP_S)
+        steps = np.arange(first, last + 1)
+        stem = (self.at_stem(first * STEP_S, STEP_S, len(steps)) if len(steps) and self.bow is not None
+                and self.sim.vessel is not None else None)
+        for i, k in enumerate(steps):
+            self._fly(k * STEP_S - self.time, wind)
+            self.time = k * STEP_S
+            rng = np.random.default_rng([self.sim.scenario.run.seed, 7, int(k)])
             if stem is not None:
-                self._bow_spray(start, h, stem[i], rng)
-            self._spindrift(start, h, wind, rng)
+                self._bow_spray(self.time, stem[i], rng)
+            self._spindrift(self.time, wind, rng)
+        self._fly(t - self.time, wind)
         self.time = t
 
     def _fly(self, h: float, wind: np.ndarray) -> None:
+        """The puffs ``h`` s on; those that fell half a metre into the sea or lived :data:`LIFE_S` are gone."""
         p = self.puffs
-        if len(p):
+        if len(p) and h > 0.0:
             position, velocity = flown(p.position, p.velocity, p.tau, wind, h)
             p = Puffs(position, velocity, p.age + h, p.tau, p.kind)
             self.puffs = p.where((p.age < LIFE_S) & (p.position[:, 2] > -0.5))
-
-    def _add(self, new: Puffs) -> None:
-        self.puffs = self.puffs.joined(new)
 
     def _track_velocity(self) -> np.ndarray:
         """The vessel's velocity along its newest track (E frame, m/s, (2,)); zero without a vessel."""
@@ -190,20 +197,13 @@ class Spray:
         return track.speed * np.array([math.cos(track.heading), math.sin(track.heading)])
 
     def _crests(self) -> tuple[Components, float]:
-        """The largest wave components, :data:`CREST_VARIANCE` of the variance (where the crests are), and the
-        standard deviation of the whole sea's elevation (m)."""
-        sim = self.sim
-        key = id(sim.sea)
-        if self._components is None or self._components[0] != key:
-            c = (sim.response(len(sim.legs) - 1).components if sim.vessel is not None
-                 else sim.assembly.components(sim.time))
-            power = np.abs(c.amplitude) ** 2
-            order = np.argsort(power)[::-1]
-            count = int(np.searchsorted(np.cumsum(power[order]), CREST_VARIANCE * power.sum())) + 1
-            keep = np.sort(order[:count])
-            largest = Components(c.omega[keep], c.kx[keep], c.ky[keep], c.amplitude[keep], c.tile[keep])
-            self._components = key, largest, math.sqrt(c.variance)
-        return self._components[1], self._components[2]
+        """The newest leg's largest wave components, :data:`CREST_VARIANCE` of its variance (where the crests are),
+        and the standard deviation of their elevation (m)."""
+        leg = self.sim.legs[-1]
+        if self._crest_set is None or self._crest_set[0] is not leg:
+            c = self.sim.ocean.components(leg.start + leg.ramp_s, variance_fraction=CREST_VARIANCE)
+            self._crest_set = leg, c, math.sqrt(c.variance)
+        return self._crest_set[1], self._crest_set[2]
 
     def sea_at(self, x: np.ndarray, y: np.ndarray, t: float) -> np.ndarray:
         """Elevation (m) of the sea's largest components (:meth:`_crests`) at points (x, y) (n,) (m, E frame) at
@@ -215,19 +215,16 @@ class Spray:
     def at_stem(self, start: float, h: float, steps: int) -> np.ndarray:
         """At the stem at ``start + h * arange(steps)`` (s), (steps, 4): the height of the water over the stem's
         point on the calm waterline (m), how fast it rises against it (m/s), and the stem's own height (m) and
-        vertical velocity (m/s); linear, as the export's relative motion of a point, from the newest leg's
-        response (a sea or course change under way is taken as done)."""
+        vertical velocity (m/s); linear (heave less x pitch), from the newest leg's response (a sea or course
+        change under way is taken as done)."""
         response = self.sim.response(len(self.sim.legs) - 1)
         if self._stem is None or self._stem[0] is not response:
-            c, track, x_stem = response.components, response.track, float(self.bow.stem[0])
-            at_origin = c.amplitude * np.exp(-1j * (c.kx * track.x0 + c.ky * track.y0))
-            along = c.kx * math.cos(track.heading) + c.ky * math.sin(track.heading)
-            water = at_origin * np.exp(-1j * along * x_stem)
-            stem = (response.transfer[:, 2] - x_stem * response.transfer[:, 4]) * at_origin  # heave - x pitch
-            self._stem = response, np.stack([water - stem, stem], axis=1)
-        coefficients, omega_e = self._stem[1], response.omega_e
-        rates = 1j * omega_e[:, None] * coefficients
-        weights = np.stack([coefficients[:, 0], rates[:, 0], coefficients[:, 1], rates[:, 1]], axis=1)
+            motion = response.motion_coefficients()
+            stem = motion[:, 2] - float(self.bow.stem[0]) * motion[:, 4]
+            water = response.elevation_coefficients(self.bow.stem) - stem
+            iw = 1j * response.omega_e
+            self._stem = response, np.stack([water, iw * water, stem, iw * stem], axis=1)
+        weights, omega_e = self._stem[1], response.omega_e
         out = np.empty((steps, 4))
         for lo in range(0, steps, STEM_BLOCK):  # (block, components) phasors at a time: memory stays bounded
             n = min(STEM_BLOCK, steps - lo)
@@ -241,14 +238,14 @@ class Spray:
         """Ochi's slamming threshold velocity (m/s) for this bow."""
         return OCHI_THRESHOLD * math.sqrt(G * self.bow.length_m)
 
-    def _bow_spray(self, t: float, h: float, stem: np.ndarray, rng: np.random.Generator) -> None:
-        """Puffs thrown in the step from ``t`` (s) for ``h`` (s), ``stem`` being :meth:`at_stem`'s row for ``t``."""
+    def _bow_spray(self, t: float, stem: np.ndarray, rng: np.random.Generator) -> None:
+        """Puffs thrown in the step from ``t`` (s), ``stem`` being :meth:`at_stem`'s row for ``t``."""
         bow = self.bow
         height, rising, stem_z, stem_vz = stem
         v_th = self.threshold_m_s()
         if rising <= SPRAY_ONSET * v_th or not -bow.draft_m < height < bow.freeboard_m:
             return
-        n = int(rng.poisson(SLAM_PUFFS_PER_S * min((rising / v_th) ** 2 - SPRAY_ONSET ** 2, 4.0) * h))
+        n = int(rng.poisson(SLAM_PUFFS_PER_S * min((rising / v_th) ** 2 - SPRAY_ONSET ** 2, 4.0) * STEP_S))
         if n == 0:
             return
         side = rng.choice((-1.0, 1.0), n)
@@ -257,28 +254,27 @@ class Spray:
         elevation = np.radians(rng.uniform(45.0, 75.0, n))
         speed = rising * math.pi / (2.0 * np.tan(np.radians(rng.uniform(20.0, 40.0, n))))  # Wagner's jet
         launch = np.c_[0.2 * speed, side * speed * np.cos(elevation), speed * np.sin(elevation)]
-        now = self.sim.pose()   # the frame's pose, carried back along the track to t (a few seconds at most)
-        rotation = now.matrix()[:3, :3]
+        pose = self.sim.pose(t)
+        rotation = pose.matrix()[:3, :3]
         u = self._track_velocity()
-        at = now.world(bow.stem[None, :])[0]
-        at[:2] -= u * (self.sim.time - t)
+        at = pose.world(bow.stem[None, :])[0]
         at[2] = stem_z
-        self._add(Puffs(at + body @ rotation.T, np.array([*u, stem_vz]) + launch @ rotation.T, np.zeros(n),
-                        np.full(n, DROP_TAU_S), np.zeros(n, np.int8)))
+        self.puffs = self.puffs.joined(Puffs(at + body @ rotation.T, np.array([*u, stem_vz]) + launch @ rotation.T,
+                                             np.zeros(n), np.full(n, DROP_TAU_S), np.zeros(n, np.int8)))
 
-    def _spindrift(self, t: float, h: float, wind: np.ndarray, rng: np.random.Generator) -> None:
+    def _spindrift(self, t: float, wind: np.ndarray, rng: np.random.Generator) -> None:
+        """Puffs torn off the crests around the vessel in the step from ``t`` (s) in ``wind`` (3,) (m/s)."""
         u10 = float(np.hypot(wind[0], wind[1]))
         on = np.clip((u10 - BEAUFORT_8_M_S) / (BEAUFORT_9_M_S - BEAUFORT_8_M_S), 0.0, 1.0)
         if on <= 0.0:
             return
         area = math.pi * SPINDRIFT_RADIUS_M ** 2
-        expected = SPINDRIFT_PUFFS_PER_M2_S * whitecap_fraction(u10) * on * area * h
+        expected = SPINDRIFT_PUFFS_PER_M2_S * whitecap_fraction(u10) * on * area * STEP_S
         above = 0.5 * math.erfc(CREST_SIGMA / math.sqrt(2.0))  # share of the sea above the crest level
         tries = min(int(rng.poisson(expected / above)), 512)
         if tries == 0:
             return
-        now = self.sim.pose()
-        centre = np.array([now.x, now.y]) - self._track_velocity() * (self.sim.time - t)
+        centre = self.sim.legs[-1].track_point(t)[0]
         r = SPINDRIFT_RADIUS_M * np.sqrt(rng.uniform(0.0, 1.0, tries))
         a = rng.uniform(0.0, 2.0 * math.pi, tries)
         x, y = centre[0] + r * np.cos(a), centre[1] + r * np.sin(a)
@@ -289,4 +285,5 @@ class Spray:
             return
         position = np.c_[x[crest], y[crest], eta[crest] + 0.3]
         velocity = np.outer(rng.uniform(0.3, 0.8, n), wind) + np.c_[np.zeros((n, 2)), rng.uniform(0.5, 2.0, n)]
-        self._add(Puffs(position, velocity, np.zeros(n), np.full(n, SPINDRIFT_TAU_S), np.ones(n, np.int8)))
+        self.puffs = self.puffs.joined(Puffs(position, velocity, np.zeros(n), np.full(n, SPINDRIFT_TAU_S),
+                                             np.ones(n, np.int8)))

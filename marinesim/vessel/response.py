@@ -98,15 +98,24 @@ class Response:
         along = c.kx * math.cos(psi) + c.ky * math.sin(psi)
         self.omega_e = c.omega - track.speed * along
         self.transfer = rao(c.omega, beta_rel, track.speed)              # (n, 6)
-        at_origin = c.amplitude * np.exp(-1j * (c.kx * track.x0 + c.ky * track.y0))
-        motion = self.transfer * at_origin[:, None]
+        self._at_origin = at_origin = c.amplitude * np.exp(-1j * (c.kx * track.x0 + c.ky * track.y0))
+        motion = self.motion_coefficients()
         iw = 1j * self.omega_e[:, None]
         columns = [motion, iw * motion, iw ** 2 * motion, at_origin[:, None]]
-        cos_psi, sin_psi = math.cos(psi), math.sin(psi)
-        for p in self.points.values():
-            shift = c.kx * (cos_psi * p[0] - sin_psi * p[1]) + c.ky * (sin_psi * p[0] + cos_psi * p[1])
-            columns.append((at_origin * np.exp(-1j * shift))[:, None])
+        columns += [self.elevation_coefficients(p)[:, None] for p in self.points.values()]
         self._coefficients = np.concatenate(columns, axis=1)               # (n, 19 + points)
+
+    def elevation_coefficients(self, p: np.ndarray) -> np.ndarray:
+        """The incident waves at the mean position of body point ``p`` (3,) (m): complex (n,), the elevation being
+        ``Re sum c exp(i w_e t)`` (m) along the track."""
+        c, psi = self.components, self.track.heading
+        cos_psi, sin_psi = math.cos(psi), math.sin(psi)
+        shift = c.kx * (cos_psi * p[0] - sin_psi * p[1]) + c.ky * (sin_psi * p[0] + cos_psi * p[1])
+        return self._at_origin * np.exp(-1j * shift)
+
+    def motion_coefficients(self) -> np.ndarray:
+        """The six motions' complex amplitudes (n, 6) (m, rad), each ``Re sum c exp(i w_e t)`` along the track."""
+        return self.transfer * self._at_origin[:, None]
 
     @property
     def columns(self) -> list[str]:
