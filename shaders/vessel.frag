@@ -6,11 +6,15 @@ in vec3 v_colour;
 in vec3 v_body;
 in vec3 v_body_normal;
 uniform vec3 u_eye;
-uniform vec3 u_marks_x;  // body-frame x (m) of the forward, midship and aft draft marks (render/draft_marks.py)
-uniform vec2 u_marks_z;  // the keel's z, from which drafts are read, and the highest mark's (m); none when below
+// The draft marks at the forward, midship and aft stations (render/draft_marks.py; body frame, m): their x, the
+// keel line's z there (drafts are read from it), the highest mark's z (none below the keel) and the waterline's
+// half-breadth. NUMERAL, STEP, GLYPH_W, ADVANCE and STROKE (m) are defined by draft_marks.GLYPH.
+uniform vec3 u_marks_x;
+uniform vec3 u_marks_keel;
+uniform vec3 u_marks_top;
+uniform vec3 u_marks_half;
 out vec4 f_colour;
 
-const float NUMERAL = 0.1, STEP = 0.2, GLYPH_W = 0.07, ADVANCE = 0.09, STROKE = 0.018;  // m
 const vec3 MARK_PAINT = vec3(0.85, 0.85, 0.82);
 // A digit's segments as bits: 1 top, 2 top right, 4 bottom right, 8 bottom, 16 bottom left, 32 top left, 64 middle.
 const int SEGMENTS[10] = int[10](0x3F, 0x06, 0x5B, 0x4F, 0x66, 0x6D, 0x7D, 0x07, 0x7F, 0x6F);
@@ -49,22 +53,25 @@ float letter_m(vec2 p) {
     return on * inside(p, vec2(0.0), vec2(w, h));
 }
 
-// 1 where the draft marks are painted at body point p on plating facing n: "<metres>M" at whole metres, the
-// decimetre between them, each numeral's lower edge at the draft it reads.
+// 1 where the draft marks are painted at body point p on plating facing n (outwards, at least half the
+// waterline's half-breadth out): "<metres>M" at whole metres, the decimetre between them, each numeral's lower
+// edge at the draft it reads.
 float draft_mark(vec3 p, vec3 n) {
-    if (abs(n.y) < 0.5 || p.z < u_marks_z.x || p.z > u_marks_z.y) return 0.0;
-    float draft = p.z - u_marks_z.x;
-    float k = floor(draft / STEP);
-    vec2 q = vec2(0.0, draft - k * STEP);
-    if (q.y > NUMERAL) return 0.0;
-    int tenths = int(round(2.0 * k));
-    int metres = tenths / 10, decimetre = tenths % 10;
-    int chars = decimetre != 0 ? 1 : (metres >= 10 ? 3 : 2);
-    float width = float(chars - 1) * ADVANCE + GLYPH_W;
-    float side = n.y < 0.0 ? 1.0 : -1.0;  // seen from outside the text runs forward to starboard, aft to port
+    if (abs(n.y) < 0.5 || n.y * p.y <= 0.0) return 0.0;
     for (int i = 0; i < 3; ++i) {
+        if (abs(p.x - u_marks_x[i]) > 0.2 || p.z < u_marks_keel[i] || p.z > u_marks_top[i]
+            || abs(p.y) < 0.5 * u_marks_half[i]) continue;
+        float draft = p.z - u_marks_keel[i];
+        float k = floor(draft / STEP);
+        vec2 q = vec2(0.0, draft - k * STEP);
+        if (q.y > NUMERAL) return 0.0;
+        int tenths = int(round(2.0 * k));
+        int metres = tenths / 10, decimetre = tenths % 10;
+        int chars = decimetre != 0 ? 1 : (metres >= 10 ? 3 : 2);
+        float width = float(chars - 1) * ADVANCE + GLYPH_W;
+        float side = n.y < 0.0 ? 1.0 : -1.0;  // seen from outside the text runs forward to starboard, aft to port
         float x = (p.x - u_marks_x[i]) * side + 0.5 * width;
-        if (x < 0.0 || x > width) continue;
+        if (x < 0.0 || x > width) return 0.0;
         int c = int(floor(x / ADVANCE));
         q.x = x - float(c) * ADVANCE;
         if (q.x > GLYPH_W) return 0.0;

@@ -33,16 +33,18 @@ def s175():
 
 
 def test_readings_and_where_the_marks_stand(s175):
-    """Whole metres read "<n>M", the rest their decimetre; the keel is the S175's baseline, so the calm waterline
-    (z = -0.05 m in its body frame) reads its design draft, 9.5 m; the forward and aft marks stand near the
-    waterline's ends and go up to the deck edge."""
+    """Whole metres read "<n>M", the rest their decimetre; the keel is the S175's baseline at every station, so the
+    calm waterline (z = -0.05 m in her body frame) reads her design draft, 9.5 m; the forward and aft marks stand
+    near the waterline's ends and go up to 1.5 times the draft (14.3 m: under the deck edge, 15.4 m)."""
     assert [reading(d) for d in (9.0, 9.2, 9.4, 9.6, 9.8, 10.0, 12.0)] == ["9M", "2", "4", "6", "8", "10M", "12M"]
     mesh = visual_mesh(s175.vessel.visual)
     marks = draft_marks(s175.vessel.hull, mesh.positions)
-    assert -0.05 - marks.keel_z == pytest.approx(9.5, abs=0.01)
+    for keel in marks.keel_z:
+        assert -0.05 - keel == pytest.approx(9.5, abs=0.01)
     forward, midship, aft = marks.stations_x
     assert 80.0 < forward < 86.0 and -95.0 < aft < -85.0 and midship == pytest.approx((forward + aft) / 2)
-    assert 5.0 < marks.top_z < 7.0   # the S175's depth is 15.4 m: 5.85 m of freeboard
+    for keel, top in zip(marks.keel_z, marks.top_z):
+        assert top - keel == pytest.approx(1.5 * 9.55)
 
 
 def read_numerals(view, station: int, side: float) -> list[tuple[str, str]]:
@@ -51,7 +53,7 @@ def read_numerals(view, station: int, side: float) -> list[tuple[str, str]]:
     scene = view.scene
     marks, mesh = scene.renderer.vessel.marks, scene.renderer.mesh
     x_station = marks["u_marks_x"][station]
-    keel = marks["u_marks_z"][0]
+    keel = marks["u_marks_keel"][station]
     pose = scene.sim.pose()
     triangles = mesh.positions.reshape(-1, 3, 3)
 
@@ -94,14 +96,14 @@ def read_numerals(view, station: int, side: float) -> list[tuple[str, str]]:
     return found
 
 
-def test_the_marks_on_the_bow_read_the_drafts_above_the_water_on_both_sides(s175):
-    """From 4 m off the plating at the forward marks, every numeral between the waterline and 1.8 m above it reads
-    what its draft says (9.6, 9.8, 10M, ... 11M), port and starboard: numbers misplaced by a step, mirrored on
-    one side or drawn at the wrong height fail it."""
+def test_the_marks_read_the_drafts_above_the_water_at_the_bow_on_both_sides_and_amidships(s175):
+    """From 4 m off the plating at the forward marks (port and starboard) and the midship ones, every numeral between
+    the waterline and 1.8 m above it reads what its draft says (9.6, 9.8, 10M, ... 11M): numbers misplaced by a
+    step, mirrored on one side or drawn at the wrong height fail it."""
     assert STROKE_M * 192.0 > 3.0   # a stroke is over three pixels at 4 m in a 720-line frame
     with offscreen(s175, (1280, 720)) as view:
         view.go_to(5.0)
-        for side in (-1.0, 1.0):
-            found = read_numerals(view, 0, side)
+        for station, side in ((0, -1.0), (0, 1.0), (1, -1.0)):
+            found = read_numerals(view, station, side)
             assert len(found) >= 8
-            assert [read for _, read in found] == [expected for expected, _ in found], (side, found)
+            assert [read for _, read in found] == [expected for expected, _ in found], (station, side, found)

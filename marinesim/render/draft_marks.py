@@ -23,6 +23,8 @@ GLYPH_WIDTH_M, ADVANCE_M, STROKE_M = 0.07, 0.09, 0.018
 """A numeral's width, the distance from one numeral to the next in ``12M``, and the stroke (m)."""
 END_STATION = 0.015
 """The forward and aft marks stand this fraction of the waterline length in from its ends."""
+DEEPEST = 1.5
+"""The marks go up to this many times the still-water draft (the deepest a ship loads to is well within it)."""
 
 
 def reading(draft_m: float) -> str:
@@ -33,38 +35,65 @@ def reading(draft_m: float) -> str:
 
 @dataclass(frozen=True)
 class DraftMarks:
-    """Where the marks are (body frame, m): the x of the forward, midship and aft marks, the keel's z (drafts
-    are read from it) and the highest mark's z (the lowest deck edge at the three)."""
+    """Where the marks are (body frame, m), at the forward, midship and aft stations: their x, the keel line's z
+    there (drafts are read from it: a trimmed hull reads its trim), the highest mark's z and the waterline's
+    half-breadth (marks go only on plating at least half as far out)."""
 
     stations_x: tuple[float, float, float]
-    keel_z: float
-    top_z: float
+    keel_z: tuple[float, float, float]
+    top_z: tuple[float, float, float]
+    half_breadth_m: tuple[float, float, float]
 
     def uniforms(self) -> dict[str, object]:
         """The uniforms of ``shaders/vessel.frag``."""
-        return {"u_marks_x": self.stations_x, "u_marks_z": (self.keel_z, self.top_z)}
+        return {"u_marks_x": self.stations_x, "u_marks_keel": self.keel_z, "u_marks_top": self.top_z,
+                "u_marks_half": self.half_breadth_m}
 
 
-NO_MARKS = {"u_marks_x": (0.0, 0.0, 0.0), "u_marks_z": (0.0, -1.0)}
-"""The uniforms for a vessel without marks (the highest mark below the keel)."""
+NO_MARKS = {"u_marks_x": (0.0,) * 3, "u_marks_keel": (0.0,) * 3, "u_marks_top": (-1.0,) * 3,
+            "u_marks_half": (0.0,) * 3}
+"""The uniforms for a vessel without marks (every top below its keel)."""
+
+GLYPH = {"NUMERAL": NUMERAL_M, "STEP": STEP_M, "GLYPH_W": GLYPH_WIDTH_M, "ADVANCE": ADVANCE_M, "STROKE": STROKE_M}
+"""The numerals' sizes (m) as ``shaders/vessel.frag``'s defines."""
+
+
+def keel_line(hull: Hull) -> np.poly1d:
+    """The keel's z (m) against x along the middle half of the hull: a straight line through the lowest point of
+    each of 16 slices (the flat of the bottom; level unless the hull was loaded trimmed)."""
+    v = np.asarray(hull.vertices, float)
+    lo, hi = v[:, 0].min(), v[:, 0].max()
+    edges = np.linspace(lo + 0.25 * (hi - lo), hi - 0.25 * (hi - lo), 17)
+    slices = np.digitize(v[:, 0], edges)
+    points = [(v[slices == i, 0].mean(), v[slices == i, 2].min()) for i in range(1, 17) if np.any(slices == i)]
+    if len(points) < 2:
+        return np.poly1d([float(v[:, 2].min())])
+    x, z = np.array(points).T
+    return np.poly1d(np.polyfit(x, z, 1))
 
 
 def draft_marks(hull: Hull, drawn: np.ndarray) -> DraftMarks | None:
-    """The marks of ``hull`` (its waterline's ends and its keel) up to the deck edge of the ``drawn`` mesh's
-    vertices (n, 3) at the three stations; None for a hull without a waterline."""
+    """The marks of ``hull`` (its waterline's ends, its keel line) up to :data:`DEEPEST` times the draft, or to the
+    top of the side plating of the ``drawn`` mesh's vertices (n, 3) at the station if lower; None for a hull
+    without a waterline. A station with no drawn side above the water gets no marks (its top at its keel)."""
     loops = waterline_loops(hull)
     if not loops:
         return None
-    x = np.concatenate(loops)[:, 0]
-    inset = END_STATION * float(np.ptp(x))
-    forward, aft = float(x.max()) - inset, float(x.min()) + inset
+    waterline = np.concatenate(loops)
+    inset = END_STATION * float(np.ptp(waterline[:, 0]))
+    forward, aft = float(waterline[:, 0].max()) - inset, float(waterline[:, 0].min()) + inset
     stations = (forward, 0.5 * (forward + aft), aft)
+    keel = keel_line(hull)
     drawn = np.asarray(drawn, float)
-    tops = []
+    keels, tops, halves = [], [], []
     for station in stations:
-        near = drawn[np.abs(drawn[:, 0] - station) < 2.0]
-        if not len(near):
-            return None
-        side = near[np.abs(near[:, 1]) >= 0.9 * np.abs(near[:, 1]).max()]   # the plating at the ship's side
-        tops.append(float(side[:, 2].max()))
-    return DraftMarks(stations, float(np.asarray(hull.vertices)[:, 2].min()), min(tops))
+        keels.append(float(keel(station)))
+        near = np.abs(waterline[:, 0] - station) < 2.0
+        halves.append(float(np.abs(waterline[near, 1]).max()) if near.any() else 0.0)
+        above = drawn[(np.abs(drawn[:, 0] - station) < 2.0) & (drawn[:, 2] > 0.0)]
+        if not len(above):
+            tops.append(keels[-1])
+            continue
+        side = above[np.abs(above[:, 1]) >= 0.9 * np.abs(above[:, 1]).max()]   # the plating at the ship's side
+        tops.append(min(float(side[:, 2].max()), keels[-1] * (1.0 - DEEPEST)))
+    return DraftMarks(stations, tuple(keels), tuple(tops), tuple(halves))

@@ -6,7 +6,7 @@ from __future__ import annotations
 import moderngl
 
 from marinesim.pose import Pose
-from marinesim.render.draft_marks import NO_MARKS, DraftMarks
+from marinesim.render.draft_marks import GLYPH, NO_MARKS, DraftMarks
 from marinesim.render.layers.base import View, mat4
 from marinesim.render.program import Program
 from marinesim.render.vessel_mesh import TOPSIDES, VesselMesh, vessel_mesh, visual_mesh
@@ -33,7 +33,7 @@ class VesselLayer:
                  marks: DraftMarks | None = None) -> None:
         self.ctx, self.mesh, self.shown = ctx, mesh, shown
         self.marks = marks.uniforms() if marks is not None else NO_MARKS
-        self.program = Program.from_files(ctx, "vessel")
+        self.program = Program.from_files(ctx, "vessel", **GLYPH)
         self.vao = self._vbo = None
         if mesh is not None:
             self._vbo = ctx.buffer(mesh.vertex_data().tobytes())
