@@ -55,9 +55,8 @@ def test_the_fft_sum_is_the_direct_sum_of_the_sources_and_their_images(s175):
 
 
 def test_the_bow_raises_the_water_ahead_of_it_and_the_shoulders_lower_it(s175):
-    """At 18 kn: the water stands highest at the stem, falls off ahead of it (under half a metre's share 20 m
-    out), never above the stagnation head U^2 / (2 g), lies lowest beside midships (the ship's own trough) and
-    rises again at the stern."""
+    """At 18 kn: the water stands over half a metre high just ahead of the stem, falls off ahead of it (under
+    15 % of that 20 m out), lies lowest beside midships (the ship's own trough) and rises again at the stern."""
     _, surface, flow = s175
     x, y = flow.axes()
     bow, stern = float(surface.corners[:, 0].max()), float(surface.corners[:, 0].min())
@@ -66,9 +65,7 @@ def test_the_bow_raises_the_water_ahead_of_it_and_the_shoulders_lower_it(s175):
     def ahead(m: float) -> float:
         return float(centre[np.argmin(np.abs(x - (bow + m)))])
 
-    head = SPEED**2 / (2.0 * G)
-    assert flow.elevation.max() <= head + 1e-9
-    assert 0.5 < ahead(1.0) < head
+    assert 0.5 < ahead(1.0) < 0.5 * SPEED**2 / (2.0 * G)   # well under the stagnation head
     assert ahead(1.0) > ahead(5.0) > ahead(20.0) > ahead(60.0) > 0.0
     assert ahead(20.0) < 0.15 * ahead(1.0)
     beside = flow.elevation[np.argmin(np.abs(y - float(np.abs(surface.corners[:, 1]).max()) - 2.0))]
@@ -109,7 +106,8 @@ def water_in_front(view, body_point: np.ndarray, eye_offset: np.ndarray) -> bool
     free.pitch_deg = math.degrees(math.atan2(look[2], math.hypot(look[0], look[1])))
     view.frame(hud=False)
     width, height = view.size
-    depth = np.frombuffer(view._fbo.read(components=1, attachment=-1, dtype="f4"), np.float32).reshape(height, width)[::-1]
+    depth = np.frombuffer(view._fbo.read(components=1, attachment=-1, dtype="f4"), np.float32)
+    depth = depth.reshape(height, width)[::-1]
     col, row, distance = scene.camera.eye(pose).project(target[None, :], view.size)[0]
     near, far = NEAR_M, FAR_M
     z = 2.0 * float(depth[int(row), int(col)]) - 1.0

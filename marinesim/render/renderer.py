@@ -12,7 +12,8 @@ draws a camera's view into the bound framebuffer:
    (vessel frame) and the solver's field (Earth-fixed grid); shaded with Fresnel, sky reflection,
    subsurface tint, glitter, foam and haze; no water inside the hull;
 3. the vessel mesh (the scenario's visual mesh, else one made from the hull) in its 6-DOF pose, draft marks on;
-4. spray thrown up where the bow meets the rising sea and blown off the crests in a gale (:mod:`~marinesim.render.spray`);
+4. spray thrown up where the bow meets the rising sea and blown off the crests in a gale
+   (:mod:`~marinesim.render.spray`);
 5. its navigation lights, by night and in restricted visibility (COLREG sectors and intensities);
 6. rain, as streaks of falling drops over it all.
 

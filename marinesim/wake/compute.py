@@ -41,8 +41,9 @@ THIN_SHIP_MAX_BEAM_LENGTH = 0.15
 THIN_SHIP_MAX_BLOCK_COEFFICIENT = 0.7
 """Largest block coefficient V / (L B T) reported without a caveat (:func:`thin_ship_note`)."""
 PLOTTED_ANGLES = 400  # A(theta) samples kept in the result, for plots
-BYTES_PER_CELL = 60  # the field's half and whole (float64), the fade, the float32 copies, the local flow sampled,
-# the measurements' work
+BYTES_PER_CELL = 60
+"""Memory per grid cell: the field's half and whole (float64), the fade, the float32 copies, the local flow sampled
+and the measurements' work."""
 WAKE_FORMAT = 4
 """Version of the wake's numerics and of its file (``info["wake_format"]``): bumped whenever either changes."""
 

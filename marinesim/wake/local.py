@@ -18,7 +18,8 @@ The sum is one FFT per depth layer on a grid about the hull: the transform of ``
 its centre spread over the four nearest cells and the two nearest layers (depths growing by
 :data:`LAYER_RATIO` from one cell; a source nearer the surface than a cell is taken a cell down, which rounds
 off the stem's singular head at the grid's scale). The grid is padded to twice its size, so the sources'
-images in the FFT's periodic copies lie over a hull length away.
+images in the FFT's periodic copies lie over a hull length away, and the field is tapered to the still level
+over the outer quarter of its margin.
 """
 
 from __future__ import annotations
@@ -37,6 +38,7 @@ CELLS_PER_LENGTH = 400
 MARGIN_LENGTHS = 0.5
 """The grid reaches this many hull lengths beyond the hull on every side."""
 LAYER_RATIO = 1.5
+"""Each depth layer this many times deeper than the one above (the first a cell down)."""
 MAX_PIECES = 2_000_000
 """Most sources the split triangles may make."""
 
@@ -54,6 +56,7 @@ class LocalFlow:
     cell_m: float
 
     def axes(self) -> tuple[np.ndarray, np.ndarray]:
+        """The cell centres' x (nx,) and y (ny,) (m, vessel frame)."""
         ny, nx = self.elevation.shape
         return self.x0 + self.cell_m * np.arange(nx), self.y0 + self.cell_m * np.arange(ny)
 
@@ -109,7 +112,8 @@ def local_flow(surface: Surface, speed_m_s: float, g: float = G) -> LocalFlow:
     points, strength = sources(surface, cell)
     strength = strength * speed                                      # m = U n_x dS, m^3/s
     depth = np.maximum(-points[:, 2], cell)
-    layers = cell * LAYER_RATIO ** np.arange(int(math.ceil(math.log(max(depth.max(), cell) / cell, LAYER_RATIO))) + 1)
+    count = max(int(math.ceil(math.log(depth.max() / cell, LAYER_RATIO))), 1) + 1    # two at least
+    layers = cell * LAYER_RATIO ** np.arange(count)
     upper = np.clip(np.searchsorted(layers, depth, side="right") - 1, 0, len(layers) - 2)
     w_lower = np.clip((depth - layers[upper]) / (layers[upper + 1] - layers[upper]), 0.0, 1.0)
 
@@ -127,14 +131,26 @@ def local_flow(surface: Surface, speed_m_s: float, g: float = G) -> LocalFlow:
         share = np.where(upper == layer, 1.0 - w_lower, 0.0) + np.where(upper + 1 == layer, w_lower, 0.0)
         if not share.any():
             continue
-        grid = np.zeros(shape)
+        on = share > 0.0
+        grid = np.zeros(shape[0] * shape[1])
         for dx, dy, w in ((0, 0, (1 - wx) * (1 - wy)), (1, 0, wx * (1 - wy)), (0, 1, (1 - wx) * wy),
                           (1, 1, wx * wy)):
-            np.add.at(grid, (iy + dy, ix + dx), strength * share * w)
+            cells = (iy[on] + dy) * shape[1] + ix[on] + dx
+            grid += np.bincount(cells, (strength * share * w)[on], grid.size)
+        grid = grid.reshape(shape)
         decay = np.fft.rfft2(grid) * np.exp(-k * layers[layer]) / k
         u_hat += -1j * kx * decay
         v_hat += -1j * ky * decay
     u = np.fft.irfft2(u_hat, shape)[:ny, :nx] / cell**2
     v = np.fft.irfft2(v_hat, shape)[:ny, :nx] / cell**2
-    elevation = (speed**2 - (speed - u) ** 2 - v**2) / (2.0 * g)
+    elevation = (speed**2 - (speed - u) ** 2 - v**2) / (2.0 * g) * _edge_taper(ny, nx, margin / cell)
     return LocalFlow(elevation, u, v, x0, y0, cell)
+
+
+def _edge_taper(ny: int, nx: int, margin_cells: float) -> np.ndarray:
+    """(ny, nx): 1 inside, falling smoothly to 0 over the outer quarter of the margin, so that the field ends
+    at the still level where the grid does (its 1 / r^2 tail is a few cm there)."""
+    def ramp(n: int) -> np.ndarray:
+        r = np.clip(np.minimum(np.arange(n), n - 1 - np.arange(n)) / (0.25 * margin_cells), 0.0, 1.0)
+        return r * r * (3.0 - 2.0 * r)
+    return ramp(ny)[:, None] * ramp(nx)[None, :]
