@@ -24,9 +24,15 @@ def wigley():
 
 
 @pytest.fixture(scope="module")
-def gentle(wigley):
-    """Wigley's wake at Fn 0.3: its steepest waves (99.9th percentile slope 0.16) stand below breaking."""
+def computed(wigley):
+    """Wigley's wake at Fn 0.3: its waves and the local flow about the hull."""
     return compute_wake(wigley, 0.3 * math.sqrt(G * LENGTH_M), WakeGrid(256, 128))
+
+
+@pytest.fixture(scope="module")
+def gentle(computed):
+    """Wigley's waves at Fn 0.3 alone: the steepest (99.9th percentile slope 0.16) stand below breaking."""
+    return dataclasses.replace(computed, local=np.zeros_like(computed.local))
 
 
 @pytest.fixture(scope="module")
@@ -70,6 +76,22 @@ def test_the_wakes_foam_only_where_its_waves_near_breaking(gentle, steep):
         assert np.all(foam[s < lo * (1.0 - 1e-4)] == 0.0), "foam on water that is not near breaking"
     breaking = s > hi * (1.0 + 1e-4)
     assert breaking.any() and np.all(foam[breaking] == 1.0), "the steep wake's breaking crests carry no full foam"
+
+
+def test_the_local_flow_is_drawn_on_the_waves_and_no_cap_on_them_flattens_it(computed):
+    """The drawn elevation is the (capped) waves plus the local flow: a wave field steep enough to be capped leaves
+    the bow's rise as computed; a local flow as steep as breaking (five times Wigley's, as a bluff bow's) foams
+    there and nowhere gentle."""
+    steep = dataclasses.replace(computed, elevation=8.0 * computed.elevation)
+    waves_only = wake_appearance(dataclasses.replace(steep, local=np.zeros_like(steep.local)))
+    look = wake_appearance(steep)
+    np.testing.assert_allclose(look[..., 0] - waves_only[..., 0], computed.local, atol=1e-5)
+    assert computed.local.max() > 0.05 * np.abs(computed.elevation).max()   # Fn 0.3: a bow wave worth drawing
+    bluff = dataclasses.replace(computed, elevation=np.zeros_like(computed.elevation), local=5.0 * computed.local)
+    local_slope = np.hypot(*np.gradient(bluff.local.astype(float), float(computed.x[1] - computed.x[0])))
+    breaking = local_slope > WAKE_SLOPE_FOAM[1] * 1.001
+    foam = wake_appearance(bluff)[..., 3]
+    assert breaking.any() and np.all(foam[breaking] == 1.0) and np.all(foam[local_slope < WAKE_SLOPE_FOAM[0]] == 0)
 
 
 def test_the_slopes_are_the_gradient_of_the_drawn_elevation(gentle, steep):
