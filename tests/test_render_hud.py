@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from conftest import ROOT
+from conftest import DEFAULT, ROOT
 
 from marinesim.render.hud import AXIS_FLOOR, MARGIN, PAD, TRACE_COLOR, Hud, StripChart, StripHistory, axis_limit
 
@@ -182,6 +182,40 @@ def test_draws_at_two_sizes_without_gl_errors_and_releases(ctx):
     assert ctx.error == "GL_NO_ERROR"
 
 
+def test_the_strip_packs_whole_segments_into_the_frames_width(hud):
+    """The compact strip at 640 px, 1280 px and 4K: every segment whole and in order, no line wider than the
+    frame holds (it would be cut with ~), and no line that could have taken the next line's first segment."""
+    segments = ["t 60.0 s", "Hs 3.8 m  Tp 9.0 s  from 290", "4.0 kn  hdg 260", "x" * 40, "orbit",
+                "sun +30  vis 40 km  cloud 0/8  wind 11 m/s", "TAB: panels"]
+    counts = []
+    for width in (640, 1280, 3840):
+        lines, fits = hud.pack(segments, width), hud.columns(width)
+        assert "   ".join(lines) == "   ".join(segments)
+        assert max(len(line) for line in lines) <= fits
+        for line, following in zip(lines, lines[1:]):
+            assert len(line) + 3 + len(following.split("   ")[0]) > fits
+        counts.append(len(lines))
+    assert counts[0] > counts[1] >= counts[2] == 1
+    assert hud.pack(["y" * 500, "z"], 640) == ["y" * 500, "z"], "a segment too long for a line is kept whole"
+
+
+def test_a_vessel_without_a_hull_says_on_screen_that_it_is_not_drawn(tmp_path):
+    """The default scenario without its hull and visual mesh: its motions are computed but nothing is drawn of
+    her, and both the strip and the panels say so (else a trainee sees empty sea and no reason)."""
+    from marinesim.render.offscreen import Offscreen
+    from marinesim.render.scene import NOT_DRAWN
+    from marinesim.scenario import load_scenario
+
+    lines = [line for line in DEFAULT.read_text().splitlines() if not line.startswith(("hull =", "visual_mesh ="))]
+    text = "\n".join(lines).replace('"../rao/', f'"{(ROOT / "rao").as_posix()}/')
+    (tmp_path / "bare.toml").write_text(text)
+    with Offscreen(load_scenario(tmp_path / "bare.toml"), (640, 360), solver="off") as view:
+        assert view.scene.renderer.mesh is None and view.scene.sim.vessel is not None
+        assert NOT_DRAWN in view.scene.strip_lines(640) and NOT_DRAWN in view.scene.hud_lines()
+    with Offscreen(load_scenario(DEFAULT), (640, 360), solver="off") as view:
+        assert NOT_DRAWN not in view.scene.strip_lines(640)
+
+
 def test_the_font_follows_the_target_within_its_range():
     """14 px on a 1280 x 720 target, in proportion to the smaller ratio, never under 9 px nor over 20 px."""
     from marinesim.render.hud import font_px_for
@@ -192,27 +226,36 @@ def test_the_font_follows_the_target_within_its_range():
 
 @pytest.mark.slow
 def test_the_hud_leaves_the_vessel_in_view_with_an_alarm_up():
-    """The helideck exercise at 920 s (pitch alarm, red helideck light, four criteria, three charts): the HUD
+    """The helideck exercise at 920 s (pitch alarm, red helideck light, two of four criteria past caution): the HUD
     against the same frame without it, the vessel against the frame without the vessel. What was wrong (issue
     22): the banners sat over the hull and at 640 x 360 the HUD covered 77 % of the frame and 98 % of the rig.
-    Now the middle of the picture stays free: at most 5 % of the vessel under the HUD at 1280 x 720 and 40 %
-    (the derrick's top behind the text) at 640 x 360, both banners drawn, and no line cut by the frame's edge."""
+    Now the default compact strip leaves the rig free (at most 1 % under it at 1280 x 720, 10 % at 640 x 360, the
+    derrick's top) and covers at most 0.6 of what the full panels (TAB) cover; the panels keep the middle free
+    (5 % and 40 %); both banners are drawn at the bottom, and no line is cut by the frame's edge."""
     from marinesim.render.offscreen import Offscreen
     from marinesim.render.renderer import RenderOptions
     from marinesim.scenario import load_scenario
 
     scenario = load_scenario(ROOT / "configs" / "training" / "helideck_landing.toml")
-    for size, most in (((1280, 720), 0.05), ((640, 360), 0.40)):
+    for size, most_strip, most_panels in (((1280, 720), 0.01, 0.05), ((640, 360), 0.10, 0.40)):
         with Offscreen(scenario, size, solver="off", options=RenderOptions(reproducible=True)) as view:
             view.go_to(920.0)
             banners = view.scene.banners()
-            with_hud, bare = view.frame(hud=True).astype(int), view.frame(hud=False).astype(int)
+            assert [level for _, level in view.scene.criteria_strip()] == ["exceeded", "caution"]
+            strip = view.frame(hud=True).astype(int)
+            view.scene.panels = True
+            panels = view.frame(hud=True).astype(int)
+            bare = view.frame(hud=False).astype(int)
             view.scene.renderer.vessel.shown = False
             no_vessel = view.frame(hud=False).astype(int)
         vessel = np.abs(bare - no_vessel).sum(axis=2) > 30
-        hud = np.abs(with_hud - bare).sum(axis=2) > 30
         assert len(banners) == 2 and vessel.mean() > 0.01
-        assert hud[vessel].mean() <= most, f"{size}: {hud[vessel].mean():.1%} of the vessel under the HUD"
-        red = (with_hud[..., 0] > 150) & (with_hud[..., 1] < 80) & (with_hud[..., 2] < 80)
-        assert red[size[1] // 2:].sum() > 20 * red[:size[1] // 2].sum(), "the alarm banner is not at the bottom"
-        assert not hud[:, -2:].any(), f"{size}: the HUD runs into the right edge (a line cut off)"
+        covered = {}
+        for name, with_hud, most in (("strip", strip, most_strip), ("panels", panels, most_panels)):
+            hud = np.abs(with_hud - bare).sum(axis=2) > 30
+            covered[name] = hud.mean()
+            assert hud[vessel].mean() <= most, f"{size} {name}: {hud[vessel].mean():.1%} of the vessel under the HUD"
+            red = (with_hud[..., 0] > 150) & (with_hud[..., 1] < 80) & (with_hud[..., 2] < 80)
+            assert red[size[1] // 2:].sum() > 20 * red[:size[1] // 2].sum(), "the alarm banner is not at the bottom"
+            assert not hud[:, -2:].any(), f"{size} {name}: the HUD runs into the right edge (a line cut off)"
+        assert covered["strip"] <= 0.6 * covered["panels"], covered

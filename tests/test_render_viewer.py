@@ -116,6 +116,13 @@ def walkthrough(tmp_path: Path) -> None:
             assert viewer.ctx.error == "GL_NO_ERROR"
         assert cameras == ["bridge", "bridge", "free", "free", "orbit"] and controls.show_help
 
+        assert not viewer.scene.panels and not viewer.scene.charts(), "the HUD opens as the compact strip"
+        press(key.TAB, "\t")                               # the full panels: text block, charts, criteria
+        assert viewer.scene.panels and len(viewer.scene.charts()) == 3
+        viewer.draw()
+        press(key.TAB, "\t")
+        assert not viewer.scene.panels
+
         press(key._2, "2")                                # on the bridge, binoculars up: 7 times larger
         naked = viewer.scene.camera.eye(sim.pose()).fov_y_deg
         press(key.B, "b")

@@ -33,7 +33,7 @@ NORTH_SEA = {"latitude_deg": 60.5, "longitude_deg": 2.0}
 class Shot:
     """A picture beyond the shipped ones: ``scenario`` (under configs/) at ``at_s`` under other ``[environment]``
     keys and its sea's heights times ``hs_factor``, from ``camera`` (orbit: at ``azimuth_deg`` from astern and
-    ``elevation_deg``, ``distance_m`` out)."""
+    ``elevation_deg``, ``distance_m`` out), with the HUD as ``hud`` (one of ``marinesim.render.HUDS``)."""
 
     name: str
     scenario: str
@@ -45,9 +45,12 @@ class Shot:
     elevation_deg: float | None = None
     hs_factor: float = 1.0
     distance_m: float | None = None
+    hud: str = "strip"
 
 
 SHOTS = (
+    Shot("helideck_panels", "training/helideck_landing.toml", "The helideck landing at the pitch alarm with the "
+         "HUD's full panels (TAB): every criterion, the motions' strip charts.", at_s=920.0, hud="panels"),
     Shot("night_tanker_port_bow", "default.toml", "The tanker at night from her port bow: masthead lights, red "
          "sidelight, a waxing moon.", air={"time_utc": datetime(2026, 11, 22, 21, 0, tzinfo=timezone.utc),
                                            **NORTH_SEA}, azimuth_deg=200.0, elevation_deg=6.0),
@@ -75,8 +78,8 @@ SHOTS = (
 
 
 def save(scenario: Scenario, out: Path, camera: str, at_s: float, azimuth_deg: float | None = None,
-         elevation_deg: float | None = None, distance_m: float | None = None) -> None:
-    with Offscreen(scenario, (960, 540), camera, "auto", RenderOptions(reproducible=True)) as view:
+         elevation_deg: float | None = None, distance_m: float | None = None, hud: str = "strip") -> None:
+    with Offscreen(scenario, (960, 540), camera, "auto", RenderOptions(reproducible=True, hud=hud)) as view:
         orbit = view.scene.cameras["orbit"]
         if azimuth_deg is not None:
             orbit.azimuth_deg = azimuth_deg
@@ -109,7 +112,7 @@ def main() -> None:
             shots.append(f"![{path.stem}, {camera}]({out.name})")
         rows.append(f"## {path.relative_to(ROOT)} at {at:g} s\n\n{light_words(scenario, at)}\n\n"
                     + "\n".join(shots) + "\n")
-    rows.append("# Night, dusk, fog and storm\n")
+    rows.append("# The full panels; night, dusk, fog and storm\n")
     for shot in SHOTS:
         scenario = load_scenario(ROOT / "configs" / shot.scenario)
         sea = scaled_sea(scenario.sea, shot.hs_factor, 1.0, 0.0)
@@ -119,12 +122,13 @@ def main() -> None:
         environment = type(scenario.environment).model_validate(air | shot.air)
         scenario = dataclasses.replace(scenario, sea=sea, environment=environment)
         out = HERE / f"{shot.name}.jpg"
-        save(scenario, out, shot.camera, shot.at_s, shot.azimuth_deg, shot.elevation_deg, shot.distance_m)
+        save(scenario, out, shot.camera, shot.at_s, shot.azimuth_deg, shot.elevation_deg, shot.distance_m, shot.hud)
         rows.append(f"## {shot.name}: configs/{shot.scenario} at {shot.at_s:g} s\n\n{shot.what} "
                     f"{light_words(scenario, shot.at_s)}\n\n![{shot.name}]({out.name})\n")
     (HERE / "README.md").write_text("# Picture gallery\n\nEvery shipped scenario from the orbit camera and from its "
                                     "bridge, then night, dusk, fog and storm, as `marinesim render --screenshot` "
-                                    "draws them headless (960x540, here on Mesa's llvmpipe). Made by "
+                                    "draws them headless (960x540, here on Mesa's llvmpipe), with the HUD's "
+                                    "compact strip (one shot shows its full panels). Made by "
                                     "`python docs/gallery/make_gallery.py`.\n\n" + "\n".join(rows))
 
 

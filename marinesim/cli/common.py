@@ -10,7 +10,7 @@ from typing import Any
 
 from marinesim.errors import ParameterError, require_finite
 from marinesim.progress import Bar, Reporter
-from marinesim.render import CAMERAS, CASCADES
+from marinesim.render import CAMERAS, CASCADES, HUDS
 
 
 def json_text(value: Any, indent: int | None = None) -> str:
@@ -75,10 +75,13 @@ def add_view_options(p: argparse.ArgumentParser) -> None:
                    help="where the ocean's waves are synthesised each frame: auto = gpu with a GPU, cpu (pyfftw) "
                         "on a software renderer")
     g.add_argument("--no-wake", action="store_true", help="do not draw the Kelvin wake")
+    g.add_argument("--hud", choices=HUDS, default="strip",
+                   help="strip (default: a compact strip), panels (text, strip charts, every criterion) or off; "
+                        "TAB toggles strip and panels in the window")
 
 
 def render_options(args: argparse.Namespace):
     """The renderer's options from the view options."""
     from marinesim.render.renderer import RenderOptions
 
-    return RenderOptions(wake=not args.no_wake, cascades=args.cascades)
+    return RenderOptions(wake=not args.no_wake, cascades=args.cascades, hud=args.hud)

@@ -4,3 +4,6 @@ CAMERAS = ("orbit", "bridge", "free")
 """The cameras a view can look through: orbiting the vessel, on its bridge, flying free."""
 CASCADES = ("auto", "gpu", "cpu")
 """Where the ocean's cascades are synthesised each frame (``RenderOptions.cascades``)."""
+HUDS = ("strip", "panels", "off")
+"""What the HUD shows at first (``RenderOptions.hud``): a compact strip of the figures that matter, the full panels
+(text block, strip charts, every criterion), or nothing; TAB toggles strip and panels in the window."""

@@ -131,7 +131,7 @@ class Controls:
         air = sim.environment
 
         actions = {
-            "H": self.toggle_help, "SPACE": self.toggle_pause, "R": self.toggle_recording,
+            "H": self.toggle_help, "TAB": self.toggle_panels, "SPACE": self.toggle_pause, "R": self.toggle_recording,
             "_1": camera("orbit"), "_2": camera("bridge"), "_3": camera("free"), "B": self.toggle_binoculars,
             "PLUS": lambda: self._scale_time(1), "EQUAL": lambda: self._scale_time(1),
             "MINUS": lambda: self._scale_time(-1),
@@ -181,6 +181,10 @@ class Controls:
 
     def toggle_help(self) -> None:
         self.show_help = not self.show_help
+
+    def toggle_panels(self) -> None:
+        """The HUD's compact strip, or its full panels (text block, strip charts, every criterion)."""
+        self.scene.panels = not self.scene.panels
 
     def toggle_pause(self) -> None:
         self.paused = not self.paused
@@ -262,5 +266,6 @@ HELP = [
     "J / K          instructor: cloud cover -/+ 1 okta    Y / T   clock -/+ 1 h (scenarios with time_utc)",
     "O              instructor: rain none / light / heavy / violent showers",
     "R              start / stop recording the motions (CSV, as marinesim export)",
+    "TAB            HUD: compact strip / full panels (motions, charts, every criterion)",
     "H              this help            ESC      quit",
 ]

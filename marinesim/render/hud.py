@@ -240,7 +240,7 @@ class Hud:
         restored afterwards; the blend function is left at ``moderngl.DEFAULT_BLENDING`` and texture
         unit 0 holds the glyph atlas."""
         width, height = size
-        fits = max(int((width - 2 * MARGIN - 2 * PAD) // self.advance), 1)
+        fits = self.columns(width)
 
         def clip(text: str) -> str:
             return text if len(text) <= fits else text[:fits - 1] + "~"
@@ -307,6 +307,21 @@ class Hud:
             for layer in layers:
                 self._render(layer)
             ctx.viewport = viewport
+
+    def columns(self, width: int) -> int:
+        """How many characters a text block's line holds on a target ``width`` px wide."""
+        return max(int((width - 2 * MARGIN - 2 * PAD) // self.advance), 1)
+
+    def pack(self, segments: Sequence[str], width: int, gap: str = "   ") -> list[str]:
+        """``segments`` joined by ``gap`` into as few lines as a target ``width`` px wide holds, in order; a
+        segment is never split (one longer than a line is cut when drawn)."""
+        fits, lines = self.columns(width), []
+        for segment in segments:
+            if lines and len(lines[-1]) + len(gap) + len(segment) <= fits:
+                lines[-1] += gap + segment
+            else:
+                lines.append(segment)
+        return lines
 
     def charts_that_fit(self, size: tuple[int, int]) -> int:
         """How many strip charts fit in :data:`CHART_SHARE` of the height of a target of ``size`` (w, h) px."""

@@ -58,7 +58,8 @@ class RenderOptions:
     ocean's fields are synthesised each frame, ``"gpu"`` (compute shaders), ``"cpu"`` (the ocean's FFTs,
     uploaded) or ``"auto"`` (the GPU where there is one; the CPU on a software renderer, where the compute
     shaders run 10x slower than FFTW). ``reproducible``: the CPU's fields by numpy.fft, the same pixels
-    whatever the FFTW plans in the cache (headless renders; about 20 ms more a frame at 4 x 256^2)."""
+    whatever the FFTW plans in the cache (headless renders; about 20 ms more a frame at 4 x 256^2). ``hud``: one of
+    :data:`~marinesim.render.HUDS`, drawn over the picture by the scene."""
 
     wake: bool = True
     foam: bool = True
@@ -68,6 +69,7 @@ class RenderOptions:
     solver_size: int = 512
     cascades: str = "auto"
     reproducible: bool = False
+    hud: str = "strip"
 
 
 def gpu_cascades(ctx: moderngl.Context, choice: str) -> bool:

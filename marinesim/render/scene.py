@@ -15,9 +15,12 @@ from datetime import timedelta, timezone
 import moderngl
 import numpy as np
 
+from marinesim.angles import wave_compass_from_beta
+from marinesim.constants import KNOT
+from marinesim.criteria.monitor import LEVELS
 from marinesim.errors import ParameterError
 from marinesim.gl import is_software
-from marinesim.render import CAMERAS
+from marinesim.render import CAMERAS, HUDS
 from marinesim.render.camera import BridgeCamera, FreeCamera, OrbitCamera
 from marinesim.render.clock import FrameClock
 from marinesim.render.hud import ALARM_COLOR, LEVEL_COLORS, Banner, Hud, Slider, StripHistory, font_px_for
@@ -31,6 +34,7 @@ CHARTED = (("heave", "heave_m", "m"), ("roll", "roll_deg", "deg"), ("pitch", "pi
 """Strip charts: title, motion column, unit."""
 HISTORY_STEP_S = 0.2
 """Spacing of the strip charts' samples (s of simulated time)."""
+NOT_DRAWN = "vessel not drawn: the scenario names no hull or visual_mesh (its motions are computed)"
 HELIDECK = "helideck"
 """The criteria at this point, or named starting with it, make the helideck status light."""
 HELIDECK_LIGHTS = {"ok": ("GREEN", "landing permitted"), "caution": ("AMBER", "landing with caution"),
@@ -62,8 +66,13 @@ class Scene:
 
             config = SolverConfig.for_hull(vessel.hull, size=options.solver_size)
             self.sim.start_solver(GpuSolver(config, vessel.hull, self.sim.pose(), ctx=ctx))
+        if options.hud not in HUDS:
+            raise ParameterError(f"--hud must be one of {', '.join(HUDS)}, got {options.hud!r}")
         self.renderer = Renderer(ctx, self.sim, options)
         self.hud = Hud(ctx)
+        self.hud_shown = options.hud != "off"
+        self.panels = options.hud == "panels"
+        """The full panels (text block, strip charts, every criterion) instead of the compact strip (TAB)."""
         mesh = self.renderer.mesh  # the vessel as drawn frames the orbit camera
         length = float(np.ptp(mesh.positions[:, 0])) if mesh is not None else 100.0
         bridge = vessel.points.get("bridge", (0.0, 0.0, 10.0)) if vessel is not None else (0.0, 0.0, 10.0)
@@ -120,15 +129,24 @@ class Scene:
         self._next_sample = times[-1] + HISTORY_STEP_S
 
     def draw(self, size: tuple[int, int], hud: bool = True, help_lines: list[str] | None = None) -> None:
-        """The frame into the bound framebuffer of ``size`` (w, h) px."""
+        """The frame into the bound framebuffer of ``size`` (w, h) px; ``hud=False`` leaves the HUD out."""
         self.renderer.draw(self.camera.eye(self.sim.pose()), size)
-        if hud:
+        if hud and self.hud_shown:
             if font_px_for(size) != self.hud.font_px:  # the HUD keeps its share of a resized target
                 self.hud.release()
                 self.hud = Hud(self.ctx, font_px_for(size))
-            charts = [self.history.chart(name, unit) for name, _, unit in CHARTED] if self.sim.vessel else []
-            self.hud.draw(size, self.hud_lines(), charts, help_lines, self.criteria_panel(), self.exercise.messages(),
-                          self.banners(), self.slider)
+            if self.panels:
+                lines, panel = self.hud_lines(), self.criteria_panel()
+            else:
+                lines, panel = self.strip_lines(size[0]), self.criteria_strip()
+            self.hud.draw(size, lines, self.charts(), help_lines, panel, self.exercise.messages(), self.banners(),
+                          self.slider)
+
+    def charts(self):
+        """The strip charts drawn: the motions' over the last minute, with the panels and a vessel."""
+        if not (self.panels and self.sim.vessel):
+            return []
+        return [self.history.chart(name, unit) for name, _, unit in CHARTED]
 
     def banners(self) -> list[Banner]:
         """The helideck's status light, then the alarms waiting for an acknowledgement (flashing at 1 Hz
@@ -162,6 +180,37 @@ class Scene:
                          f"{criterion.measure.unit:<8}{level}", level))
         return rows
 
+    def criteria_strip(self) -> list[tuple[str, str]]:
+        """The criteria in the compact strip: each one at caution or exceeded as in the panel, else one row
+        counting them by level, coloured by the worst."""
+        rows = self.criteria_panel()
+        alert = [row for row in rows if row[1] in ("caution", "exceeded")]
+        if alert or not rows:
+            return alert
+        levels = [level for _, level in rows]
+        counts = ", ".join(f"{levels.count(level)} {level}" for level in LEVELS if level in levels)
+        return [(f"criteria: {counts}   TAB: all", max(levels, key=LEVELS.index))]
+
+    def strip_lines(self, width: int) -> list[str]:
+        """The compact strip for a target ``width`` px wide: time, sea, course, motions, camera, weather, clock
+        and status, packed into as few lines as fit."""
+        sim, sea = self.sim, self.sim.sea
+        segments = [f"t {sim.time:.1f} s",
+                    f"Hs {sea.hs:.1f} m  Tp {sea.tp:.1f} s  from {wave_compass_from_beta(sea.systems[0].beta):03.0f}"]
+        if sim.vessel is not None:
+            m = sim.pose().motion
+            segments += [f"{sim.speed_m_s / KNOT:.1f} kn  hdg {sim.heading_deg:03.0f}",
+                         f"heave {m[2]:+.2f} m  roll {math.degrees(m[3]):+.1f}  pitch {math.degrees(m[4]):+.1f} deg"]
+        segments.append(self.camera_name + (" 7x" if self.camera_name == "bridge" and self.cameras["bridge"].binoculars
+                                            else ""))
+        segments.append(self.weather_line())
+        if self.clock is not None:
+            segments.append(self.clock.line())
+        lines = self.hud.pack(segments + ["TAB: panels"] + self.status, width)
+        if sim.vessel is not None and self.renderer.mesh is None:
+            lines.append(NOT_DRAWN)
+        return lines
+
     def hud_lines(self) -> list[str]:
         lines = self.sim.describe()
         pose = self.sim.pose()
@@ -171,7 +220,7 @@ class Scene:
             lines.append(f"roll {math.degrees(m[3]):+6.2f}  pitch {math.degrees(m[4]):+6.2f}  "
                          f"yaw {math.degrees(m[5]):+6.2f} deg")
         if self.sim.vessel is not None and self.renderer.mesh is None:
-            lines.append("vessel not drawn: the scenario names no hull or visual_mesh (its motions are computed)")
+            lines.append(NOT_DRAWN)
         line = f"camera {self.camera_name}"
         if self.camera_name == "bridge" and self.cameras["bridge"].binoculars:
             line += " (binoculars 7x)"

@@ -138,7 +138,7 @@ class Viewer:
         size = self.window.get_framebuffer_size()
         scale = size[0] / max(self.window.width, 1)
         px, py = x * scale, size[1] - y * scale
-        left, top, width, height = self.scene.hud.slider_rect(size, self.scene.sim.vessel is not None)
+        left, top, width, height = self.scene.hud.slider_rect(size, bool(self.scene.charts()))
         if left - 4 <= px <= left + width + 4 and top - 8 <= py <= top + height + 8:
             self.controls.seek((px - left) / width * self.replay_log.end_s)
 
