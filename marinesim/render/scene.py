@@ -155,7 +155,7 @@ class Scene:
         helideck = [level for c, _, level in self.exercise.readings()
                     if c.point == HELIDECK or c.label.lower().startswith(HELIDECK)]
         if helideck:
-            worst = max(helideck, key=("settling", "ok", "caution", "exceeded").index)
+            worst = max(helideck, key=LEVELS.index)
             light, meaning = HELIDECK_LIGHTS[worst]
             color = LEVEL_COLORS[worst]
             out.append(Banner(f"HELIDECK {light}: {meaning}", (*[0.35 * c for c in color[:3]], 0.9), color))
@@ -167,11 +167,12 @@ class Scene:
                               f"ENTER: acknowledge", background))
         return out
 
-    def criteria_panel(self) -> list[tuple[str, str]]:
-        """(text, level) rows of the criteria panel: name, latest value / limit and unit, level. A value
-        under 1e-4 of its limit reads 0 (a green-water probability of 1e-12 is none a crew would see)."""
+    def criteria_panel(self, levels: tuple[str, ...] = LEVELS) -> list[tuple[str, str]]:
+        """(text, level) rows of the criteria panel, those at ``levels``: name, latest value / limit and unit,
+        level. A value under 1e-4 of its limit reads 0 (a green-water probability of 1e-12 is none a crew
+        would see)."""
         rows = []
-        readings = self.exercise.readings()
+        readings = [reading for reading in self.exercise.readings() if reading[2] in levels]
         width = max((len(c.label) for c, _, _ in readings), default=0)
         for criterion, value, level in readings:
             shown = ("      --" if value is None else f"{0:8d}" if abs(value) < 1e-4 * abs(criterion.limit)
@@ -183,11 +184,10 @@ class Scene:
     def criteria_strip(self) -> list[tuple[str, str]]:
         """The criteria in the compact strip: each one at caution or exceeded as in the panel, else one row
         counting them by level, coloured by the worst."""
-        rows = self.criteria_panel()
-        alert = [row for row in rows if row[1] in ("caution", "exceeded")]
-        if alert or not rows:
+        alert = self.criteria_panel(("caution", "exceeded"))
+        levels = [level for _, _, level in self.exercise.readings()]
+        if alert or not levels:
             return alert
-        levels = [level for _, level in rows]
         counts = ", ".join(f"{levels.count(level)} {level}" for level in LEVELS if level in levels)
         return [(f"criteria: {counts}   TAB: all", max(levels, key=LEVELS.index))]
 
