@@ -217,10 +217,12 @@ def test_a_vessel_without_a_hull_says_on_screen_that_it_is_not_drawn(tmp_path):
 
 
 def test_the_font_follows_the_target_within_its_range():
-    """14 px on a 1280 x 720 target, in proportion to the smaller ratio, never under 9 px nor over 20 px."""
+    """14 px on a 1280 x 720 target, in proportion to the smaller ratio, never under 9 px nor over 32 px (a 4K
+    screen's: capped at 20 px, its text was 10 px on a 4K display scaled to 200 %)."""
     from marinesim.render.hud import font_px_for
 
-    assert font_px_for((1280, 720)) == 14 and font_px_for((2560, 1440)) == 20 and font_px_for((1920, 1080)) == 20
+    assert font_px_for((1280, 720)) == 14 and font_px_for((2560, 1440)) == 28 and font_px_for((1920, 1080)) == 21
+    assert font_px_for((3840, 2160)) == 32 and font_px_for((7680, 4320)) == 32
     assert font_px_for((640, 360)) == 9 and font_px_for((1280, 360)) == 9 and font_px_for((960, 540)) == 10
 
 

@@ -26,15 +26,17 @@ FIRST_CHAR, LAST_CHAR = 32, 126
 """The atlas holds printable ASCII; anything else is drawn as '?'."""
 ATLAS_COLUMNS = 16
 MARGIN = 8
-"""Gap between the HUD's panels and the edges of the target, px."""
+"""Gap between the HUD's panels and the edges of the target, px at :data:`FONT_PX` and below (scaled with a larger
+font, as :attr:`Hud.margin`)."""
 PAD = 6
-"""Gap between a panel's edge and its text, px."""
+"""Gap between a panel's edge and its text, px at :data:`FONT_PX` and below (:attr:`Hud.pad`)."""
 CHART_SIZE = (360, 70)
 """A strip chart's panel at :data:`FONT_PX`, px (scaled with the font; taller if the font needs it)."""
 FONT_PX = 14
 """The HUD's font size on a 1280 x 720 target; :func:`font_px_for` scales it with the target."""
-FONT_PX_RANGE = (9, 20)
-"""The smallest font still read at a glance and the largest worth the room it takes, px."""
+FONT_PX_RANGE = (9, 32)
+"""The smallest font still read at a glance, and the largest, px: 4K takes it, whose capitals (about 22 px, 0.156 mm
+a pixel on a 27-inch screen) subtend 20 arcmin at 60 cm, the character height ISO 9241-3 prefers (16 at least)."""
 CHART_GAP = 6
 CHART_SHARE = 0.45
 """The strip charts take at most this share of the target's height (the lowest-priority ones are left out): the
@@ -183,7 +185,8 @@ def font_px_for(size: tuple[int, int]) -> int:
 class Hud:
     """Draws the HUD with ``ctx`` onto whatever framebuffer is bound; ``font_px`` is the font size.
 
-    ``advance`` (the monospace character width) and ``line_height`` are in pixels."""
+    ``advance`` (the monospace character width), ``line_height``, ``margin`` and ``pad`` (:data:`MARGIN` and
+    :data:`PAD` scaled with a font larger than :data:`FONT_PX`) are in pixels."""
 
     def __init__(self, ctx: moderngl.Context, font_px: int = FONT_PX) -> None:
         self.ctx = ctx
@@ -203,6 +206,7 @@ class Hud:
         self.atlas.repeat_x = self.atlas.repeat_y = False
         self.font_px = font_px
         scale = font_px / FONT_PX
+        self.margin, self.pad = round(MARGIN * max(scale, 1.0)), round(PAD * max(scale, 1.0))
         self.chart_size = (round(CHART_SIZE[0] * scale), max(round(CHART_SIZE[1] * scale), 3 * self.line_height + 12))
 
         self.text_program = ctx.program(vertex_shader=shader_source("hud_text.vert"),
@@ -249,49 +253,51 @@ class Hud:
         panel = [(clip(text), level) for text, level in panel]
         banners = [replace(banner, text=clip(banner.text)) for banner in banners]
         charts = list(charts)[:self.charts_that_fit(size)]
-        widest = max((self._text_size([b.text], 2 * PAD)[0] for b in banners), default=0)
-        if widest > width - 3 * MARGIN - self.chart_size[0]:
+        widest = max((self._text_size([b.text], 2 * self.pad)[0] for b in banners), default=0)
+        if widest > width - 3 * self.margin - self.chart_size[0]:
             charts = []  # a banner needs the bottom band and there is no room beside the charts: it comes first
         base = _Layer()
         if lines:
-            self._text_block(base, MARGIN, MARGIN, lines, PAD, PANEL_COLOR)
+            self._text_block(base, self.margin, self.margin, lines, self.pad, PANEL_COLOR)
         for index, chart in enumerate(charts):
             self._chart(base, chart, *self.chart_plot_rect(size, index, len(charts)))
-        left = self._text_size(lines, PAD) if lines else (0, 0)
-        right, right_y = (0, 0), MARGIN
+        left = self._text_size(lines, self.pad) if lines else (0, 0)
+        right, right_y = (0, 0), self.margin
         if panel:
             rows = [(text, LEVEL_COLORS[level]) for text, level in panel]
-            right = self._text_size([text for text, _ in rows], PAD)
-            right_x = width - MARGIN - right[0]
-            if right_x < 2 * MARGIN + left[0]:  # no room beside the text block: under it, on the left (the
-                right_x, right_y = MARGIN, 2 * MARGIN + left[1]  # middle of the picture, the vessel's, stays free)
-            self._text_block(base, right_x, right_y, rows, PAD, PANEL_COLOR)
+            right = self._text_size([text for text, _ in rows], self.pad)
+            right_x = width - self.margin - right[0]
+            if right_x < 2 * self.margin + left[0]:  # no room beside the text block: under it, on the left (the
+                right_x, right_y = self.margin, 2 * self.margin + left[1]  # middle, the vessel's, stays free)
+            self._text_block(base, right_x, right_y, rows, self.pad, PANEL_COLOR)
         if messages:
             messages = [clip(m) for m in messages]
-            box_w, box_h = self._text_size(messages, PAD)
-            x, y = (width - box_w) // 2, MARGIN
-            if right_y > MARGIN or x < 2 * MARGIN + left[0] or x + box_w > width - 2 * MARGIN - right[0]:
-                y = MARGIN + max(left[1], right_y - MARGIN + right[1]) + MARGIN  # below the top panels
-            self._text_block(base, max(x, MARGIN), y, [(m, MESSAGE_COLOR) for m in messages], PAD, PANEL_COLOR)
-        above = height - MARGIN  # the bottom band right of the charts, filled upwards
+            box_w, box_h = self._text_size(messages, self.pad)
+            x, y = (width - box_w) // 2, self.margin
+            if right_y > self.margin or x < 2 * self.margin + left[0] or x + box_w > width - 2 * self.margin - right[0]:
+                y = self.margin + max(left[1], right_y - self.margin + right[1]) + self.margin  # below the top panels
+            self._text_block(base, max(x, self.margin), y, [(m, MESSAGE_COLOR) for m in messages], self.pad,
+                             PANEL_COLOR)
+        above = height - self.margin  # the bottom band right of the charts, filled upwards
         if slider is not None:
-            above -= SLIDER_HEIGHT + 2 * PAD + self.line_height + MARGIN
-        beside = MARGIN + (self.chart_size[0] + MARGIN if charts else 0)
+            above -= SLIDER_HEIGHT + 2 * self.pad + self.line_height + self.margin
+        beside = self.margin + (self.chart_size[0] + self.margin if charts else 0)
         for banner in banners:
-            box_w, box_h = self._text_size([banner.text], 2 * PAD)
-            x = beside + max((width - MARGIN - beside - box_w) // 2, 0)
-            if x + box_w > width - MARGIN:  # no room beside the charts: centred, over them
-                x = max((width - box_w) // 2, MARGIN)
+            box_w, box_h = self._text_size([banner.text], 2 * self.pad)
+            x = beside + max((width - self.margin - beside - box_w) // 2, 0)
+            if x + box_w > width - self.margin:  # no room beside the charts: centred, over them
+                x = max((width - box_w) // 2, self.margin)
             above -= box_h
-            self._text_block(base, x, above, [(banner.text, banner.color)], 2 * PAD, banner.background)
-            above -= MARGIN // 2
+            self._text_block(base, x, above, [(banner.text, banner.color)], 2 * self.pad, banner.background)
+            above -= self.margin // 2
         if slider is not None:
             self._slider(base, slider, *self.slider_rect(size, bool(charts)))
         layers = [base]
         if help_lines:
-            box_w, box_h = self._text_size(help_lines, 2 * PAD)
+            box_w, box_h = self._text_size(help_lines, 2 * self.pad)
             top = _Layer()
-            self._text_block(top, (width - box_w) // 2, (height - box_h) // 2, help_lines, 2 * PAD, HELP_PANEL_COLOR)
+            self._text_block(top, (width - box_w) // 2, (height - box_h) // 2, help_lines, 2 * self.pad,
+                             HELP_PANEL_COLOR)
             layers.append(top)
 
         ctx = self.ctx
@@ -310,7 +316,7 @@ class Hud:
 
     def columns(self, width: int) -> int:
         """How many characters a text block's line holds on a target ``width`` px wide."""
-        return max(int((width - 2 * MARGIN - 2 * PAD) // self.advance), 1)
+        return max(int((width - 2 * self.margin - 2 * self.pad) // self.advance), 1)
 
     def pack(self, segments: Sequence[str], width: int, gap: str = "   ") -> list[str]:
         """``segments`` joined by ``gap`` into as few lines as a target ``width`` px wide holds, in order; a
@@ -325,29 +331,30 @@ class Hud:
 
     def charts_that_fit(self, size: tuple[int, int]) -> int:
         """How many strip charts fit in :data:`CHART_SHARE` of the height of a target of ``size`` (w, h) px."""
-        return max(int((CHART_SHARE * size[1] - MARGIN + CHART_GAP) // (self.chart_size[1] + CHART_GAP)), 0)
+        return max(int((CHART_SHARE * size[1] - self.margin + CHART_GAP) // (self.chart_size[1] + CHART_GAP)), 0)
 
     def chart_plot_rect(self, size: tuple[int, int], index: int, count: int) -> tuple[int, int, int, int, int]:
         """Where chart ``index`` of ``count`` is drawn, px from the top-left: ``(panel_x, panel_y,
-        plot_x, plot_y, half)``; the plot spans columns ``plot_x .. panel_x + panel_w - PAD`` and rows
+        plot_x, plot_y, half)``; the plot spans columns ``plot_x .. panel_x + panel_w - self.pad`` and rows
         ``plot_y .. plot_y + 2 * half``, with zero on row ``plot_y + half`` and the axis limits on its
         first and last rows."""
         panel_h = self.chart_size[1]
-        panel_x = MARGIN
-        panel_y = size[1] - MARGIN - (count - index) * (panel_h + CHART_GAP) + CHART_GAP
-        plot_x = panel_x + PAD + 6 * self.advance + 4  # room for labels such as "+0.05" and "-200"
+        panel_x = self.margin
+        panel_y = size[1] - self.margin - (count - index) * (panel_h + CHART_GAP) + CHART_GAP
+        plot_x = panel_x + self.pad + 6 * self.advance + 4  # room for labels such as "+0.05" and "-200"
         plot_y = panel_y + self.line_height + 4
         half = (panel_y + panel_h - 4 - plot_y) // 2
         return panel_x, panel_y, plot_x, plot_y, half
 
     def slider_rect(self, size: tuple[int, int], charts: bool) -> tuple[int, int, int, int]:
         """Where the time slider's track is, px from the top-left: ``(x, y, w, h)``, right of the charts."""
-        x = MARGIN + (self.chart_size[0] + MARGIN if charts else 0) + PAD
-        w = max(size[0] - MARGIN - PAD - x, 1)
-        return x, size[1] - MARGIN - PAD - SLIDER_HEIGHT, w, SLIDER_HEIGHT
+        x = self.margin + (self.chart_size[0] + self.margin if charts else 0) + self.pad
+        w = max(size[0] - self.margin - self.pad - x, 1)
+        return x, size[1] - self.margin - self.pad - SLIDER_HEIGHT, w, SLIDER_HEIGHT
 
     def _slider(self, layer: _Layer, slider: Slider, x: int, y: int, w: int, h: int) -> None:
-        layer.rect(x - PAD, y - PAD - self.line_height, w + 2 * PAD, h + 2 * PAD + self.line_height, PANEL_COLOR)
+        pad = self.pad
+        layer.rect(x - pad, y - pad - self.line_height, w + 2 * pad, h + 2 * pad + self.line_height, PANEL_COLOR)
         self._text(layer, x, y - self.line_height - 2, slider.label, TEXT_COLOR)
         layer.rect(x, y + h // 2 - 1, w, 3, SLIDER_TRACK_COLOR)
         done = min(max(slider.position, 0.0), 1.0) * w
@@ -389,14 +396,14 @@ class Hud:
     def _chart(self, layer: _Layer, chart: StripChart, panel_x: int, panel_y: int, plot_x: int, plot_y: int,
                half: int) -> None:
         panel_w, panel_h = self.chart_size
-        right = panel_x + panel_w - PAD
+        right = panel_x + panel_w - self.pad
         layer.rect(panel_x, panel_y, panel_w, panel_h, PANEL_COLOR)
         times, values = np.asarray(chart.times, dtype=float), np.asarray(chart.values, dtype=float)
         if times.size:
             shown = times >= times[-1] - chart.span_s
             times, values = times[shown], values[shown]
         value = f"{values[-1]:+.2f}" if values.size else "--"
-        self._text(layer, panel_x + PAD, panel_y + 2, f"{chart.title} {value} {chart.unit}", TEXT_COLOR)
+        self._text(layer, panel_x + self.pad, panel_y + 2, f"{chart.title} {value} {chart.unit}", TEXT_COLOR)
         span = f"last {chart.span_s:g} s"
         self._text(layer, right - len(span) * self.advance, panel_y + 2, span, DIM_TEXT_COLOR)
         limit = axis_limit(values)
