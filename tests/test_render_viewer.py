@@ -122,6 +122,9 @@ def walkthrough(tmp_path: Path) -> None:
         viewer.draw()
         press(key.TAB, "\t")
         assert not viewer.scene.panels
+        viewer.scene.hud_shown = False                    # --hud off: TAB brings the strip back
+        press(key.TAB, "\t")
+        assert viewer.scene.hud_shown and not viewer.scene.panels
 
         press(key._2, "2")                                # on the bridge, binoculars up: 7 times larger
         naked = viewer.scene.camera.eye(sim.pose()).fov_y_deg

@@ -183,8 +183,11 @@ class Controls:
         self.show_help = not self.show_help
 
     def toggle_panels(self) -> None:
-        """The HUD's compact strip, or its full panels (text block, strip charts, every criterion)."""
-        self.scene.panels = not self.scene.panels
+        """The HUD's compact strip, or its full panels (text block, strip charts, every criterion); a HUD turned
+        off (``--hud off``) comes back as it was."""
+        if self.scene.hud_shown:
+            self.scene.panels = not self.scene.panels
+        self.scene.hud_shown = True
 
     def toggle_pause(self) -> None:
         self.paused = not self.paused
