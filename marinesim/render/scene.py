@@ -23,7 +23,8 @@ from marinesim.gl import is_software
 from marinesim.render import CAMERAS, HUDS
 from marinesim.render.camera import BridgeCamera, FreeCamera, OrbitCamera
 from marinesim.render.clock import FrameClock
-from marinesim.render.hud import ALARM_COLOR, LEVEL_COLORS, Banner, Hud, Slider, StripHistory, font_px_for
+from marinesim.render.hud import (ALARM_COLOR, LEVEL_COLORS, Banner, Hud, Slider, StripChart, StripHistory,
+                                  font_px_for)
 from marinesim.render.renderer import Renderer, RenderOptions
 from marinesim.scenario import Scenario
 from marinesim.session.exercise import Exercise, quiet
@@ -35,6 +36,7 @@ CHARTED = (("heave", "heave_m", "m"), ("roll", "roll_deg", "deg"), ("pitch", "pi
 HISTORY_STEP_S = 0.2
 """Spacing of the strip charts' samples (s of simulated time)."""
 NOT_DRAWN = "vessel not drawn: the scenario names no hull or visual_mesh (its motions are computed)"
+"""What the HUD says, strip or panels, of a vessel with neither a hull nor a visual mesh."""
 HELIDECK = "helideck"
 """The criteria at this point, or named starting with it, make the helideck status light."""
 HELIDECK_LIGHTS = {"ok": ("GREEN", "landing permitted"), "caution": ("AMBER", "landing with caution"),
@@ -142,7 +144,7 @@ class Scene:
             self.hud.draw(size, lines, self.charts(), help_lines, panel, self.exercise.messages(), self.banners(),
                           self.slider)
 
-    def charts(self):
+    def charts(self) -> list[StripChart]:
         """The strip charts drawn: the motions' over the last minute, with the panels and a vessel."""
         if not (self.panels and self.sim.vessel):
             return []
