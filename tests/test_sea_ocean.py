@@ -30,7 +30,7 @@ from marinesim.sea import (
 )
 from marinesim.sea.cascades import TILE_RATIO
 from marinesim.sea.dispersion import omega_from_k
-from marinesim.sea.fft import available_cpus
+from marinesim.sea.fft import available_cpus, mirrored
 from marinesim.sea.summary import surface_summary
 from marinesim.sea.synthesis import Lane, _jacobian, _pack_cells
 from conftest import close_angle_deg
@@ -456,11 +456,100 @@ def test_bad_ramps_are_refused(north_sea):
     ocean = Ocean(calm, seed=2, resolution=64)
     ocean.ramp_to(rough, start=10.0, duration=20.0)
     with pytest.raises(ParameterError, match="previous"):
-        ocean.ramp_to(calm, start=20.0, duration=5.0)
+        ocean.ramp_to(calm, start=9.0, duration=5.0)  # before the previous ramp's start: out of time order
     with pytest.raises(ParameterError, match="depth"):
         ocean.ramp_to(SeaState(calm.systems, depth=30.0), start=40.0, duration=5.0)
     with pytest.raises(ParameterError, match="-1"):
         ocean.ramp_to(calm, start=40.0, duration=-1.0)
+
+
+def third_sea(north_sea) -> SeaState:
+    """A swell from another direction than both ``ramp_pair`` seas, so a blend of three is told apart."""
+    return SeaState((WaveSystem(Jonswap(3.0, 12.0, 3.3), north_sea.systems[0].beta - 1.0, Cos2s(30.0)),))
+
+
+def test_a_ramp_started_during_another_starts_from_the_blend_of_the_moment(north_sea):
+    """A second sea change halfway through the first: the ocean must go on from the half-blended sea
+    without a jump, end on the new sea, and leave the past untouched. Starting from either end of the
+    first ramp would jump by the size of the amplitudes; ending short of the new sea would leave its
+    variance off; a change to the past would make a replay differ from the live run."""
+    calm, rough = ramp_pair(north_sea)
+    swell = third_sea(north_sea)
+    ocean = Ocean(calm, seed=2, tile_count=2, resolution=32)
+    once = Ocean(calm, seed=2, tile_count=2, resolution=32)
+    for o in (ocean, once):
+        o.ramp_to(rough, start=10.0, duration=20.0)
+    past = {t: once.amplitudes(t).copy() for t in (0.0, 10.0, 14.0, 19.999, 20.0)}
+    past_fields = [f.height.copy() for f in once.fields(17.0)]
+    ocean.ramp_to(swell, start=20.0, duration=10.0)
+    # before the second ramp's start: the same bits as an ocean that never got it
+    for t, amplitude in past.items():
+        np.testing.assert_array_equal(ocean.amplitudes(t), amplitude, err_msg=f"t = {t} s")
+    for height, f in zip(past_fields, ocean.fields(17.0), strict=True):
+        np.testing.assert_array_equal(f.height, height)
+    # no jump at its start: 2 ms move the amplitudes by O(dt) (smoothstep rate <= 1.5 / 10 s), while
+    # the half blend is far from the calm and the rough sea it would have jumped to
+    scale = np.abs(past[20.0]).max()
+    just_before, just_after = ocean.amplitudes(20.0 - 1e-3), ocean.amplitudes(20.0 + 1e-3)
+    assert np.abs(just_after - just_before).max() < 1e-3 * scale
+    for end in (once.amplitudes(0.0), once.amplitudes(30.0)):
+        assert np.abs(end - past[20.0]).max() > 0.1 * scale
+    # halfway: halfway between the frozen blend and the swell (smoothstep(1/2) = 1/2)
+    fresh = Ocean(swell, seed=2, tiles=ocean.tiles)
+    np.testing.assert_allclose(ocean.amplitudes(25.0), 0.5 * (past[20.0] + fresh.amplitudes(0.0)),
+                               rtol=0, atol=1e-12 * scale)
+    # from its end on: the swell itself, variance and all, though the first ramp would still run to 30 s
+    for t in (30.0, 40.0):
+        np.testing.assert_array_equal(ocean.amplitudes(t), fresh.amplitudes(0.0))
+        assert ocean.components(t).variance == pytest.approx(fresh.components().variance, rel=1e-12)
+    assert ocean._settled(30.0) and not ocean._settled(29.0)
+    for a, b in zip(ocean.fields(35.0), fresh.fields(35.0), strict=True):  # the settled spectrum is the swell's
+        np.testing.assert_array_equal(a.height, b.height)
+
+
+def test_blend_states_of_overlapping_ramps_are_the_amplitudes_and_keep_their_meaning(north_sea):
+    """The GPU synthesis uploads ``spectrum_state(id)`` once per id and blends two of them by ``blend(t)``'s
+    weight: that must give the CPU's amplitudes at t inside overlapping ramps, and an id must mean the same
+    state after its amplitudes were dropped from memory and recomputed, or a replay would draw another sea."""
+    calm, rough = ramp_pair(north_sea)
+    seas = (rough, third_sea(north_sea), calm)
+    ocean = Ocean(calm, seed=4, tile_count=2, resolution=32)
+    for i in range(6):  # each starts 2 s into the previous 5 s ramp
+        ocean.ramp_to(seas[i % 3], start=10.0 + 2.0 * i, duration=5.0)
+
+    def spectrum(amplitude):
+        plus, minus = 0.5 * mirrored(amplitude), 0.5 * np.conj(amplitude)
+        return np.stack([(plus + minus).real, (plus + minus).imag, (1j * (plus - minus)).real,
+                         (1j * (plus - minus)).imag], axis=-1)
+
+    times = (11.0, 13.0, 17.5, 21.0, 30.0)
+    seen = {}
+    for t in times:
+        before, after, weight = ocean.blend(t)
+        assert isinstance(before, int) and isinstance(after, int)
+        first, second = ocean.spectrum_state(before), ocean.spectrum_state(after)
+        expected = spectrum(ocean.amplitudes(t))
+        np.testing.assert_allclose(first + weight * (second - first), expected, rtol=0,
+                                   atol=1e-6 * np.abs(expected).max(), err_msg=f"t = {t} s")
+        seen.update({before: first, after: second})
+    assert len(seen) > 4  # frozen blends among them, not only the seas
+    for i in range(6, 20):  # more live changes drop the old states from memory
+        ocean.ramp_to(seas[i % 3], start=10.0 + 2.0 * i, duration=5.0)
+    for state, uploaded in seen.items():
+        np.testing.assert_array_equal(ocean.spectrum_state(state), uploaded, err_msg=f"state {state}")
+
+
+def test_a_ramp_started_at_the_previous_ones_start_replaces_it(north_sea):
+    """Two changes at the same instant: the later one wins from the start, from the sea of that instant."""
+    calm, rough = ramp_pair(north_sea)
+    swell = third_sea(north_sea)
+    ocean = Ocean(calm, seed=1, tile_count=2, resolution=32)
+    ocean.ramp_to(rough, start=10.0, duration=20.0)
+    ocean.ramp_to(swell, start=10.0, duration=4.0)
+    direct = Ocean(calm, seed=1, tile_count=2, resolution=32)
+    direct.ramp_to(swell, start=10.0, duration=4.0)
+    for t in (5.0, 10.0, 12.0, 14.0, 20.0):
+        np.testing.assert_array_equal(ocean.amplitudes(t), direct.amplitudes(t), err_msg=f"t = {t} s")
 
 
 # -- 8. bad input -------------------------------------------------------------------------------------

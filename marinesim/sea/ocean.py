@@ -117,7 +117,18 @@ class PreparedSea:
 class _Ramp:
     start: float
     duration: float
-    sea: SeaState  # after the ramp
+    source: int  # state at the ramp's start
+    target: int  # state after the ramp: its sea's amplitudes
+
+
+@dataclass(frozen=True)
+class _Frozen:
+    """A state that is the blend ``state[before] + weight (state[after] - state[before])``, frozen when a ramp
+    started during another one."""
+
+    before: int
+    after: int
+    weight: float
 
 
 class Ocean:
@@ -160,8 +171,10 @@ class Ocean:
         self.m0_fraction = self.represented_m0 / sea.moment(0)
         """Fraction of the sea state's m0 that the tiles carry."""
         self._ramps: list[_Ramp] = []
+        self._kinds: list[SeaState | _Frozen] = [sea]
+        """What each state is: a sea's amplitudes, or a blend of two earlier states frozen at a ramp's start."""
         self._states = Recent(self._state)
-        """Amplitudes of every cell after 0, 1, 2, ... ramps (the newest kept, older recomputed)."""
+        """Amplitudes of every cell in states 0, 1, 2, ... (the newest kept, older recomputed)."""
         self._used = self._amplitude0 != 0
         self._used |= mirrored(self._used)
         self._choppiness = require_within("choppiness", choppiness, *CHOPPINESS_RANGE)
@@ -232,7 +245,7 @@ class Ocean:
 
     def _settle(self) -> None:
         """Keep the spectrum's parts after the last ramp: every frame after it reuses them."""
-        newest = len(self._ramps)
+        newest = len(self._kinds) - 1  # the last ramp's target
         self._settled_amplitudes = self._half_amplitudes(self._states.get(newest, newest)[self._cell])
 
     def _assign_cells(self, n: int) -> list[tuple[slice, np.ndarray]]:
@@ -302,17 +315,29 @@ class Ocean:
         """Change to ``sea`` smoothly over ``[start, start + duration]`` s (smoothstep in time).
 
         The tiles and the seeded noise stay, so the surface changes shape without a jump: each
-        cell's amplitude moves from its old to its new value. Ramps must not overlap.
+        cell's amplitude moves from its value at ``start`` to its new value. A ramp may start while
+        the previous one is under way (not before that one's start): it then starts from the blend
+        of the moment, and the previous ramp ends there.
         """
         start = require_finite("ramp start", start)
         duration = require_positive("ramp duration", duration)
-        if self._ramps and start < self._ramps[-1].start + self._ramps[-1].duration:
-            raise ParameterError("a sea-state ramp must start after the previous one has ended")
+        if self._ramps and start < self._ramps[-1].start:
+            raise ParameterError("a sea-state ramp must not start before the previous one's start "
+                                 f"({self._ramps[-1].start:g} s), got {start:g} s")
         prepared = sea if isinstance(sea, PreparedSea) else self.prepare(sea)
         if prepared.ocean is not self:
             raise ParameterError("a sea prepared by another ocean cannot ramp this one")
-        self._ramps.append(_Ramp(start, duration, prepared.sea))
-        self._states.put(len(self._ramps), prepared.amplitudes)
+        before, after, weight = self.blend(start)
+        if before == after or weight == 0.0:
+            source = before
+        else:  # under way: its blend at ``start`` becomes a state of its own
+            frozen = self._mix(before, after, weight)  # the amplitudes at ``start``, to the bit
+            source = len(self._kinds)
+            self._kinds.append(_Frozen(before, after, weight))
+            self._states.put(source, frozen)
+        self._kinds.append(prepared.sea)
+        self._ramps.append(_Ramp(start, duration, source, len(self._kinds) - 1))
+        self._states.put(len(self._kinds) - 1, prepared.amplitudes)
         used = prepared.amplitudes != 0
         used |= mirrored(used)
         if np.any(used & ~self._used):  # new cells: every per-cell array grows
@@ -320,41 +345,52 @@ class Ocean:
             self._index_cells()
         self._settle()
 
-    def _state(self, ramps: int) -> np.ndarray:
-        """Complex amplitude of every cell after the first ``ramps`` ramps, shape (tiles, N, N)."""
-        return self._amplitude0 if ramps == 0 else self._amplitudes_for(self._ramps[ramps - 1].sea)[0]
+    def _state(self, index: int) -> np.ndarray:
+        """Complex amplitude of every cell in state ``index``, shape (tiles, N, N)."""
+        if index == 0:
+            return self._amplitude0
+        kind = self._kinds[index]
+        if isinstance(kind, _Frozen):
+            return self._mix(kind.before, kind.after, kind.weight)
+        return self._amplitudes_for(kind)[0]
+
+    def _mix(self, before: int, after: int, weight: float) -> np.ndarray:
+        """``state[before] + weight (state[after] - state[before])``, shape (tiles, N, N)."""
+        newest = len(self._kinds) - 1
+        state = self._states.get(after, newest)
+        if before == after:
+            return state
+        earlier = self._states.get(before, newest)
+        return earlier + weight * (state - earlier)
 
     def amplitudes(self, t: float) -> np.ndarray:
         """Complex amplitude of every cell at time ``t`` (s), shape (tiles, N, N).
 
-        Only the newest states stay in memory, so live changes do not add up: a time before the
-        last two ramps costs recomputing its states (``cell_variances``), to the same bits.
+        Only the newest states stay in memory, so live changes do not add up: a time in an older
+        ramp costs recomputing its states (``cell_variances``), to the same bits.
         """
-        before, after, weight = self.blend(t)
-        state = self._states.get(after, len(self._ramps))
-        if before == after:
-            return state
-        earlier = self._states.get(before, len(self._ramps))
-        return earlier + weight * (state - earlier)
+        return self._mix(*self.blend(t))
 
     def blend(self, t: float) -> tuple[int, int, float]:
         """The amplitudes at ``t`` (s) as states: ``(before, after, weight)``, the amplitudes being
-        ``state[before] + weight (state[after] - state[before])``; a state is the amplitudes after that many
-        ramps, and ``before == after`` (weight 0) outside a ramp."""
+        ``state[before] + weight (state[after] - state[before])``, and ``before == after`` (weight 0)
+        outside a ramp. A state is an int id, always the same amplitudes (:meth:`spectrum_state`): 0
+        the initial sea, then each ramp's sea, and the blend of the moment where a ramp started
+        during another."""
         started = sum(1 for ramp in self._ramps if t > ramp.start)
         if started == 0:
             return 0, 0, 0.0
         ramp = self._ramps[started - 1]
         s = (t - ramp.start) / ramp.duration
         if s >= 1.0:
-            return started, started, 0.0
-        return started - 1, started, float(smoothstep(s))
+            return ramp.target, ramp.target, 0.0
+        return ramp.source, ramp.target, float(smoothstep(s))
 
     def spectrum_state(self, state: int) -> np.ndarray:
-        """The cosine and sine parts of every cell's ``C[q]`` (see :meth:`_half_amplitudes`) after ``state`` ramps,
+        """The cosine and sine parts of every cell's ``C[q]`` (see :meth:`_half_amplitudes`) in state ``state``,
         on the full grid (mirror cells ``C[-q] = conj(C[q])`` included): float32 (tiles, N, N, 4) of
         ``(even.real, even.imag, odd.real, odd.imag)``, m. What the GPU synthesis takes at a sea change."""
-        amplitude = self._states.get(state, len(self._ramps))
+        amplitude = self._states.get(state, len(self._kinds) - 1)
         plus, minus = 0.5 * mirrored(amplitude), 0.5 * np.conj(amplitude)
         even, odd = plus + minus, 1j * (plus - minus)
         return np.stack([even.real, even.imag, odd.real, odd.imag], axis=-1).astype(np.float32)
