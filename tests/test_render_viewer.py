@@ -82,15 +82,31 @@ def walkthrough(tmp_path: Path) -> None:
         assert not list(tmp_path.glob(".*")), "the recording left its temporary file"
 
         hs = sim.sea.hs
+        conning = viewer.scene.conning_line()
+        assert conning.startswith("HDG 260.0  AUTO 260.0  RUD mid  ROT +0/min") and "4.0 KN" in conning, conning
         press(key.R, "r")                                 # record the rest of the session
         press(key.BRACKETRIGHT, "]")                      # waves up by 10 % over CHANGE_RAMP_S
-        speed = sim.speed_m_s
-        press(key.UP)                                     # waits for the sea change, then blends
+        press(key.RIGHT)                                  # the helm 5 deg to starboard: hand steering, at once
+        press(key.UP)                                     # the telegraph a notch up: dead slow ahead
+        viewer.tick(0.1)
+        assert sim.voyage.orders.rudder == pytest.approx(np.radians(5.0)) and not sim.voyage.orders.autopilot
         for _ in range(int(2.2 * CHANGE_RAMP_S / MAX_FRAME_S)):
             viewer.tick(5.0)                               # a stalled frame still advances only 0.1 s
-        assert sim.time == pytest.approx(2.2 * CHANGE_RAMP_S + 3.0, abs=1e-6)
-        assert sim.sea.hs == pytest.approx(HS_STEP * hs, rel=1e-9)
-        assert sim.speed_m_s == pytest.approx(speed + 0.514444, rel=1e-4)
+        assert sim.time == pytest.approx(2.2 * CHANGE_RAMP_S + 3.1, abs=1e-6)
+        assert sim.sea.hs == pytest.approx(HS_STEP * hs, rel=1e-9)  # the sea changed beside the orders
+        conning = viewer.scene.conning_line()
+        assert "HAND  RUD 5S" in conning and "DEAD SLOW AHEAD" in conning, conning
+        rot = sim.conning()["rate_of_turn_deg_min"]
+        assert rot > 0.0 and sim.conning()["heading_deg"] > 260.0  # she swings to starboard, at her own rate
+        start_rpm = 60.0 * scenario.vessel.ship.rps_for_speed(4.0 * 0.514444)
+        lag = np.exp(-(sim.time - 3.0) / 20.0)             # the telegraph at 3 s, the engine's 20 s time constant
+        assert sim.conning()["rpm"] == pytest.approx(0.35 * 105.0 + (start_rpm - 0.35 * 105.0) * lag, rel=1e-3)
+        press(key.P, "p")                                 # the autopilot on: it holds the heading of the moment
+        held = sim.conning()["heading_deg"]
+        press(key.I, "i")                                 # and a degree to starboard
+        viewer.tick(0.1)
+        assert sim.conning()["course_deg"] == pytest.approx(round(held + 1.0, 6) % 360.0, abs=1e-6)
+        assert "AUTO" in viewer.scene.conning_line()
 
         press(key.SPACE, " ")
         before = sim.time
@@ -165,9 +181,13 @@ def walkthrough(tmp_path: Path) -> None:
     session = tmp_path / "session.jsonl"
     lines = [json.loads(line) for line in session.read_text().splitlines()[1:]]
     keys = [e["key"] for e in lines if e["kind"] == "key"]
-    assert keys[:4] == ["R", "R", "R", "BRACKETRIGHT"] and "RETURN" not in keys  # typing keys are the message's
-    assert [e["action"] for e in lines if e["kind"] == "action"] == ["change", "change", "weather", "weather",
-                                                                      "weather", "weather", "message"]
+    assert keys[:7] == ["R", "R", "R", "BRACKETRIGHT", "RIGHT", "UP", "P"] and "RETURN" not in keys  # typing keys are the message's
+    actions = [e for e in lines if e["kind"] == "action"]
+    assert [e["action"] for e in actions] == ["change", "order", "order", "order", "order", "weather", "weather",
+                                              "weather", "weather", "message"]
+    assert [{k: v for k, v in e.items() if k not in ("t", "kind", "action")} for e in actions[1:5]] == [
+        {"rudder_deg": 5.0}, {"engine": "dead slow ahead"}, {"autopilot": True},
+        {"course_deg": pytest.approx(round(held + 1.0, 6) % 360.0)}]
     again = replay_session(session)
     assert again.sim.environment == environment, "the replay's weather is not the session's"
     recording = sorted(tmp_path.glob(f"{scenario.name}_*.csv"))[-1]  # the second: from t = 3 s to the end

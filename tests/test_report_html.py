@@ -4,6 +4,7 @@ page says, that real Chromium decodes every plot and draws the page, and that th
 from __future__ import annotations
 
 import copy
+import io
 import re
 
 import numpy as np
@@ -15,6 +16,7 @@ from conftest import write
 from marinesim.cli import main
 from marinesim.errors import MarinesimError
 from marinesim.report.html import render_report, write_report
+from marinesim.report.plots import TRACK, handling_png, heading_curve, track_png
 from marinesim.scenario import load_scenario
 from marinesim.session.log import write_log
 from test_session_replay import SESSION, _live_session
@@ -60,11 +62,34 @@ def _alarms(criterion: dict) -> list[dict]:
     return out
 
 
+def ship_data(duration_s: float = 1200.0) -> dict:
+    """The supply vessel's track and handling as :func:`~marinesim.report.debrief.debrief` gives them, one sample a
+    second: on 350° at 10 kn, at 300 s the autopilot set to 020° (she turns to starboard through north, rudder 20°
+    starboard at most), at 800 s the engine to half ahead (7 kn)."""
+    t = np.arange(0.0, duration_s + 1.0)
+    turn = np.clip((t - 300.0) / 90.0, 0.0, 1.0)
+    heading = (350.0 + 30.0 * (3 * turn ** 2 - 2 * turn ** 3)) % 360.0  # a smooth 30° turn over 90 s
+    rudder = np.where((t > 300.0) & (t < 390.0), 20.0 * np.sin(np.pi * np.clip((t - 300.0) / 90.0, 0.0, 1.0)), 0.0)
+    speed = np.where(t < 800.0, 10.0, 7.0 + 3.0 * np.exp(-np.maximum(t - 800.0, 0.0) / 120.0))
+    rpm = np.where(t < 800.0, 110.0, 77.0 + 33.0 * np.exp(-np.maximum(t - 800.0, 0.0) / 15.0))
+    step = speed * 1852.0 / 3600.0
+    north = np.concatenate(([0.0], np.cumsum(step * np.cos(np.radians(heading)))[:-1]))
+    east = np.concatenate(([0.0], np.cumsum(step * np.sin(np.radians(heading)))[:-1]))
+    rate = np.gradient(np.degrees(np.unwrap(np.radians(heading)))) * 60.0
+    return {"name": "supply <PSV>", "model": "Clarke, Gedling & Hine (1983) from the hull's main particulars",
+            "time_s": t.tolist(), "north_m": north.round(6).tolist(), "east_m": east.round(6).tolist(),
+            "heading_deg": heading.round(6).tolist(),
+            "course_deg": [350.0 if ti < 300.0 else 20.0 for ti in t],
+            "speed_over_ground_kn": speed.round(6).tolist(), "rudder_deg": rudder.round(6).tolist(),
+            "rudder_order_deg": np.where((t > 300.0) & (t < 390.0), 20.0, 0.0).tolist(),
+            "propeller_rpm": rpm.round(6).tolist(), "rate_of_turn_deg_min": rate.round(6).tolist()}
+
+
 def exercise_data() -> dict:
     """A 1200 s run evaluated every 1 s: the helideck pitch goes above its limit twice (two alarms, the first
     acknowledged after 6.5 s, the second never), the roll reaches caution only, the heave rate's 30 min window
     never fills; an event at 240 s, one on a condition, one that never happened; an instructor's message with
-    markup in it."""
+    markup in it; the vessel's track and handling (:func:`ship_data`)."""
     rng = np.random.default_rng(7)
     pitch = _running_max(lambda t: 2.3 + 0.9 * np.sin(2 * np.pi * (t - 200) / 600), 7.5, 0.3, 60.0,
                          rng.normal(0.0, 0.08, 2400))
@@ -117,6 +142,7 @@ def exercise_data() -> dict:
                     {"time_s": alarms[0]["acknowledged_s"], "what": "alarms acknowledged"}],
         "sickness": [{"point": "bridge", "msi_percent": 12.3, "msdv_m_s1_5": 30.1},
                      {"point": "helideck", "msi_percent": 21.7, "msdv_m_s1_5": None}],
+        "ship": ship_data(),
     }
 
 
@@ -130,7 +156,8 @@ def report(tmp_path_factory):
 def test_the_page_says_what_the_debrief_needs(report):
     data, path = report
     page = path.read_text(encoding="utf-8")
-    assert page.count("<img class='plot'") == len(data["criteria"]) + 1, "one plot per criterion, and the timeline"
+    assert page.count("<img class='plot'") == len(data["criteria"]) + 3, \
+        "one plot per criterion, the ship's track and handling, and the timeline"
     assert "class='badge exceeded verdict'>exceeded<" in page, "the overall verdict, as a red badge"
     for objective in data["briefing"]["objectives"]:
         assert objective["text"] in page and f"'>{objective['verdict']}</span>" in page, objective
@@ -139,11 +166,15 @@ def test_the_page_says_what_the_debrief_needs(report):
     assert "&lt;script&gt;alert(&#x27;wave&#x27;)&lt;/script&gt; &amp; check the lashings" in page, "text is escaped"
     assert page.count("<script") == 1, "one script only: the plot counter"
     assert not re.search(r"(?:src|href)=['\"]?(?:https?:|//)", page) and "http://" not in page, "nothing fetched"
-    sections = ("briefing", "criteria", "statistics", "alarms", "sickness", "log", "conditions")
+    sections = ("briefing", "criteria", "statistics", "ship", "alarms", "sickness", "log", "conditions")
     places = [page.index(f"<section id='{name}'>") for name in sections]
-    assert places == sorted(places), "briefing, exercise, statistics, alarms, sickness, log, conditions in order"
+    assert places == sorted(places), "briefing, exercise, statistics, ship, alarms, sickness, log, conditions in order"
+    ship = page[places[3]:places[4]]
+    assert ship.count("<img class='plot'") == 2 and "<h2>Ship handling</h2>" in ship
+    assert "<b>supply &lt;PSV&gt;</b>: Clarke, Gedling &amp; Hine (1983)" in ship, "the ship's name and model, escaped"
+    assert "heading 350° → 020°" in ship and "largest rudder 20° starboard" in ship and "10.0 kn" in ship
     assert "3f" * 32 in page and "c4" * 32 in page, "the conditions name the inputs by hash"
-    assert len(page) < 400_000, f"the page is {len(page)} bytes: keep the plots small"
+    assert len(page) < 500_000, f"the page is {len(page)} bytes: keep the plots small"
 
 
 def test_same_data_same_bytes(report, tmp_path):
@@ -159,7 +190,8 @@ def test_missing_parts_leave_their_sections_out():
     assert page.count("<img class='plot'") == 1 and "no value yet" in page
     for section in ("briefing", "alarms", "sickness", "log", "conditions"):
         assert f"<section id='{section}'>" not in page
-    bare = render_report({"title": "bare", "criteria": [], "events": [], "alarms": [], "messages": []})
+    assert "<section id='ship'>" not in page
+    bare = render_report({"title": "bare", "criteria": [], "events": [], "alarms": [], "messages": [], "ship": None})
     assert "<h1>bare</h1>" in bare and "<img" not in bare and "class='badge none verdict'>no value<" in bare
 
 
@@ -186,7 +218,7 @@ def test_chromium_decodes_every_plot_and_draws_the_page(report, tmp_path):
     data, path = report
     dom = dump_dom(path)
     loaded = re.search(r'data-plots-loaded="(\d+)"', dom)
-    assert loaded and int(loaded.group(1)) == len(data["criteria"]) + 1, "the browser must decode every plot"
+    assert loaded and int(loaded.group(1)) == len(data["criteria"]) + 3, "the browser must decode every plot"
     png = screenshot(path, tmp_path / "report.png", (1200, 3000))
     image = np.asarray(Image.open(png).convert("RGB")).astype(int)
     assert image.shape[:2] == (3000, 1200)
@@ -205,9 +237,77 @@ def test_the_debrief_of_a_real_session_log(tmp_path):
     log = write_log(tmp_path / "session.jsonl", exercise)
     assert main(["report", str(log), "--out", str(tmp_path / "report.html"), "--quiet"]) == 0
     page = (tmp_path / "report.html").read_text()
-    assert page.count("<img class='plot'") == len(scenario.criteria) + 1, "one plot per criterion, and the timeline"
+    assert page.count("<img class='plot'") == len(scenario.criteria) + 3, \
+        "one plot per criterion, the ship's track and handling, and the timeline"
+    ship = page[page.index("<section id='ship'>"):page.index("<section id='alarms'>")]
+    assert ship.count("<img class='plot'") == 2 and "held on station" not in ship, "she made way and turned"
+    assert exercise.sim.vessel.ship.describe() in page.replace("&amp;", "&"), "the ship's model is named"
     alarm = exercise.alarms[0]
     assert f"<td class='num'>{alarm.acknowledged_s - alarm.raised_s:.1f} s</td>" in page, "acknowledgement delay"
     assert "stand by the helideck" in page and "event 1 triggered early" in page
     assert main(["report", str(log), "--out", str(tmp_path / "again.html"), "--quiet"]) == 0
     assert (tmp_path / "again.html").read_bytes() == (tmp_path / "report.html").read_bytes()
+
+
+def test_a_ship_held_on_station_is_said_to_be_and_drawn_apart():
+    """A vessel on station at 0 kn: her track is a point, so the page says she held station and the figure's
+    events and alarms are listed, not piled on that point; no section without a vessel."""
+    still = ship_data(600.0)
+    for key in ("north_m", "east_m", "speed_over_ground_kn", "rudder_deg", "rudder_order_deg", "propeller_rpm"):
+        still[key] = [0.0] * len(still["time_s"])
+    still["heading_deg"] = [270.0] * len(still["time_s"])
+    full = exercise_data()
+    data = {"title": "on station", "events": full["events"], "alarms": full["alarms"], "ship": still}
+    page = render_report(data)
+    ship = page[page.index("<section id='ship'>"):page.index("<section id='alarms'>")]
+    assert "held on station at the start position" in ship and ship.count("<img class='plot'") == 2
+    assert "nm over the ground" not in ship and "heading 270°" in ship
+    assert track_png(still, data["events"], []) != track_png(ship_data(600.0), data["events"], [])
+    assert "<section id='ship'>" not in render_report(data | {"ship": None})
+
+
+def test_the_ship_figures_are_the_same_bytes_from_the_same_data():
+    data = exercise_data()
+    alarms = list(enumerate(data["alarms"], start=1))
+    once = track_png(data["ship"], data["events"], alarms)
+    assert once == track_png(copy.deepcopy(data["ship"]), copy.deepcopy(data["events"]), copy.deepcopy(alarms))
+    assert handling_png(data["ship"], data["events"], 1200.0) == handling_png(copy.deepcopy(data["ship"]),
+                                                                              data["events"], 1200.0)
+    assert track_png(data["ship"], data["events"], data["alarms"]) == once, "alarms alone are numbered from 1"
+
+
+def test_the_track_is_to_scale_east_right_north_up():
+    """An L-shaped track, 2 km east then 1 km north: the track's blue pixels span twice as wide as tall (equal
+    axes), the east leg along the bottom and the north leg up the right-hand side. What would be wrong: x and y
+    swapped, north down, or the axes stretched to fill the figure."""
+    t = np.arange(0.0, 601.0)
+    east = np.minimum(t, 400.0) * 5.0
+    north = np.maximum(t - 400.0, 0.0) * 5.0
+    heading = np.where(t < 400.0, 90.0, 0.0)
+    ship = {"name": "probe", "time_s": t.tolist(), "north_m": north.tolist(), "east_m": east.tolist(),
+            "heading_deg": heading.tolist()}
+    image = np.asarray(Image.open(io.BytesIO(track_png(ship, [], []))).convert("RGB")).astype(int)
+    blue = (np.abs(image - _rgb(TRACK)) < 12).all(axis=2)
+    rows, cols = np.nonzero(blue)
+    width, height = np.ptp(cols), np.ptp(rows)
+    assert width / height == pytest.approx(2.0, rel=0.04), (width, height)
+    bottom = rows > rows.max() - 0.1 * height
+    right = cols > cols.max() - 0.1 * width
+    assert np.ptp(cols[bottom]) > 0.85 * width, "the east leg runs along the bottom (north up)"
+    assert np.ptp(rows[right]) > 0.85 * height, "the north leg runs up the right-hand side (east right)"
+
+
+def test_a_heading_through_north_is_drawn_without_a_jump():
+    """359° -> 1° is a 2° turn, not a 358° fall: the curve goes on to 361°, and the autopilot's course is put on
+    the heading's turn; a turn the other way goes below 0° as smoothly."""
+    heading, course = heading_curve([357.0, 358.0, 359.0, 0.0, 1.0, 2.0], [None, 359.0, 0.0, 0.0, 1.0, 2.0])
+    assert np.diff(heading) == pytest.approx([1.0] * 5)
+    assert np.isnan(course[0]) and course[1:] == pytest.approx([359.0, 360.0, 360.0, 361.0, 362.0])
+    heading, _ = heading_curve([2.0, 1.0, 0.0, 359.0, 358.0])
+    assert np.diff(heading) == pytest.approx([-1.0] * 4) and heading[0] == 2.0
+    heading, _ = heading_curve([400.0 % 360.0, 45.0])
+    assert heading == pytest.approx([40.0, 45.0]), "the curve starts on the compass"
+
+
+def _rgb(colour: str) -> tuple[int, int, int]:
+    return tuple(int(colour[i:i + 2], 16) for i in (1, 3, 5))

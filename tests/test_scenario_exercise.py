@@ -19,6 +19,7 @@ from_deg = 0.0
 
 [vessel]
 rao = "{ROOT / 'rao' / 's175' / 'input.re1'}"
+manoeuvring = "s175"
 speed_kn = 15.0
 
 [vessel.points]
@@ -44,6 +45,11 @@ speed_kn = 10.0
 at_s = 600.0
 heading_deg = 20.0
 
+[[events]]
+at_s = 700.0
+rudder_deg = -20.0
+engine = "half ahead"
+
 [[criteria]]
 name = "bridge vertical acceleration"
 point = "bridge"
@@ -68,12 +74,14 @@ def test_events_and_criteria_are_read(tmp_path):
     """The timeline and the criteria as the file gives them, defaults filled in (ramp 10 s, window of
     the quantity, caution 0.8, names point.quantity)."""
     scenario = load_scenario(write(tmp_path, GOOD))
-    first, second, third = scenario.events
+    first, second, third, fourth = scenario.events
     assert first.at_s == 300.0 and first.ramp_s == 30.0 and first.message == "Gale warning"
     assert first.sea.hs == pytest.approx(4.0, rel=1e-3) and first.speed_m_s is None
     assert second.at_s is None and str(second.condition) == "bridge vertical acceleration > 1"
     assert second.speed_m_s == pytest.approx(10.0 * KNOT) and second.ramp_s == 10.0
-    assert third.heading_deg == 20.0 and third.sea is None
+    assert third.heading_deg == 20.0 and third.sea is None and third.orders == {"course_deg": 20.0}
+    assert fourth.orders == {"rudder_deg": -20.0, "engine": "half ahead"}
+    assert fourth.describe() == "at 700 s: rudder 20 deg to port, half ahead"
     bridge, roll, bow = scenario.criteria
     assert (bridge.label, bridge.window, bridge.caution) == ("bridge vertical acceleration", 600.0, 0.8)
     assert (roll.label, roll.window, roll.caution, roll.point) == ("roll_rms_deg", 300.0, 0.7, None)
@@ -125,6 +133,21 @@ REFUSED = {
     "dose at a coarse step": (S175.replace("duration_s = 900.0", "duration_s = 900.0\ndt_s = 0.5")
                               + _criterion(point="bridge", quantity="msdv_m_s1_5", limit=30.0),
                               "criteria[0]: msdv_m_s1_5 filters the acceleration up to 0.63 Hz"),
+    "rudder past hard over": (S175 + "\n[[events]]\nat_s = 10.0\nrudder_deg = 40.0\n",
+                              "events[0].rudder_deg: rudder order must be in -35..35 deg (positive to starboard)"),
+    "rudder past 45": (S175 + "\n[[events]]\nat_s = 10.0\nrudder_deg = 50.0\n", "events[0].rudder_deg: must be in -45..45"),
+    "unknown telegraph order": (S175 + '\n[[events]]\nat_s = 10.0\nengine = "flank speed"\n',
+                                "events[0].engine: expected 'full astern'"),
+    "a course with the autopilot off": (S175 + "\n[[events]]\nat_s = 10.0\nheading_deg = 90.0\nautopilot = false\n",
+                                        "events[0].autopilot: heading_deg is a course for the autopilot"),
+    "helm and autopilot together": (S175 + "\n[[events]]\nat_s = 10.0\nrudder_deg = 5.0\nautopilot = true\n",
+                                    "events[0].rudder_deg: a rudder order by hand takes the helm"),
+    "orders without a model": (S175.replace('manoeuvring = "s175"\n', "") + "\n[[events]]\nat_s = 10.0\nrudder_deg = 5.0\n",
+                               "events[0].rudder_deg: the vessel: no manoeuvring model: a steady course and speed"),
+    "an unknown shipped vessel": (S175.replace('manoeuvring = "s175"', 'manoeuvring = "titanic"'),
+                                  "vessel.manoeuvring: 'titanic': expected \"station\", a shipped vessel (kvlcc2, s175"),
+    "station keeping under way": (S175.replace('manoeuvring = "s175"', 'manoeuvring = "station"'),
+                                  "vessel.manoeuvring: a vessel held on station has no speed"),
     "criteria without a vessel": ('[[sea]]\ntype = "pm"\nhs_m = 2.0\ntp_s = 8.0\nfrom_deg = 0.0\n'
                                   + _criterion(quantity="roll_rms_deg", limit=6.0),
                                   "criteria[0]: criteria need a [vessel]"),

@@ -3,6 +3,8 @@ their conditions, and the criteria the viewer shows at t are the ones ``assess``
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pytest
 
@@ -84,7 +86,7 @@ def test_an_event_ramps_the_sea_from_2_to_4_m(tmp_path, seed):
     scenario = load_scenario(write(tmp_path, RAMP.format(rao=ROOT / "rao" / "tanker" / "tanker.4", seed=seed)))
     record, simulation = _record(scenario)
     t, eta = record["time_s"], record["wave_elevation_m"]
-    before, after = simulation.response(0).components, simulation.response(1).components
+    before, after = simulation.components(simulation.legs[0].after), simulation.components(simulation.legs[1].after)
     low, expected_before, high = _hs_bounds(before, 900.0)
     assert low <= 4.0 * eta[t < 900.0].std() <= high
     low, expected_after, high = _hs_bounds(after, 840.0)
@@ -117,7 +119,8 @@ message = "two hundred seconds"
 
 def test_a_condition_fires_once_at_its_first_evaluation_that_holds(tmp_path):
     """The event happens at the first whole-second evaluation where the criterion's value passes the
-    threshold, its speed and heading change start then, and it does not happen again."""
+    threshold, its orders (the engine for 2 kn, the autopilot's course 90 deg) are given then and she starts to
+    turn, and it does not happen again."""
     scenario = load_scenario(write(tmp_path, CONDITIONAL.format(threshold=0.0)))
     lines: list[str] = []
     simulation = Simulation(scenario, wake=False)
@@ -126,8 +129,14 @@ def test_a_condition_fires_once_at_its_first_evaluation_that_holds(tmp_path):
     fired = [h for h in exercise.happened if h.index == 0]
     assert len(fired) == 1
     assert fired[0].time_s == pytest.approx(30.0)  # settled at a quarter of the 120 s window
-    leg = simulation.legs[1]
-    assert leg.start == pytest.approx(30.0) and leg.track.speed == pytest.approx(2.0 * KNOT)
+    orders = simulation.voyage.orders_at(30.0)
+    assert orders.autopilot and math.degrees(orders.course) == pytest.approx(90.0)
+    assert orders.rps == pytest.approx(scenario.vessel.ship.rps_for_speed(2.0 * KNOT))
+    assert simulation.voyage.orders_at(29.9).rps > orders.rps
+    record = simulation.frame(np.array([29.9, 40.0, 120.0]))
+    turn, heading = record["rate_of_turn_deg_min"], record["heading_deg"] + record["yaw_deg"]
+    assert turn[0] == 0.0 and turn[1] > 0.0  # from 30 deg she turns to starboard, towards 90
+    assert heading[2] > heading[0] + 2.0  # slowly: she is slowing to 2 kn
     assert [h.index for h in exercise.happened] == [0, 1]
     assert lines[1].startswith("t   200.0 s  event 1: at 200 s: 'two hundred seconds'")
     assert exercise.messages(t=210.0) == ["t    200 s  two hundred seconds"]

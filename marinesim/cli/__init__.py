@@ -14,10 +14,10 @@ import sys
 from typing import NoReturn
 
 from marinesim import __version__
-from marinesim.cli import assess, export, hull, operability, rao, render, replay, report, run, sea, wake
+from marinesim.cli import assess, export, hull, operability, rao, render, replay, report, run, sea, trials, wake
 from marinesim.errors import MarinesimError
 
-COMMANDS = (run, render, export, assess, replay, report, operability, rao, hull, wake, sea)
+COMMANDS = (run, render, export, assess, replay, report, trials, operability, rao, hull, wake, sea)
 """The command modules, in the order ``--help`` lists them."""
 
 

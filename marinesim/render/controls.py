@@ -9,6 +9,7 @@ replay the timeline is the log's: keys seek, pause and change the pace instead.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
@@ -17,18 +18,19 @@ import numpy as np
 
 from marinesim.render.hud import LEVEL_COLORS, MESSAGE_COLOR, Slider
 
-from marinesim.constants import KNOT
 from marinesim.errors import MarinesimError
 from marinesim.render.scene import Scene
-from marinesim.scenario.model import MAX_SPEED_KN, MAX_VISIBILITY_M, MIN_VISIBILITY_M
+from marinesim.scenario.model import MAX_VISIBILITY_M, MIN_VISIBILITY_M
 from marinesim.session.recorder import Recorder
 from marinesim.session.timeline import CHANGE_RAMP_S
 
 HS_STEP = 1.1       # each press: heights x 1.1 (or / 1.1)
 TP_STEP = 1.05      # periods x 1.05
 TURN_STEP_DEG = 15.0
-SPEED_STEP_KN = 1.0
-HEADING_STEP_DEG = 5.0
+HELM_STEP_DEG = 5.0
+"""LEFT / RIGHT: the rudder order this much to port / starboard (a vessel on station: her heading)."""
+COURSE_STEPS_DEG = (1.0, 10.0)
+"""U / I and 9 / 0: the autopilot's course this much to port / starboard."""
 TIME_SCALES = (0.125, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0)
 VISIBILITY_STEP = 2.0  # each press: visibility / 2 (fog thickens) or x 2 (it lifts)
 TIME_STEP_H = 1.0
@@ -153,13 +155,40 @@ class Controls:
             "O": weather(rain_mm_h=next((r for r in RAIN_STEPS_MM_H if r > air.rain_mm_h), 0.0)),
         }
         if sim.vessel is not None:
-            actions |= {
-                "UP": change(speed_kn=min(sim.speed_m_s / KNOT + SPEED_STEP_KN, MAX_SPEED_KN)),
-                "DOWN": change(speed_kn=max(sim.speed_m_s / KNOT - SPEED_STEP_KN, 0.0)),
-                "RIGHT": change(heading_deg=(sim.heading_deg + HEADING_STEP_DEG) % 360.0),
-                "LEFT": change(heading_deg=(sim.heading_deg - HEADING_STEP_DEG) % 360.0),
-            }
+            actions |= self._bridge_keys()
         return actions
+
+    def _bridge_keys(self) -> dict[str, Callable[[], None]]:
+        """The trainee's orders to the ship: helm, telegraph, autopilot and its course (a vessel on station: her
+        heading)."""
+        sim = self.scene.sim
+        ship, c = sim.vessel.ship, sim.conning()
+
+        def order(**fields) -> Callable[[], None]:
+            return lambda: self._act("order", **fields)
+
+        course = c["course_deg"] if c["course_deg"] is not None else c["heading_deg"]
+
+        def steer(step: float) -> Callable[[], None]:
+            return order(course_deg=round((course + step) % 360.0, 6))
+
+        if ship.kind == "station":
+            return {"LEFT": steer(-HELM_STEP_DEG), "RIGHT": steer(HELM_STEP_DEG)}
+        hard = math.degrees(ship.steering.max_angle)
+        rudder = c["rudder_order_deg"]
+
+        def helm(step: float) -> Callable[[], None]:
+            return order(rudder_deg=round(max(min(rudder + step, hard), -hard), 6))
+
+        def telegraph(steps: int) -> Callable[[], None]:
+            return order(engine=ship.engine.step(c["engine"], steps, c["rpm"] / 60.0))
+
+        small, large = COURSE_STEPS_DEG
+        return {"LEFT": helm(-HELM_STEP_DEG), "RIGHT": helm(HELM_STEP_DEG), "X": order(rudder_deg=0.0),
+                "Z": order(rudder_deg=-hard), "V": order(rudder_deg=hard),
+                "UP": telegraph(1), "DOWN": telegraph(-1),
+                "P": order(autopilot=c["course_deg"] is None),
+                "U": steer(-small), "I": steer(small), "_9": steer(-large), "_0": steer(large)}
 
     def trigger_next(self) -> None:
         """The instructor brings the next scripted event forward to now."""
@@ -264,7 +293,11 @@ HELP = [
     "[ / ]          wave height down / up (x1.1, over 10 s)",
     ", / .          wave period down / up (x1.05)",
     "; / '          waves turn anticlockwise / clockwise 15 deg",
-    "UP / DOWN      speed +/- 1 kn       LEFT / RIGHT   heading -/+ 5 deg",
+    "LEFT / RIGHT   helm 5 deg to port / starboard (hand steering; on station: heading 5 deg)",
+    "Z / X / V      hard a-port / midships / hard a-starboard",
+    "UP / DOWN      telegraph one step ahead / astern (full ahead ... stop ... full astern)",
+    "P              autopilot on (holds the heading) / off (hand steering)",
+    "U / I  9 / 0   autopilot course 1 / 10 deg to port / starboard",
     "F / G          instructor: fog thickens / lifts (visibility / 2, x 2)",
     "J / K          instructor: cloud cover -/+ 1 okta    Y / T   clock -/+ 1 h (scenarios with time_utc)",
     "O              instructor: rain none / light / heavy / violent showers",

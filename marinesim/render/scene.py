@@ -16,7 +16,6 @@ import moderngl
 import numpy as np
 
 from marinesim.angles import wave_compass_from_beta
-from marinesim.constants import KNOT
 from marinesim.criteria.monitor import LEVELS
 from marinesim.errors import ParameterError
 from marinesim.gl import is_software
@@ -201,7 +200,7 @@ class Scene:
                     f"Hs {sea.hs:.1f} m  Tp {sea.tp:.1f} s  from {wave_compass_from_beta(sea.systems[0].beta):03.0f}"]
         if sim.vessel is not None:
             m = sim.pose().motion
-            segments += [f"{sim.speed_m_s / KNOT:.1f} kn  hdg {sim.heading_deg:03.0f}",
+            segments += [self.conning_line(),
                          f"heave {m[2]:+.2f} m  roll {math.degrees(m[3]):+.1f}  pitch {math.degrees(m[4]):+.1f} deg"]
         segments.append(self.camera_name + (" 7x" if self.camera_name == "bridge" and self.cameras["bridge"].binoculars
                                             else ""))
@@ -213,10 +212,35 @@ class Scene:
             lines.append(NOT_DRAWN)
         return lines
 
+    def conning_line(self, full: bool = False) -> str:
+        """The conning display in one line: heading; the autopilot's course or hand steering; the rudder's angle
+        and (after the arrow, where it differs) its order, S starboard, P port; the rate of turn (deg/min, +
+        starboard); propeller rpm and the engine order; speed and course over ground. A vessel on station: her
+        heading and, while she turns, the one ordered (``full``: and her speed over ground, as the panels show it)."""
+        c = self.sim.conning()
+        if self.sim.vessel.ship.kind == "station":
+            ordered = c["course_deg"]
+            turning = f" > {ordered:03.0f}" if ordered is not None and abs(
+                (ordered - c["heading_deg"] + 180.0) % 360.0 - 180.0) > 0.5 else ""
+            if not full:  # the strip: as short as a ship's speed and heading were
+                return f"HDG {c['heading_deg']:03.0f}{turning} STATION"
+            return f"HDG {c['heading_deg']:03.0f}{turning} {c['engine'].upper()}   SOG {c['speed_over_ground_kn']:.1f} kn"
+
+        def side(deg: float) -> str:
+            return "mid" if abs(deg) < 0.5 else f"{abs(deg):.0f}{'S' if deg > 0 else 'P'}"
+
+        steer = f"AUTO {c['course_deg']:05.1f}" if c["course_deg"] is not None else "HAND"
+        rudder = side(c["rudder_deg"]) + ("" if side(c["rudder_deg"]) == side(c["rudder_order_deg"])
+                                          else f">{side(c['rudder_order_deg'])}")
+        return (f"HDG {c['heading_deg']:05.1f}  {steer}  RUD {rudder}  ROT {c['rate_of_turn_deg_min']:+.0f}/min  "
+                f"{c['rpm']:.0f} rpm {c['engine'].upper()}  SOG {c['speed_over_ground_kn']:.1f} kn  "
+                f"COG {c['course_over_ground_deg']:05.1f}")
+
     def hud_lines(self) -> list[str]:
-        lines = self.sim.describe()
+        lines = self.sim.describe()[:1]
         pose = self.sim.pose()
         if self.sim.vessel is not None:
+            lines.append(f"{self.conning_line(full=True)}   {self.sim.wake_status()}")
             m = pose.motion
             lines.append(f"surge {m[0]:+6.2f}  sway {m[1]:+6.2f}  heave {m[2]:+6.2f} m")
             lines.append(f"roll {math.degrees(m[3]):+6.2f}  pitch {math.degrees(m[4]):+6.2f}  "

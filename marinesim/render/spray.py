@@ -189,12 +189,6 @@ class Spray:
             p = Puffs(position, velocity, p.age + h, p.tau, p.kind)
             self.puffs = p.where((p.age < LIFE_S) & (p.position[:, 2] > -0.5))
 
-    def _track_velocity(self) -> np.ndarray:
-        """The vessel's velocity along its newest track (E frame, m/s, (2,)); zero without a vessel."""
-        if self.sim.vessel is None:
-            return np.zeros(2)
-        track = self.sim.response(len(self.sim.legs) - 1).track
-        return track.speed * np.array([math.cos(track.heading), math.sin(track.heading)])
 
     def _crests(self) -> tuple[Components, float]:
         """The newest leg's largest wave components, :data:`CREST_VARIANCE` of its variance (where the crests are),
@@ -215,9 +209,10 @@ class Spray:
     def at_stem(self, start: float, h: float, steps: int) -> np.ndarray:
         """At the stem at ``start + h * arange(steps)`` (s), (steps, 4): the height of the water over the stem's
         point on the calm waterline (m), how fast it rises against it (m/s), and the stem's own height (m) and
-        vertical velocity (m/s); linear (heave less x pitch), from the newest leg's response (a sea or course
-        change under way is taken as done)."""
-        response = self.sim.response(len(self.sim.legs) - 1)
+        vertical velocity (m/s); linear (heave less x pitch), from the newest sea's response on the track she is on
+        (a sea change under way taken as done; in a turn, the tangent to it, taken each second:
+        :meth:`Simulation.response_now`)."""
+        response = self.sim.response_now()
         if self._stem is None or self._stem[0] is not response:
             motion = response.motion_coefficients()
             stem = motion[:, 2] - float(self.bow.stem[0]) * motion[:, 4]
@@ -256,7 +251,7 @@ class Spray:
         launch = np.c_[0.2 * speed, side * speed * np.cos(elevation), speed * np.sin(elevation)]
         pose = self.sim.pose(t)
         rotation = pose.matrix()[:3, :3]
-        u = self._track_velocity()
+        u = self.sim.velocity()
         at = pose.world(bow.stem[None, :])[0]
         at[2] = stem_z
         self.puffs = self.puffs.joined(Puffs(at + body @ rotation.T, np.array([*u, stem_vz]) + launch @ rotation.T,
@@ -274,7 +269,8 @@ class Spray:
         tries = min(int(rng.poisson(expected / above)), 512)
         if tries == 0:
             return
-        centre = self.sim.legs[-1].track_point(t)[0]
+        pose = self.sim.pose(t)
+        centre = (pose.x, pose.y)
         r = SPINDRIFT_RADIUS_M * np.sqrt(rng.uniform(0.0, 1.0, tries))
         a = rng.uniform(0.0, 2.0 * math.pi, tries)
         x, y = centre[0] + r * np.cos(a), centre[1] + r * np.sin(a)

@@ -3,12 +3,16 @@
 :func:`debrief` turns an :class:`~marinesim.session.exercise.Exercise` that has run into the plain
 dictionary :mod:`marinesim.report.html` lays out: the briefing and a verdict per objective, each
 criterion's running value at every evaluation, the events, alarms with their acknowledgements, the
-messages and actions, motion sickness (MSI, MSDV) at the vessel's points, and the conditions.
+messages and actions, motion sickness (MSI, MSDV) at the vessel's points, the ship's track and handling
+(heading, speed, rudder, propeller), and the conditions.
 """
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
+
+import numpy as np
 
 from marinesim import __version__
 from marinesim.angles import wave_compass_from_beta
@@ -72,7 +76,32 @@ def debrief(exercise: Exercise, log: Path | None = None) -> dict:
         "messages": sorted(messages, key=lambda m: m["time_s"]),
         "actions": actions,
         "sickness": sickness,
+        "ship": _ship(exercise),
     }
+
+
+SHIP_SAMPLES = 2000
+"""The most samples of the ship's track and handling the report draws (one a second in shorter runs)."""
+
+
+def _ship(exercise: Exercise) -> dict | None:
+    """The ship's track and handling over the run (the record's ship columns), one sample a second or
+    :data:`SHIP_SAMPLES` over the run if longer; None without a vessel."""
+    sim = exercise.sim
+    if sim.vessel is None:
+        return None
+    end = sim.time
+    step = max(1.0, end / SHIP_SAMPLES)
+    times = np.arange(0.0, end + 1e-9, step)
+    record = sim.voyage.record(times, np.zeros(times.size))
+    ship = sim.vessel.ship
+    out = {"name": ship.name, "model": ship.describe(), "time_s": times.tolist()}
+    for column in ("north_m", "east_m", "heading_deg", "speed_over_ground_kn", "rudder_deg", "rudder_order_deg",
+                   "propeller_rpm", "rate_of_turn_deg_min"):
+        out[column] = np.round(record[column], 6).tolist()
+    out["course_deg"] = [None if not o.autopilot else round(math.degrees(o.course) % 360.0, 6)
+                         for o in map(sim.voyage.orders_at, times)]
+    return out
 
 
 def _action(entry: dict) -> str:
@@ -80,6 +109,8 @@ def _action(entry: dict) -> str:
     fields = {k: v for k, v in entry.items() if k not in ("t", "kind", "action")}
     if entry["action"] == "change":
         return "change: " + ", ".join(f"{k} {v:g}" for k, v in fields.items() if k != "ramp_s")
+    if entry["action"] == "order":
+        return "order: " + ", ".join(_order_words(k, v) for k, v in fields.items())
     if entry["action"] == "weather":
         return "weather: " + ", ".join(f"{k} {v:g}" for k, v in fields.items())
     if entry["action"] == "trigger":
@@ -87,6 +118,20 @@ def _action(entry: dict) -> str:
     if entry["action"] == "message":
         return f"message: {fields['text']}"
     return "alarms acknowledged"
+
+
+def _order_words(key: str, value: object) -> str:
+    """One order of the bridge in words, as a helmsman repeats it."""
+    if key == "rudder_deg":
+        return ("midships" if value == 0 else f"{'starboard' if value > 0 else 'port'} {abs(value):g}"
+                + (" (hard over)" if abs(value) >= 35 else ""))
+    if key == "course_deg":
+        return f"steer {value:05.1f}"
+    if key == "autopilot":
+        return "autopilot " + ("on" if value else "off, hand steering")
+    if key == "speed_kn":
+        return f"engine for {value:g} kn"
+    return str(value)
 
 
 def _conditions(exercise: Exercise, log: Path | None) -> dict:

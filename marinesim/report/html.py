@@ -3,22 +3,25 @@
 Laid out for a debrief (IMO model course 6.10: briefing, exercise, debriefing; STCW A-I/12: against the
 objectives), from the plain dictionary :func:`marinesim.report.debrief.debrief` makes: the title and
 the overall verdict, the briefing with a verdict per objective, each criterion over the run, exceedance
-statistics, the timeline and the alarms with their acknowledgement delays, motion sickness, the log of
-events, messages and actions, and the conditions. A part the data leave out (or give empty) is left out
-of the page. Every text from the data is HTML-escaped. The same data give the same bytes: no dates, and
-the PNGs carry no metadata (:mod:`marinesim.report.plots`). The one script counts the plots the browser
-decoded into ``body[data-plots-loaded]``, for a test to read the rendered page.
+statistics, the ship's track and handling (with a vessel), the timeline and the alarms with their
+acknowledgement delays, motion sickness, the log of events, messages and actions, and the conditions. A
+part the data leave out (or give empty) is left out of the page. Every text from the data is HTML-escaped.
+The same data give the same bytes: no dates, and the PNGs carry no metadata (:mod:`marinesim.report.plots`).
+The one script counts the plots the browser decoded into ``body[data-plots-loaded]``, for a test to read the
+rendered page.
 """
 
 from __future__ import annotations
 
 import base64
 import html
+import math
 import re
 from pathlib import Path
 
 from marinesim.atomic import atomic_path
-from marinesim.report.plots import CAUTION, EXCEEDED, NONE, OK, clock, criterion_png, number, timeline_png, with_unit
+from marinesim.report.plots import (CAUTION, EXCEEDED, NM, NONE, OK, STATION_M, clock, compass, criterion_png,
+                                    handling_png, number, timeline_png, track_png, with_unit)
 
 LEVELS = {"within limits": "ok", "met": "ok", "ok": "ok", "caution": "caution", "met with caution": "caution",
           "exceeded": "exceeded", "not met": "exceeded", "settling": "none", "no value": "none"}
@@ -99,7 +102,8 @@ def render_report(data: dict) -> str:
     """The report of ``data`` (see the module's docstring) as the text of one HTML page."""
     page = _Page(data)
     parts = [page.header_section(), page.briefing_section(), page.criteria_section(), page.statistics_section(),
-             page.alarms_section(), page.sickness_section(), page.log_section(), page.conditions_section()]
+             page.ship_section(), page.alarms_section(), page.sickness_section(), page.log_section(),
+             page.conditions_section()]
     title = _e(data.get("title") or "exercise")
     return ("<!DOCTYPE html>\n<html lang='en'>\n<head>\n<meta charset='utf-8'>\n"
             "<meta name='viewport' content='width=device-width,initial-scale=1'>\n"
@@ -122,7 +126,9 @@ class _Page:
         self.alarms = list(enumerate(data.get("alarms") or [], start=1))
         self.conditions = data.get("conditions") or {}
         self.units = {c.get("name"): c.get("unit") for c in self.criteria}
+        self.ship = data.get("ship")
         last = [t for c in self.criteria for t in ((c.get("series") or {}).get("time_s") or [])[-1:]]
+        last += ((self.ship or {}).get("time_s") or [])[-1:]
         self.duration = float(self.conditions.get("duration_s") or max(last, default=0.0))
         self.long = self.duration >= 3600
 
@@ -240,6 +246,54 @@ class _Page:
                 + _table(("criterion", "level", ("worst", "num"), ("at", "num"), ("limit", "num"),
                           ("time above limit", "num"), ("share of run", "num"), ("alarms", "num"),
                           ("first above", "num")), rows) + "\n</section>")
+
+    def ship_section(self) -> str:
+        """The ship's track over the ground and her handling (heading, speed, rudder, propeller), with a vessel."""
+        ship = self.ship
+        if not ship:
+            return ""
+        name = ship.get("name") or "the ship"
+        track = track_png(ship, self.events, self.alarms)
+        handling = handling_png(ship, self.events, self.duration)
+        time = ship.get("time_s") or []
+        north, east = _floats(ship.get("north_m")), _floats(ship.get("east_m"))
+        heading = _floats(ship.get("heading_deg"))
+        reach = max((math.hypot(n, e) for n, e in zip(north, east)), default=0.0)
+        if reach < STATION_M:
+            moved = ["held on station" + (" at the start position" if reach < 0.05 else f", within {reach:.1f} m")]
+        else:
+            run = sum(math.hypot(n1 - n0, e1 - e0) for n0, e0, n1, e1 in zip(north, east, north[1:], east[1:]))
+            moved = [f"{number(run / NM)} nm over the ground in {self.clock(time[-1] - time[0])}"]
+        if heading:
+            moved.append(f"heading {compass(heading[0])} → {compass(heading[-1])}")
+        handled = []
+        sog = _floats(ship.get("speed_over_ground_kn"))
+        if sog:
+            handled.append(f"speed over ground {min(sog):.1f}–{max(sog):.1f} kn")
+        rudder = _floats(ship.get("rudder_deg"))
+        if rudder and max(map(abs, rudder)) >= 0.5:
+            worst = max(rudder, key=abs)
+            handled.append(f"largest rudder {abs(worst):.0f}° {'starboard' if worst > 0 else 'port'}")
+        course = ship.get("course_deg") or []
+        if course:
+            share = sum(c is not None for c in course) / len(course)
+            handled.append("autopilot throughout" if share == 1 else "hand steering throughout" if share == 0
+                           else f"on autopilot {100 * share:.0f} % of the run")
+        rpm = _floats(ship.get("propeller_rpm"))
+        if rpm and min(rpm) < 0:
+            handled.append(f"astern to {min(rpm):.0f} rpm")
+        out = ["<section id='ship'>\n<h2>Ship handling</h2>",
+               f"<p class='intro'><b>{_e(name)}</b>: {_e(ship.get('model') or 'no model given')}. Her track over "
+               "the ground (midship, from the start; north up, to scale) with her outline every few minutes along "
+               "her heading and filled where she ended, each event E<i>n</i> and alarm A<i>n</i> marked where she "
+               "was when it happened; then her heading with the autopilot's set course (dashed where it steered), "
+               "speed over ground, rudder angle and order (+ starboard), and propeller rpm (− astern) on the time "
+               "axis of the plots above.</p>",
+               f"<figure>{_img(track, f'track of {name} over the ground')}<figcaption><b>Track</b>"
+               f"<span>{_e(' · '.join(moved))}</span></figcaption></figure>",
+               f"<figure>{_img(handling, f'heading, speed, rudder and propeller of {name} over the run')}"
+               f"<figcaption><b>Handling</b><span>{_e(' · '.join(handled))}</span></figcaption></figure>"]
+        return "\n".join(out) + "\n</section>"
 
     def alarms_section(self) -> str:
         if not (self.alarms or self.events or self.messages or self.actions):
@@ -376,6 +430,11 @@ def _value_limit(value: float | None, limit: float | None, unit: str | None) -> 
         return shown[0], shown[1]
     digits = next((d for d in range(3, 7) if number(value, d) != number(limit, d)), 6)
     return with_unit(value, unit, digits), with_unit(limit, unit)
+
+
+def _floats(values: list | None) -> list[float]:
+    """The numbers of a ship's series, its gaps (None) left out."""
+    return [float(v) for v in values or [] if v is not None]
 
 
 def _get(data: dict, *keys: str):

@@ -25,6 +25,7 @@ from marinesim.criteria.sickness import MAX_WF_DT_S
 from marinesim.errors import ParameterError, ScenarioError
 from marinesim.formats import extensions, formats
 from marinesim.hull.mesh import UNITS
+from marinesim.manoeuvring.actuators import TELEGRAPH
 from marinesim.sea.kinds import (CHOPPINESS_RANGE, MAX_DEPTH_M, MAX_FETCH_KM, MAX_HS_M, MAX_RESOLUTION, MAX_U10_M_S,
                                  MAX_WAVE_HEIGHT_M, PERIOD_RANGE_S, SPECTRUM_TYPES, SPREADING_TYPES, misplaced)
 from marinesim.vessel.wamit import ULEN_RANGE_M
@@ -54,6 +55,8 @@ NAV_LIGHTS = ("underway", "restricted", "anchored", "none")
 in her ability to manoeuvre (those and red-white-red all round), at anchor (all-round white forward and aft), or
 none drawn."""
 WEATHER = ("visibility_m", "cloud_cover_oktas", "wind_speed_m_s", "rain_mm_h")
+ORDERS = ("speed_kn", "heading_deg", "rudder_deg", "engine", "autopilot")
+"""The ``[[events]]`` keys that are orders to the ship."""
 """The ``[environment]`` keys an event or the instructor may change during a run."""
 
 
@@ -244,6 +247,11 @@ class VesselOptions(Section):
     hull_trim_deg: Annotated[float, Quantity("deg", gt=-30.0, lt=30.0)] = Field(0.0, description="trim, bow down")
     wake_speeds_kn: Annotated[list[float], Quantity("kn", gt=0.0, le=MAX_SPEED_KN, what="speeds")] = Field(
         default_factory=list, description="more speeds to precompute the Kelvin wake for (needs hull)")
+    manoeuvring: str | None = Field(
+        None, description='her manoeuvring model, steering gear, engine and autopilot: a shipped vessel by name '
+                          '("kvlcc2", "s175", "supply", "tanker": configs/vessels), a manoeuvring file (.toml), or '
+                          '"station" (held on station: position kept, heading by order); absent: a model from the '
+                          "hull's main particulars, without a hull a steady course and speed")
     visual_mesh: str | None = Field(None, description="mesh drawn instead of the hull (may be open)")
     topsides_rgb: Annotated[list[int] | None, Quantity("", ge=0, le=255, what="colour levels"),
                             Field(min_length=3, max_length=3)] = Field(
@@ -383,7 +391,8 @@ def _condition(text: str) -> str:
 
 
 class EventOptions(Section):
-    """``[[events]]``: a change of sea, speed or heading, and/or a message, at a time or on a condition."""
+    """``[[events]]``: a change of sea, orders to the ship (helm, telegraph, autopilot), weather and/or a message, at
+    a time or on a condition."""
 
     at_s: Annotated[float | None, Quantity("s", ge=0.0, le=MAX_DURATION_S)] = Field(
         None, description="when it happens; events with at_s come in time order")
@@ -393,9 +402,14 @@ class EventOptions(Section):
     ramp_s: Annotated[float, Quantity("s", ge=0.0, le=MAX_RAMP_S)] = Field(
         CHANGE_RAMP_S, description="how long the change blends in, weather too (> 0 for a sea change)")
     sea: list[SeaOptions] | None = Field(None, description="wave systems that replace the sea (as [[sea]])")
-    speed_kn: Annotated[float | None, Quantity("kn", ge=0.0, le=MAX_SPEED_KN)] = Field(None, description="new speed")
+    speed_kn: Annotated[float | None, Quantity("kn", ge=0.0, le=MAX_SPEED_KN)] = Field(
+        None, description="the engine set for this speed (the rpm that holds it in calm water)")
     heading_deg: Annotated[float | None, Quantity("deg", ge=0.0, le=360.0, what="a compass heading")] = Field(
-        None, description="new compass heading")
+        None, description="course ordered to the autopilot (it takes the helm)")
+    rudder_deg: Annotated[float | None, Quantity("deg", ge=-45.0, le=45.0)] = Field(
+        None, description="rudder order by hand, positive to starboard (the autopilot lets go of the helm)")
+    engine: Literal[TELEGRAPH] | None = Field(None, description="telegraph order")
+    autopilot: bool | None = Field(None, description="the autopilot on (on the present heading) or off")
     message: Annotated[str | None, Field(max_length=MAX_MESSAGE)] = Field(
         None, description="shown in the viewer and the log when the event happens")
     visibility_m: Annotated[float | None, Quantity("m", ge=MIN_VISIBILITY_M, le=MAX_VISIBILITY_M)] = Field(
@@ -416,9 +430,14 @@ class EventOptions(Section):
                 raise _refuse("sea", "an empty list: give at least one wave system, or leave sea out")
             if self.ramp_s == 0.0:
                 raise _refuse("ramp_s", "a sea change blends in over ramp_s > 0 s, got 0")
-        if all(getattr(self, key) is None for key in ("sea", "speed_kn", "heading_deg", "message", *WEATHER)):
-            raise _refuse("message", "an event needs something to do: sea, speed_kn, heading_deg, "
+        if all(getattr(self, key) is None for key in ("sea", *ORDERS, "message", *WEATHER)):
+            raise _refuse("message", "an event needs something to do: sea, " + ", ".join(ORDERS) + ", "
                                      "visibility_m, cloud_cover_oktas, wind_speed_m_s, rain_mm_h or message")
+        if self.heading_deg is not None and self.autopilot is False:
+            raise _refuse("autopilot", "heading_deg is a course for the autopilot: it cannot come with autopilot = false")
+        if self.rudder_deg is not None and (self.heading_deg is not None or self.autopilot):
+            raise _refuse("rudder_deg", "a rudder order by hand takes the helm from the autopilot: give it without "
+                                        "heading_deg or autopilot = true")
         return self
 
 
@@ -522,8 +541,8 @@ class ScenarioFile(Section):
                     raise _refuse(f"{where}.at_s", f"{event.at_s:g} s is after the run's end "
                                                    f"(run.duration_s {self.run.duration_s:g} s)")
                 previous = event.at_s
-            if self.vessel is None and (event.speed_kn is not None or event.heading_deg is not None):
-                raise _refuse(where, "speed_kn and heading_deg need a [vessel]")
+            if self.vessel is None and any(getattr(event, key) is not None for key in ORDERS):
+                raise _refuse(where, f"{', '.join(ORDERS)} are orders to a [vessel]: the scenario has none")
             if event.when is not None:
                 if self.vessel is None:
                     raise _refuse(f"{where}.when", "a condition watches the vessel's motions: it needs a [vessel]")

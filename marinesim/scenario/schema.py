@@ -20,6 +20,10 @@ from marinesim.criteria.monitor import Condition, Criterion, parse_condition
 from marinesim.criteria.quantities import Options
 from marinesim.errors import FileFormatError, MarinesimError, ScenarioError
 from marinesim.hull import Hull, VisualMesh, load_hull, load_visual_mesh
+from marinesim.manoeuvring.ship import Ship
+from marinesim.manoeuvring.station import StationKeeping
+from marinesim.resources import resource_dir
+from marinesim.scenario.ship_file import load_ship, ship_from_hull
 from marinesim.scenario.model import (HULL_OPTIONS, VISUAL_MESH_OPTIONS, WAVE_PARAMETERS, WEATHER, CriterionOptions,
                                       EnvironmentOptions, EventOptions, OceanOptions, RunOptions, ScenarioFile,
                                       SeaOptions, VesselOptions, validate)
@@ -41,6 +45,7 @@ class Vessel:
     speed_m_s: float
     heading_deg: float                      # compass, where the bow points
     points: dict[str, tuple[float, float, float]]
+    ship: Ship | StationKeeping = None      # her manoeuvring (:mod:`marinesim.manoeuvring`)
     wake_speeds_m_s: tuple[float, ...] = ()  # the vessel's speed (if > 0) and the extra wake speeds
     visual: VisualMesh | None = None        # drawn instead of the hull, body frame
     nav_lights: str = "underway"            # one of NAV_LIGHTS
@@ -54,33 +59,50 @@ class Vessel:
 
 @dataclass(frozen=True)
 class Event:
-    """A scripted change and/or message: at ``at_s`` (s) or when ``condition`` first holds. A change
-    (``None`` keeps that quantity) blends in over ``ramp_s`` (s)."""
+    """A scripted change and/or message: at ``at_s`` (s) or when ``condition`` first holds. A sea change blends in
+    over ``ramp_s`` (s); the orders (:attr:`orders`: ``None`` leaves that one as it is) act at once."""
 
     at_s: float | None
     condition: Condition | None
     ramp_s: float
     sea: SeaState | None = None
     speed_m_s: float | None = None
-    heading_deg: float | None = None      # compass, where the bow points
+    heading_deg: float | None = None      # compass course for the autopilot
     message: str | None = None
     weather: dict[str, float] = field(default_factory=dict)
     """``[environment]`` keys it changes at once (:data:`~marinesim.scenario.model.WEATHER`)."""
+    rudder_deg: float | None = None       # by hand, positive to starboard
+    engine: str | None = None             # a telegraph order
+    autopilot: bool | None = None
+
+    @property
+    def orders(self) -> dict[str, float | str | bool]:
+        """The orders to the ship, as :meth:`Simulation.order`'s keywords."""
+        asked = {"speed_kn": None if self.speed_m_s is None else self.speed_m_s / KNOT, "course_deg": self.heading_deg,
+                 "rudder_deg": self.rudder_deg, "engine": self.engine, "autopilot": self.autopilot}
+        return {key: value for key, value in asked.items() if value is not None}
 
     @property
     def changes(self) -> bool:
-        return self.sea is not None or self.speed_m_s is not None or self.heading_deg is not None
+        return self.sea is not None or bool(self.orders)
 
     def describe(self) -> str:
-        """The event in a few words, e.g. ``at 300 s: sea Hs 4.00 m Tp 9.0 s over 30 s``."""
+        """The event in a few words, e.g. ``at 300 s: sea Hs 4.00 m Tp 9.0 s over 30 s; rudder 20 deg``."""
         parts = []
         if self.sea is not None:
-            parts.append(f"sea Hs {self.sea.hs:.2f} m Tp {self.sea.tp:.1f} s")
+            parts.append(f"sea Hs {self.sea.hs:.2f} m Tp {self.sea.tp:.1f} s over {self.ramp_s:g} s")
         if self.speed_m_s is not None:
             parts.append(f"speed {self.speed_m_s / KNOT:.3g} kn")
         if self.heading_deg is not None:
-            parts.append(f"heading {self.heading_deg:g} deg")
-        change = " ".join(parts) + (f" over {self.ramp_s:g} s" if parts else "")
+            parts.append(f"course {self.heading_deg:g} deg")
+        if self.rudder_deg is not None:
+            parts.append(f"rudder {abs(self.rudder_deg):g} deg "
+                         + ("to starboard" if self.rudder_deg > 0 else "to port" if self.rudder_deg < 0 else "midships"))
+        if self.engine is not None:
+            parts.append(self.engine)
+        if self.autopilot is not None:
+            parts.append(f"autopilot {'on' if self.autopilot else 'off'}")
+        change = ", ".join(parts)
         words = {"visibility_m": "visibility {:g} m", "cloud_cover_oktas": "cloud {:g} oktas",
                  "wind_speed_m_s": "wind {:g} m/s", "rain_mm_h": "rain {:g} mm/h"}
         weather = " ".join(words[key].format(value) for key, value in self.weather.items())
@@ -176,7 +198,14 @@ def _event(where: str, options: EventOptions, depth: float, vessel: Vessel | Non
         _check_speed(f"{where}.speed_kn", vessel.rao, options.speed_kn)
     condition = None if options.when is None else parse_condition(options.when)
     weather = {key: getattr(options, key) for key in WEATHER if getattr(options, key) is not None}
-    return Event(options.at_s, condition, options.ramp_s, sea, speed, options.heading_deg, options.message, weather)
+    event = Event(options.at_s, condition, options.ramp_s, sea, speed, options.heading_deg, options.message, weather,
+                  options.rudder_deg, options.engine, options.autopilot)
+    if event.orders:  # an order the ship cannot carry out is refused now, not when it comes
+        state, orders = vessel.ship.start(vessel.speed_m_s, math.radians(vessel.heading_deg))
+        for key, value in event.orders.items():
+            name = "heading_deg" if key == "course_deg" else key
+            _checked(f"{where}.{name}", lambda: vessel.ship.order(orders, state, **{key: value}))
+    return event
 
 
 def _criterion(options: CriterionOptions) -> Criterion:
@@ -216,8 +245,38 @@ def _vessel(path: Path, options: VesselOptions) -> Vessel:
     wake_speeds = tuple(sorted({v * KNOT for v in speeds_kn}))
     points = {name: (p[0], p[1], p[2]) for name, p in options.points.items()}
     topsides = tuple(options.topsides_rgb) if options.topsides_rgb is not None else None
-    return Vessel(rao_path, rao, hull_path, hull, speed, options.heading_deg, points, wake_speeds, visual,
+    ship = _checked("vessel.manoeuvring", lambda: _ship(path, options, hull, speed))
+    return Vessel(rao_path, rao, hull_path, hull, speed, options.heading_deg, points, ship, wake_speeds, visual,
                   options.nav_lights, topsides, options.deck_layout)
+
+
+def _ship(path: Path, options: VesselOptions, hull: Hull | None, speed: float) -> Ship | StationKeeping:
+    """The vessel's manoeuvring: her file's model, held on station, a model from the hull's main particulars, or
+    (no hull) a steady course and speed; she must be able to hold the scenario's speed."""
+    if options.manoeuvring == "station":
+        if speed > 0.0:
+            raise ScenarioError(f"a vessel held on station has no speed: vessel.speed_kn is {options.speed_kn:g}")
+        return StationKeeping("the vessel")
+    if options.manoeuvring is not None:
+        _, ship = load_ship(_ship_file(path, options.manoeuvring))
+    elif hull is not None:
+        ship = ship_from_hull(Path(options.hull).stem, hull, speed)
+    else:
+        return StationKeeping("the vessel", speed)
+    ship.rps_for_speed(speed)
+    return ship
+
+
+def _ship_file(scenario: Path, name: str) -> Path:
+    """A shipped vessel's manoeuvring file by its name (``configs/vessels/<name>.toml``), else the file ``name``
+    relative to the scenario."""
+    shipped = sorted(p.stem for p in (resource_dir("configs") / "vessels").glob("*.toml"))
+    if name in shipped:
+        return resource_dir("configs") / "vessels" / f"{name}.toml"
+    if "/" not in name and "\\" not in name and not name.endswith(".toml"):
+        raise ScenarioError(f"{name!r}: expected \"station\", a shipped vessel ({', '.join(shipped)}) or a "
+                            "manoeuvring file (.toml)")
+    return _file(scenario, name)
 
 
 def _mesh(path: Path, options: VesselOptions, key: str, names: dict[str, str],

@@ -10,11 +10,12 @@ the viewer shows at ``t`` is what ``assess`` reports at ``t``.
 Events happen in time: one with ``at_s`` is asked of the timeline ahead of time and starts at
 ``at_s``; one with ``when`` is checked at every evaluation and happens the first time its condition
 holds, its change starting then (a sea change :data:`~marinesim.session.timeline.PREPARE_S` later, while
-its amplitudes are prepared). A change asked while another blends waits for that blend to end.
+its amplitudes are prepared; orders to the ship at once). Sea changes and orders never wait for each other.
 
 A criterion whose running value goes above its limit raises an :class:`Alarm`, which stays until it is
 acknowledged; it clears when the value is back within the limit. Live actions (an instructor's change
-of sea, speed or heading, an event triggered early, a message, an acknowledgement) go through
+of sea, the trainee's helm, telegraph and autopilot orders, an event triggered early, a message, an
+acknowledgement) go through
 :meth:`Exercise.act`; everything that happens is kept in :attr:`Exercise.journal` with its simulation
 time, the session log (:mod:`marinesim.session.log`) that a replay runs again.
 """
@@ -28,7 +29,6 @@ from typing import Any
 
 import numpy as np
 
-from marinesim.constants import KNOT
 from marinesim.criteria.monitor import Criterion, Monitor, Tally, watched
 from marinesim.errors import ParameterError
 from marinesim.progress import task
@@ -78,10 +78,13 @@ class Alarm:
 
 
 CHANGE_KEYS = frozenset({"hs_factor", "tp_factor", "turn_waves_deg", "speed_kn", "heading_deg", "ramp_s"})
-"""What a live change may give (:meth:`Simulation.change`'s keywords, the sea as factors of the present one)."""
+"""What a live change may give (:meth:`Simulation.change`'s keywords, the sea as factors of the present one; speed
+and heading are orders to the engine and the autopilot)."""
+ORDER_KEYS = frozenset({"rudder_deg", "engine", "speed_kn", "autopilot", "course_deg"})
+"""What a live order may give (:meth:`Simulation.order`'s keywords)."""
 WEATHER_KEYS = frozenset({*WEATHER, "hours"})
 """What a live weather change may give (:meth:`EnvironmentOptions.changed`'s keywords): new values, the clock moved."""
-ACTIONS = {"change": CHANGE_KEYS, "weather": WEATHER_KEYS, "trigger": frozenset({"index"}),
+ACTIONS = {"change": CHANGE_KEYS, "order": ORDER_KEYS, "weather": WEATHER_KEYS, "trigger": frozenset({"index"}),
            "message": frozenset({"text"}), "acknowledge": frozenset()}
 """Live actions and their fields: what :meth:`Exercise.act` applies and a replay applies again."""
 MAX_MESSAGE = 200
@@ -145,7 +148,7 @@ class Exercise:
         self.row = 0
         """The next grid row to record."""
         self._ahead: tuple[int, int, int, dict[str, np.ndarray]] | None = None
-        """(first row, legs of the timeline then, rows, their columns) computed ahead."""
+        """(first row, the timeline's version then, rows, their columns) computed ahead."""
 
     # -- moving on ----------------------------------------------------------------------------
 
@@ -216,9 +219,9 @@ class Exercise:
         """Rows ``first..last`` of the record: from what was computed ahead while the timeline has not
         changed since, else computed now with up to :data:`AHEAD` rows (not beyond ``ahead_to``) ahead."""
         ahead = self._ahead
-        if ahead is None or ahead[1] != len(self.sim.legs) or not ahead[0] <= first <= last < ahead[0] + ahead[2]:
+        if ahead is None or ahead[1] != self.sim.version or not ahead[0] <= first <= last < ahead[0] + ahead[2]:
             count = max(last, min(ahead_to, first + AHEAD - 1)) - first + 1
-            self._ahead = ahead = (first, len(self.sim.legs), count,
+            self._ahead = ahead = (first, self.sim.version, count,
                                    self.sim.frame_steps(first * self.dt, self.dt, count))
         lo, hi = first - ahead[0], last + 1 - ahead[0]
         return {name: column[lo:hi] for name, column in ahead[3].items()}
@@ -270,8 +273,11 @@ class Exercise:
                 self.note("cleared", criterion=alarm.name, value=value)
 
     def _change(self, event: Event, at: float) -> None:
-        self.sim.change(sea=event.sea, speed_kn=None if event.speed_m_s is None else event.speed_m_s / KNOT,
-                        heading_deg=event.heading_deg, ramp_s=event.ramp_s, at=at)
+        """Event ``event``'s sea change from ``at`` (s) and its orders, given at ``at``."""
+        if event.sea is not None:
+            self.sim.change(sea=event.sea, ramp_s=event.ramp_s, at=at)
+        if event.orders:
+            self.sim.order(at=at, **event.orders)
 
     def _happen(self, index: int, t: float, early: bool = False) -> None:
         happened = Happened(index, t, self.events[index], early)
@@ -291,6 +297,8 @@ class Exercise:
             raise ParameterError(f"unknown action {action!r} with {sorted(fields)}")
         if action == "change":
             self.sim.change(**fields)
+        elif action == "order":
+            self.sim.order(**fields)
         elif action == "weather":
             self.sim.change_weather(**fields)
         elif action == "trigger":

@@ -29,7 +29,7 @@ from marinesim.progress import Bar, task
 from marinesim.session.assembly import Assembly
 from marinesim.session.exercise import Exercise, last_row, quiet
 from marinesim.session.sidecar import run_sidecar, sha256, write_table
-from marinesim.session.timeline import Simulation
+from marinesim.session.timeline import Simulation, record_columns
 
 FORMATS = ("csv", "parquet")
 EXTENSIONS = {".csv": "csv", ".parquet": "parquet", ".pq": "parquet"}
@@ -38,7 +38,12 @@ CONVENTIONS = ("body frame x forward, y port, z up, origin at the RAO reference 
                "roll/pitch/yaw positive about x/y/z (pitch bow down, yaw bow to port), degrees; "
                "points: position in the steady vessel frame, R = Rz(yaw) Ry(pitch) Rx(roll); "
                "<point>_relative_m = point's vertical motion minus the incident wave elevation there; "
-               "wave_elevation_m: incident wave at the reference point (docs/CONVENTIONS.md)")
+               "wave_elevation_m: incident wave at the reference point; roll_deg includes the heel of a turn; "
+               "north_m, east_m: the manoeuvring model's origin from the start; heading_deg: compass heading of "
+               "the bow (manoeuvring heading less the yaw); course_over_ground_deg, speed_over_ground_kn, "
+               "drift_angle_deg (heading less course, + bow to starboard of the track): the manoeuvring motion's; "
+               "rate_of_turn_deg_min, rudder_deg, rudder_order_deg: positive to starboard; propeller_rpm: negative "
+               "astern (docs/CONVENTIONS.md)")
 """What the columns mean, as the sidecar states it."""
 OUTSIDE_TABLE = ("share of each DOF's displacement variance (sum |H a|^2 / 2 over the wave components) from wave "
                  "frequencies below the RAO table (the long-wave model) and above it (the RAO tapered to zero at "
@@ -76,7 +81,8 @@ def export_motions(assembly: Assembly, out: Path, file_format: str | None = None
     if steps > MAX_ROWS:
         raise ParameterError(f"{duration:g} s at dt {run.dt_s:g} s is {steps:.3g} rows, more than {MAX_ROWS:.0e} "
                              "per export")
-    columns = assembly.response.columns  # refuses a scenario without a vessel
+    assembly.response  # refuses a scenario without a vessel
+    columns = record_columns(scenario.vessel.points)
     simulation = Simulation(scenario, wake=False, assembly=assembly)
     exercise = Exercise(simulation, duration, log)
 
@@ -108,7 +114,7 @@ def motions_sidecar(exercise: Exercise, rows: int, duration_s: float) -> dict:
     vessel, rao, response = scenario.vessel, scenario.vessel.rao, assembly.response
     return {
         "rows": rows,
-        "columns": response.columns,
+        "columns": record_columns(vessel.points),
         "conventions": CONVENTIONS,
         **run_sidecar(assembly, duration_s, scenario.run.dt_s, response.components),
         "vessel": {
@@ -132,12 +138,12 @@ def motions_sidecar(exercise: Exercise, rows: int, duration_s: float) -> dict:
 def outside_table(exercise: Exercise) -> dict:
     """The RAO table's frequency range (rad/s) and, per leg of the run (``from_s``, s), the share of each
     DOF's response variance from below and above it (:meth:`Response.variance_outside_table`, rounded to
-    1e-6), as :data:`OUTSIDE_TABLE` says."""
+    1e-6) for the leg's sea on the ship's track when it blends in, as :data:`OUTSIDE_TABLE` says."""
     sim = exercise.sim
     rao = sim.vessel.rao
     legs = []
-    for i, leg in enumerate(sim.legs):
-        shares = sim.response(i).variance_outside_table()
+    for leg in sim.legs:
+        shares = sim.response_at(leg.after, leg.start + leg.ramp_s).variance_outside_table()
         legs.append({"from_s": leg.start, **{side: {dof: None if share is None else round(share, 6)
                                                     for dof, share in by_dof.items()}
                                              for side, by_dof in shares.items()}})
@@ -179,7 +185,7 @@ def table_format(path: Path, file_format: str | None) -> str:
 
 
 def write_csv_block(handle: IO[str], block: dict[str, np.ndarray], header: bool) -> None:
-    """Motion rows (columns as :func:`~marinesim.vessel.response.motion_columns`) to an open text file."""
+    """Motion rows (columns as :func:`~marinesim.session.timeline.record_columns`) to an open text file."""
     import pandas as pd
 
     pd.DataFrame(block).to_csv(handle, index=False, header=header, lineterminator="\n")

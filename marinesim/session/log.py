@@ -19,6 +19,7 @@ from typing import Any
 
 from marinesim import __version__
 from marinesim.errors import FileFormatError
+from marinesim.manoeuvring.actuators import TELEGRAPH
 from marinesim.scenario import Scenario
 from marinesim.session.exercise import ACTIONS, CHANGE_KEYS, MAX_MESSAGE, Exercise
 from marinesim.session.sidecar import sha256, write_table
@@ -128,8 +129,14 @@ def _check_action(path: Path, number: int, entry: dict) -> None:
         raise FileFormatError(path, number, f"{action}: unknown key {unknown[0]!r} (known: "
                          f"{', '.join(sorted(ACTIONS[action])) or 'none'})")
     for key, value in fields.items():
-        if key in CHANGE_KEYS and not _is(value, float):
+        if key in CHANGE_KEYS | {"rudder_deg", "course_deg"} and not _is(value, float):
             raise FileFormatError(path, number, f"key {key!r}: expected a number, got {value!r}")
+    if action == "order":
+        if "engine" in fields and fields["engine"] not in TELEGRAPH:
+            raise FileFormatError(path, number, f"key 'engine': expected one of {', '.join(TELEGRAPH)}, "
+                                                f"got {fields['engine']!r}")
+        if "autopilot" in fields and not isinstance(fields["autopilot"], bool):
+            raise FileFormatError(path, number, f"key 'autopilot': expected true or false, got {fields['autopilot']!r}")
     if action == "trigger" and not _is(fields.get("index"), int):
         raise FileFormatError(path, number, f"key 'index': expected an event's index, got {fields.get('index')!r}")
     if action == "message" and not (isinstance(fields.get("text"), str) and 0 < len(fields["text"]) <= MAX_MESSAGE):

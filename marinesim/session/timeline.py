@@ -1,22 +1,27 @@
-"""The session's timeline: the ocean, the vessel's pose and motions, its wake and the local solver,
+"""The session's timeline: the ocean, the vessel's voyage, pose and motions, her wake and the local solver,
 as functions of time.
 
-The timeline owns no GL state; the renderer reads it. Its state is a list of *legs*: the
-vessel's straight track and its response to the sea at that time. A live change (sea state,
-speed, heading) starts a new leg that blends in over ``ramp_s`` seconds with the weight
-``w = 3 s^2 - 2 s^3`` (:func:`~marinesim.sea.ocean.smoothstep`), the one the ocean ramps its
-amplitudes with (:meth:`Ocean.ramp_to`): the response is linear in the amplitudes, so blending
-the two legs' motions with ``w`` is the response to the ramping sea. Track position and heading
-blend with the same weight, which turns the ship along a smooth curve. A change asked for while
-another blends waits for it to end. Motions, poses and recordings at any time come from the
-timeline, so the same scenario, seed and changes give the same numbers whatever the frame rate.
-The local wave solver, when started, is stepped with the clock.
+The timeline owns no GL state; the renderer reads it. Two things move independently:
+
+- the sea, in *legs*: a sea change starts a leg that blends in over ``ramp_s`` seconds with the weight
+  ``w = 3 s^2 - 2 s^3`` (:func:`~marinesim.sea.ocean.smoothstep`), the one the ocean ramps its amplitudes with
+  (:meth:`Ocean.ramp_to`), from the sea of that moment (a blend still under way included) to the new one; the
+  response is linear in the amplitudes, so blending the responses to the two with ``w`` is the response to
+  the ramping sea;
+- the ship, on her voyage (:class:`~marinesim.manoeuvring.voyage.Voyage`): her manoeuvring model answers
+  the helm, the telegraph and the autopilot from the moment each order is given, never waiting for a sea
+  change.
+
+The wave-frequency motions follow the ship's heading and speed as they change
+(:mod:`marinesim.vessel.along`), exactly as on a straight track (:class:`~marinesim.vessel.response.Response`)
+where she runs straight and steady; her own heel in a turn adds to the roll. Motions, poses and recordings at
+any time come from the timeline, so the same scenario, seed, changes and orders give the same numbers
+whatever the frame rate. The local wave solver, when started, is stepped with the clock.
 """
 
 from __future__ import annotations
 
 import contextvars
-import dataclasses
 import math
 from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import dataclass
@@ -24,9 +29,11 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from marinesim.angles import compass_to_math, math_to_compass, wave_compass_from_beta
+from marinesim.angles import math_to_compass, wave_compass_from_beta
 from marinesim.constants import KNOT
 from marinesim.errors import ParameterError, require_at_least, require_positive
+from marinesim.manoeuvring.ship import STEP_S
+from marinesim.manoeuvring.voyage import SHIP_COLUMNS, Voyage
 from marinesim.pose import Pose
 from marinesim.recent import Recent
 from marinesim.scenario import Scenario
@@ -34,7 +41,8 @@ from marinesim.scenario.model import CHANGE_RAMP_S, MAX_SPEED_KN, WEATHER, Envir
 from marinesim.sea.ocean import smoothstep
 from marinesim.sea.seastate import SeaState, scaled_sea
 from marinesim.session.assembly import Assembly
-from marinesim.vessel.response import Response, Track
+from marinesim.vessel.along import KNOT_S, ShipPath, linear_along
+from marinesim.vessel.response import Response, Track, motion_columns
 from marinesim.wake.cache import cached_wake
 from marinesim.wake.compute import QUALITATIVE_BELOW_FROUDE, Wake, WakeGrid
 
@@ -42,24 +50,26 @@ if TYPE_CHECKING:  # the solver's module (moderngl's compute side) loads only wh
     from marinesim.solver.local import LocalSolver
 
 PREPARE_S = 0.5
-"""A sea change starts this long (s) after it is asked for, or when the blend before it ends if
-later: meanwhile a worker thread computes its amplitudes (:meth:`Ocean.prepare`, 0.1-0.2 s at
-4 x 256^2), so the frames go on without a hitch. The start is a fixed time, never "when the
-worker is done": the same changes give the same timeline whatever the machine."""
+"""A sea change starts this long (s) after it is asked for: meanwhile a worker thread computes its amplitudes
+(:meth:`Ocean.prepare`, 0.1-0.2 s at 4 x 256^2), so the frames go on without a hitch. The start is a fixed time,
+never "when the worker is done": the same changes give the same timeline whatever the machine."""
+WAKE_STEP_KN = 1.0
+"""Kelvin wakes are computed at the scenario's speeds and at whole knots between: a ship changing speed shows the
+two nearest, blended by her speed."""
+RESPONSES_KEPT = 3
+"""Responses to straight runs held at once (a few MB each: the run she is on, the one before, one more)."""
 WAKE_GRID = WakeGrid()
 """The viewer's wake grid: the default one, so the viewer reads the wakes the headless run cached."""
 
 
 @dataclass(frozen=True)
 class _Change:
-    """A change asked for and not yet started; ``None`` leaves that quantity as it is."""
+    """A sea change asked for and not yet started."""
 
-    sea: SeaState | None
-    speed: float | None
-    heading: float | None
+    sea: SeaState
     ramp_s: float
-    ready_at: float                 # s, the earliest start
-    prepared: Future | None = None  # the ocean's PreparedSea for ``sea``, computing
+    ready_at: float    # s, its start
+    prepared: Future   # the ocean's PreparedSea for ``sea``, computing
 
 
 @dataclass(frozen=True)
@@ -89,22 +99,28 @@ class _WeatherRamp:
 
 @dataclass(frozen=True)
 class Leg:
-    """From ``start`` (s) the vessel follows ``track`` in ``sea``, blending in over ``ramp_s``."""
+    """From ``start`` (s) the sea blends over ``ramp_s`` from the sea of that moment, ``before`` (component sets
+    and their weights: one set, or the blend under way then), to component set ``after`` (``sea``'s)."""
 
     start: float
     ramp_s: float
     sea: SeaState
-    track: Track
+    before: tuple[tuple[int, float], ...]
+    after: int
 
     def weight(self, t: np.ndarray) -> np.ndarray:
+        """The weight of ``after`` at ``t`` (s)."""
         s = np.clip((np.asarray(t, float) - self.start) / self.ramp_s, 0.0, 1.0) if self.ramp_s > 0 else 1.0
         return np.broadcast_to(smoothstep(s), np.shape(t)).astype(float)
 
-    def track_point(self, t: np.ndarray) -> np.ndarray:
-        """(T, 2) track point (m, E frame)."""
-        tr = self.track
-        t = np.atleast_1d(np.asarray(t, float))
-        return np.c_[tr.x0 + tr.speed * math.cos(tr.heading) * t, tr.y0 + tr.speed * math.sin(tr.heading) * t]
+    def weight_rates(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The weight's first and second time derivatives (1/s, 1/s^2) at ``t`` (s)."""
+        if self.ramp_s <= 0:
+            return np.zeros(np.shape(t)), np.zeros(np.shape(t))
+        s = (np.asarray(t, float) - self.start) / self.ramp_s
+        inside = (s > 0.0) & (s < 1.0)
+        return (np.where(inside, 6.0 * s * (1.0 - s) / self.ramp_s, 0.0),
+                np.where(inside, 6.0 * (1.0 - 2.0 * s) / self.ramp_s**2, 0.0))
 
 
 class Simulation:
@@ -118,39 +134,40 @@ class Simulation:
         self.time = 0.0
         self._weather = _WeatherRamp(0.0, 0.0, scenario.environment, scenario.environment)
         self.vessel = scenario.vessel
-        heading = compass_to_math(self.vessel.heading_deg) if self.vessel else 0.0
-        speed = self.vessel.speed_m_s if self.vessel else 0.0
-        self.legs = [Leg(0.0, 0.0, scenario.sea, Track(heading, speed))]
-        self._responses = Recent(self._respond)
-        """The vessel's response on each leg (the newest kept, older recomputed: memory stays flat)."""
+        self.legs = [Leg(0.0, 0.0, scenario.sea, ((0, 1.0),), 0)]
+        self._set_times = [0.0]
+        """When each component set is taken from the ocean (its amplitudes then)."""
+        self._sets = Recent(lambda i: self.assembly.components(t=self._set_times[i]))
         self._pending: list[_Change] = []
         self._preparing = ThreadPoolExecutor(max_workers=1, thread_name_prefix="sea-change")
         self._last_pose: tuple[float, int, Pose | None] = (math.nan, 0, None)
+        self._straight: dict[tuple, Response] = {}
+        self.voyage: Voyage | None = None
+        if self.vessel is not None:
+            start, orders = self.vessel.ship.start(self.vessel.speed_m_s, math.radians(self.vessel.heading_deg))
+            self.voyage = Voyage(self.vessel.ship, start, orders, STEP_S)
+        self.version = 0
+        """Counts the changes of the timeline (a sea change started, an order given): rows computed before a
+        change are stale after it."""
         self.wake_on = wake and self.vessel is not None and self.vessel.hull is not None
         self._wake_grid = wake_grid
         self._wakes: dict[float, Future | Wake | None] = {}
         self._pool = ThreadPoolExecutor(max_workers=1) if self.wake_on else None
         self.solver: LocalSolver | None = None
         if self.wake_on:
-            self._request_wake(speed, wait=True)
+            self._request_wake(self.vessel.speed_m_s, wait=True)
 
     # -- timeline -----------------------------------------------------------------------------
 
-    def _respond(self, index: int) -> Response:
-        """The response on leg ``index``: to the sea it blends into, along its track."""
+    def components(self, index: int):
+        """Component set ``index`` (:meth:`Assembly.components` at its time): set 0 the scenario's sea."""
         if index == 0:
-            return self.assembly.response
-        leg = self.legs[index]
-        components = self.assembly.components(t=leg.start + leg.ramp_s)
-        return Response(self.vessel.rao, components, leg.track, self.vessel.points)
-
-    def response(self, index: int) -> Response:
-        """The vessel's response on leg ``index`` (the scenario must have a vessel)."""
-        return self._responses.get(index, len(self.legs) - 1)
+            return self.assembly.components()
+        return self._sets.get(index, len(self._set_times) - 1)
 
     def advance(self, dt: float, step_solver: bool = True) -> None:
-        """Move the clock on by ``dt`` (s), start the changes waiting for a blend to end, step the solver
-        (unless told not to: a seek places it once at the end)."""
+        """Move the clock on by ``dt`` (s), start the sea changes due, step the solver (unless told not to: a seek
+        places it once at the end)."""
         self.advance_to(self.time + dt, step_solver)
 
     def advance_to(self, t: float, step_solver: bool = True) -> None:
@@ -176,61 +193,48 @@ class Simulation:
         if not math.isfinite(t) or t < self.time:
             raise ParameterError(f"time step must be a finite non-negative number of seconds, got {t - self.time!r}")
         self.time = t
-        while self._pending and self.time >= (at := self._next_start()):
-            self._start(self._pending.pop(0), at)
-
-    def _next_start(self) -> float:
-        """When the first waiting change starts (s): once asked and prepared, after the blend before it."""
-        last = self.legs[-1]
-        return max(last.start + last.ramp_s, self._pending[0].ready_at)
-
-    def _requested(self, field: str):
-        """The newest waiting change's value of ``field`` (sea, speed, heading), or None."""
-        values = (getattr(change, field) for change in reversed(self._pending))
-        return next((value for value in values if value is not None), None)
+        while self._pending and self.time >= self._pending[0].ready_at:
+            self._start(self._pending.pop(0))
 
     @property
     def sea(self) -> SeaState:
         """The sea state the ocean is at, ramping to, or will ramp to once the waiting changes start."""
-        requested = self._requested("sea")
-        return self.legs[-1].sea if requested is None else requested
-
-    @property
-    def speed_m_s(self) -> float:
-        """Speed the vessel is at or changing to (waiting changes included)."""
-        requested = self._requested("speed")
-        return self.legs[-1].track.speed if requested is None else requested
-
-    @property
-    def heading_deg(self) -> float:
-        """Compass heading the vessel is on or turning to (waiting changes included)."""
-        requested = self._requested("heading")
-        return math_to_compass(self.legs[-1].track.heading if requested is None else requested)
+        return self._pending[-1].sea if self._pending else self.legs[-1].sea
 
     def change(self, *, hs_factor: float = 1.0, tp_factor: float = 1.0, turn_waves_deg: float = 0.0,
                sea: SeaState | None = None, speed_kn: float | None = None, heading_deg: float | None = None,
                ramp_s: float = CHANGE_RAMP_S, at: float | None = None) -> None:
         """Ask for a change: all wave heights times ``hs_factor``, periods times ``tp_factor``,
-        directions turned by ``turn_waves_deg`` (compass, clockwise), or a new ``sea``; a new speed or
-        compass heading. It starts at ``at`` (s; default now, a sea change :data:`PREPARE_S` later),
-        or when the blend before it ends if later."""
-        if speed_kn is not None and not 0.0 <= speed_kn <= MAX_SPEED_KN:
-            raise ParameterError(f"speed must be within 0..{MAX_SPEED_KN:g} kn, got {speed_kn!r}")
-        speed = None if speed_kn is None else speed_kn * KNOT
-        heading = None if heading_deg is None else compass_to_math(heading_deg % 360.0)
+        directions turned by ``turn_waves_deg`` (compass, clockwise), or a new ``sea``, blending in over ``ramp_s``
+        from ``at`` (s; default :data:`PREPARE_S` from now) whatever the sea is doing then; ``speed_kn`` and
+        ``heading_deg`` are orders to the engine and the autopilot (:meth:`order`), given at ``at`` (default now)."""
+        if speed_kn is not None or heading_deg is not None:
+            self.order(speed_kn=speed_kn, course_deg=heading_deg, at=at)
         start = self.time if at is None else require_at_least("start of a change (s)", at, 0.0)
-        change = _Change(None, speed, heading, require_at_least("ramp time (s)", ramp_s, 0.0), start)
         if (hs_factor, tp_factor, turn_waves_deg) != (1.0, 1.0, 0.0):
             if sea is not None:
                 raise ParameterError("give a new sea or factors of the present one, not both")
             sea = scaled_sea(self.sea, hs_factor, tp_factor, turn_waves_deg)
-        if sea is not None:
-            require_positive("ramp time of a sea change (s)", ramp_s)  # refused now, not when it starts
-            self.ocean.check(sea)
-            change = dataclasses.replace(change, sea=sea, ready_at=start + (PREPARE_S if at is None else 0.0),
-                                         prepared=self._preparing.submit(self.ocean.prepare, sea))
-        self._pending.append(change)
+        if sea is None:
+            return
+        ramp = require_positive("ramp time of a sea change (s)", ramp_s)
+        self.ocean.check(sea)
+        ready = max(start + (PREPARE_S if at is None else 0.0), self._pending[-1].ready_at if self._pending else 0.0)
+        self._pending.append(_Change(sea, ramp, ready, self._preparing.submit(self.ocean.prepare, sea)))
         self._move_clock(self.time)
+
+    def order(self, *, rudder_deg: float | None = None, engine: str | None = None, speed_kn: float | None = None,
+              autopilot: bool | None = None, course_deg: float | None = None, at: float | None = None) -> None:
+        """Orders to the ship from ``at`` (s; default now): the rudder by hand (deg, positive to starboard; the
+        autopilot off), a telegraph order or the engine set for a speed (kn), the autopilot on (on the present
+        heading) or off (the rudder held where it stands), or a course (compass deg) for the autopilot."""
+        if self.vessel is None:
+            raise ParameterError("the scenario has no vessel: no orders")
+        t = self.time if at is None else require_at_least("time of an order (s)", at, self.time)
+        asked = {"rudder_deg": rudder_deg, "engine": engine, "speed_kn": speed_kn, "autopilot": autopilot,
+                 "course_deg": course_deg}
+        self.voyage.order(t, **{key: value for key, value in asked.items() if value is not None})
+        self.version += 1
 
     @property
     def environment(self) -> EnvironmentOptions:
@@ -250,26 +254,56 @@ class Simulation:
         ramp = require_at_least("ramp time (s)", ramp_s, 0.0)
         self._weather = _WeatherRamp(self.time, ramp, before.changed(hours) if hours else before, after)
 
-    def _start(self, change: _Change, at: float) -> None:
-        t, last = at, self.legs[-1]
-        if change.sea is not None:
-            self.ocean.ramp_to(change.prepared.result(), t, change.ramp_s)  # ready unless the machine is slow
-        x, y = last.track_point(t)[0]
-        heading = last.track.heading if change.heading is None else change.heading
-        speed = last.track.speed if change.speed is None else change.speed
-        start = (x - speed * math.cos(heading) * t, y - speed * math.sin(heading) * t)
-        self.legs.append(Leg(t, change.ramp_s, change.sea or last.sea, Track(heading, speed, *start)))
-        if self.vessel is not None:
-            self.response(len(self.legs) - 1)  # computed now, at the change, not in the next frame
-        if self.wake_on:
-            self._request_wake(speed)
+    def _start(self, change: _Change) -> None:
+        t, last = change.ready_at, self.legs[-1]
+        self.ocean.ramp_to(change.prepared.result(), t, change.ramp_s)  # ready unless the machine is slow
+        w = float(last.weight(t))
+        before: dict[int, float] = {last.after: w}
+        for index, weight in last.before if w < 1.0 else ():  # a blend under way: it goes on from the mix of now
+            before[index] = before.get(index, 0.0) + (1.0 - w) * weight
+        self.legs.append(Leg(t, change.ramp_s, change.sea, tuple(before.items()), self._new_set(t + change.ramp_s)))
+        self.version += 1
 
-    def _legs_at(self, t: float) -> tuple[Leg, Leg, float]:
-        """(previous leg, current leg, weight of the current) at time ``t``."""
+    def _new_set(self, t: float) -> int:
+        self._set_times.append(t)
+        index = len(self._set_times) - 1
+        self.components(index)  # computed now, at the change, not in the next frame
+        return index
+
+    def _legs_at(self, t: float) -> tuple[Leg, float]:
+        """(the leg at ``t``, the weight of its new sea)."""
         index = max(i for i, leg in enumerate(self.legs) if leg.start <= t or i == 0)
         leg = self.legs[index]
-        previous = self.legs[max(index - 1, 0)]
-        return previous, leg, float(leg.weight(t))
+        return leg, float(leg.weight(t))
+
+    # -- the ship -----------------------------------------------------------------------------
+
+    @property
+    def speed_m_s(self) -> float:
+        """Speed through the water now (m/s)."""
+        return float(self.voyage.path(np.array([self.time])).speed[0]) if self.voyage else 0.0
+
+    @property
+    def heading_deg(self) -> float:
+        """Compass heading of the bow now (the manoeuvring heading, deg)."""
+        return math_to_compass(float(self.voyage.path(np.array([self.time])).heading[0])) if self.voyage else 0.0
+
+    def conning(self, t: float | None = None) -> dict[str, float | str | bool | None]:
+        """The conning display at ``t`` (default now): heading, set course (None by hand), rudder order and angle
+        (deg, positive to starboard), propeller rpm and the engine order, rate of turn (deg/min, positive to
+        starboard), speed and course over ground (kn, deg), the ship's name and model."""
+        t = self.time if t is None else t
+        row = self.voyage.record(np.array([t]), np.zeros(1))
+        orders = self.voyage.orders_at(t)
+        ship = self.vessel.ship
+        return {"heading_deg": float(row["heading_deg"][0]),
+                "course_deg": math.degrees(orders.course) % 360.0 if orders.autopilot else None,
+                "rudder_order_deg": float(row["rudder_order_deg"][0]), "rudder_deg": float(row["rudder_deg"][0]),
+                "rpm": float(row["propeller_rpm"][0]), "engine": orders.engine,
+                "rate_of_turn_deg_min": float(row["rate_of_turn_deg_min"][0]),
+                "speed_over_ground_kn": float(row["speed_over_ground_kn"][0]),
+                "course_over_ground_deg": float(row["course_over_ground_deg"][0]),
+                "ship": ship.name, "model": ship.describe()}
 
     # -- queries ------------------------------------------------------------------------------
 
@@ -279,69 +313,141 @@ class Simulation:
         The renderer, the camera and the HUD all ask for the pose at the same time each frame:
         the last one is kept."""
         t = self.time if t is None else t
-        if self._last_pose[0] == t and len(self.legs) == self._last_pose[1]:
+        if self._last_pose[0] == t and self._last_pose[1] == self.version:
             return self._last_pose[2]
-        previous, leg, w = self._legs_at(t)
-        x, y = (1.0 - w) * previous.track_point(t)[0] + w * leg.track_point(t)[0]
-        turn = math.remainder(leg.track.heading - previous.track.heading, 2.0 * math.pi)
-        motion = (0.0,) * 6
-        if self.vessel is not None:
+        if self.vessel is None:
+            pose = Pose()
+        else:
+            path = self.voyage.path(np.array([t]))
             motion = tuple(float(v) for v in self._linear(np.array([t]))[0, :6])
-        pose = Pose(float(x), float(y), previous.track.heading + w * turn, motion)
-        self._last_pose = (t, len(self.legs), pose)
+            pose = Pose(float(path.x[0]), float(path.y[0]), float(path.heading[0]), motion)
+        self._last_pose = (t, self.version, pose)
         return pose
 
+    @property
+    def columns(self) -> list[str]:
+        """The record's columns (:meth:`frame`)."""
+        return record_columns(self.vessel.points)
+
     def frame(self, times: np.ndarray) -> dict[str, np.ndarray]:
-        """Motion columns (as ``marinesim export``) at ``times`` (s), blended across legs."""
+        """The record (as ``marinesim export``) at ``times`` (s, increasing): the motion columns, blended across
+        sea legs, and the ship's own (:data:`~marinesim.manoeuvring.voyage.SHIP_COLUMNS`)."""
         times = np.asarray(times, float).ravel()
         if self.vessel is None:
             raise ParameterError("the scenario has no vessel: no motions to record")
-        return self.response(len(self.legs) - 1).frame(times, self._linear(times))
+        return self._record(times, self._linear(times))
 
     def frame_steps(self, start: float, dt: float, steps: int) -> dict[str, np.ndarray]:
-        """:meth:`frame` at ``start + dt * arange(steps)``, each leg through its response's block product
-        (:meth:`Response.linear_steps`, tables reused across blocks), a blend as the two legs' weighted sum."""
+        """:meth:`frame` at ``start + dt * arange(steps)``; straight runs through their response's block product
+        (:meth:`Response.linear_steps`, tables reused across blocks)."""
         times = start + dt * np.arange(steps)
-        last = len(self.legs) - 1
-        linear = np.empty((steps, self.response(last).linear(times[:0]).shape[1]))
-        k = 0
-        while k < steps:
-            index = max(i for i, leg in enumerate(self.legs) if leg.start <= times[k] or i == 0)
-            leg = self.legs[index]
-            after = self.legs[index + 1].start if index < last else math.inf
-            steady = leg.start + leg.ramp_s
-            blending = times[k] < steady
-            end = k + int(np.searchsorted(times[k:], min(steady, after) if blending else after, side="left"))
-            end = max(end, k + 1)
-            linear[k:end] = self._steps_of(index, times[k], dt, end - k)
-            if blending:
-                w = leg.weight(times[k:end])[:, None]
-                linear[k:end] = w * linear[k:end] + (1.0 - w) * self._steps_of(index - 1, times[k], dt, end - k)
-            k = end
-        return self.response(last).frame(times, linear)
+        return self._record(times, self._linear(times, dt))
 
-    def _steps_of(self, index: int, start: float, dt: float, steps: int) -> np.ndarray:
-        """Leg ``index``'s response's linear outputs at ``start + dt * arange(steps)`` (its block product)."""
-        return np.concatenate([out for _, out in self.response(index).linear_steps(start, dt, steps)])
+    def _record(self, times: np.ndarray, linear: np.ndarray) -> dict[str, np.ndarray]:
+        return self.assembly.response.frame(times, linear) | self.voyage.record(times, linear[:, 5])
 
-    def _linear(self, times: np.ndarray) -> np.ndarray:
-        """The responses' linear outputs (:meth:`Response.linear`) at ``times``, blended across legs;
-        the previous leg is evaluated only where a blend is under way."""
-        out = np.empty((times.size, self.response(len(self.legs) - 1).linear(times[:0]).shape[1]))
+    def _linear(self, times: np.ndarray, dt: float | None = None) -> np.ndarray:
+        """The responses' linear outputs (:meth:`Response.linear`) at ``times`` (increasing; a grid of step ``dt``
+        where given), the sea legs blended, the ship's own heel added to the roll."""
+        out = np.empty((times.size, 19 + len(self.vessel.points)))
         starts = np.array([leg.start for leg in self.legs])
         index = np.maximum(np.searchsorted(starts, times, side="right") - 1, 0)
         for i in np.unique(index):
             at = np.flatnonzero(index == i)
             leg = self.legs[i]
-            out[at] = self.response(i).linear(times[at])
+            out[at] = self._along(leg.after, times[at], dt)
             w = leg.weight(times[at])
-            blending = at[w < 1.0]
-            if blending.size:
-                w = w[w < 1.0][:, None]
-                out[blending] = w * out[blending] + (1.0 - w) * self.response(i - 1).linear(times[blending])
+            blending = w < 1.0
+            if np.any(blending):
+                sel = at[blending]
+                before = sum(weight * self._along(index, times[sel], dt) for index, weight in leg.before)
+                w = w[blending][:, None]
+                rate, curve = (r[:, None] for r in leg.weight_rates(times[sel]))
+                after = out[sel]
+                out[sel] = w * after + (1.0 - w) * before
+                # the ramp's own share of the derivatives: d/dt (w a + (1 - w) b)
+                out[sel, 6:12] += rate * (after[:, 0:6] - before[:, 0:6])
+                out[sel, 12:18] += 2.0 * rate * (after[:, 6:12] - before[:, 6:12]) + curve * (after[:, 0:6]
+                                                                                             - before[:, 0:6])
+        path = self.voyage.path(times)
+        out[:, 3] += path.roll
+        out[:, 9] += path.roll_rate
+        out[:, 15] += path.roll_acc
         return out
 
+    def _along(self, index: int, times: np.ndarray, dt: float | None) -> np.ndarray:
+        """Set ``index``'s response at ``times``: straight runs by :class:`Response`, manoeuvres by
+        :func:`~marinesim.vessel.along.linear_along`."""
+        out = np.empty((times.size, 19 + len(self.vessel.points)))
+        if not times.size:
+            return out
+        vessel = self.vessel
+        for lo, hi, run in self.voyage.runs(times):
+            if run is None:
+                out[lo:hi] = linear_along(vessel.rao, self.components(index), vessel.points, self.voyage.path,
+                                          times[lo:hi])
+                continue
+            response = self._straight_response(index, run)
+            if dt is None or hi - lo < 2:
+                out[lo:hi] = response.linear(times[lo:hi])
+            else:
+                out[lo:hi] = np.concatenate([o for _, o in response.linear_steps(float(times[lo]), dt, hi - lo)])
+        return out
+
+    def _straight_response(self, index: int, run: ShipPath | None) -> Response:
+        """Set ``index``'s response on the straight run ``run`` (its path at its first step; None: the scenario's
+        track)."""
+        if run is None or (index == 0 and run.times[0] == 0.0):
+            if index == 0:
+                return self.assembly.response
+            run = self.voyage.path(np.array([0.0]))
+        t0 = float(run.times[0])
+        heading, speed = float(run.heading[0]), float(run.speed[0])
+        key = (index, t0, float(run.x[0]), float(run.y[0]), heading, speed)
+        response = self._straight.get(key)
+        if response is None:
+            x0, y0 = float(run.x[0]) - speed * math.cos(heading) * t0, float(run.y[0]) - speed * math.sin(heading) * t0
+            vessel = self.vessel
+            response = Response(vessel.rao, self.components(index), Track(heading, speed, x0, y0), vessel.points,
+                                strict=False)
+            if len(self._straight) >= RESPONSES_KEPT:
+                self._straight.pop(next(iter(self._straight)))
+            self._straight[key] = response
+        return response
+
+    def response_now(self) -> Response:
+        """The newest sea's response on the track the ship is on now (her heading, speed and place; in a turn, the
+        tangent to it, taken each second): what the spray's stem reads."""
+        return self.response_at(self.legs[-1].after, math.floor(self.time / KNOT_S) * KNOT_S)
+
+    def response_at(self, index: int, t: float) -> Response:
+        """Component set ``index``'s response on the track the ship is on at ``t`` (s): the straight track through
+        her place then at her heading and speed."""
+        return self._straight_response(index, self.voyage.path(np.array([t])))
+
+    def velocity(self) -> np.ndarray:
+        """The vessel's velocity over ground now (E frame, m/s, (2,)); zero without a vessel."""
+        if self.vessel is None:
+            return np.zeros(2)
+        path = self.voyage.path(np.array([self.time]))
+        return np.array([path.vx[0], path.vy[0]])
+
     # -- the wake -----------------------------------------------------------------------------
+
+    def _wake_speeds(self, speed: float) -> list[tuple[float, float]]:
+        """The wake speeds (m/s) to draw at ``speed`` (m/s) with their weights: the scenario's speeds and whole
+        knots, the two around ``speed`` blended linearly."""
+        grid = sorted({*self.vessel.wake_speeds_m_s,
+                       *(k * WAKE_STEP_KN * KNOT for k in range(1, int(MAX_SPEED_KN / WAKE_STEP_KN) + 1))})
+        near = [u for u in grid if abs(u - speed) < 0.05 * KNOT]
+        if near:
+            return [(near[0], 1.0)]
+        above = next((u for u in grid if u > speed), grid[-1])
+        below = max((u for u in grid if u < speed), default=0.0)
+        if below <= 0.0 or above <= speed:
+            return [(above if below <= 0.0 else below, 1.0)]
+        w = (speed - below) / (above - below)
+        return [(below, 1.0 - w), (above, w)]
 
     def _request_wake(self, speed: float, wait: bool = False) -> None:
         if speed in self._wakes:
@@ -355,36 +461,36 @@ class Simulation:
         self._wakes[speed] = future.result() if wait else future
 
     def wakes(self, t: float | None = None) -> list[tuple[Wake, float]]:
-        """The Kelvin wakes to draw at ``t`` with their weights (two while a speed change blends).
+        """The Kelvin wakes to draw at ``t`` with their weights (two while the speed lies between wake speeds).
 
         A wake still being computed is left out; below Fn 0.1 thin-ship theory gives no wake worth drawing.
         """
         if not self.wake_on:
             return []
         t = self.time if t is None else t
-        previous, leg, w = self._legs_at(t)
+        speed = float(self.voyage.path(np.array([t])).speed[0])
         out = []
-        for speed, weight in ((previous.track.speed, 1.0 - w), (leg.track.speed, w)):
-            wake = self._wakes.get(speed)
+        for u, weight in self._wake_speeds(speed):
+            self._request_wake(u)
+            wake = self._wakes.get(u)
             if isinstance(wake, Future) and wake.done():
-                wake = self._wakes[speed] = wake.result()
+                wake = self._wakes[u] = wake.result()
             if isinstance(wake, Wake) and weight > 0.0:
                 out.append((wake, weight))
-        if len(out) == 2 and out[0][0] is out[1][0]:
-            out = [(out[0][0], 1.0)]
         return out
 
     def wake_status(self) -> str:
         """One line for the HUD: what the wake shows."""
         if not self.wake_on:
             return "wake off"
-        speed = self.legs[-1].track.speed  # the wake is requested when a speed change starts
-        wake = self._wakes.get(speed)
+        speed = self.speed_m_s
         froude = self.assembly.hydrostatics.froude(speed)
-        if wake is None:
+        if froude < QUALITATIVE_BELOW_FROUDE:
             return f"no wake drawn: Fn {froude:.2f} < {QUALITATIVE_BELOW_FROUDE}"
-        if isinstance(wake, Future) and not wake.done():
-            return f"wake: computing for {speed / KNOT:.1f} kn"
+        waiting = [u for u, _ in self._wake_speeds(speed) if isinstance(self._wakes.get(u), Future)
+                   and not self._wakes[u].done()]
+        if waiting:
+            return f"wake: computing for {waiting[0] / KNOT:.1f} kn"
         return f"Kelvin wake Fn {froude:.2f}"
 
     def close(self) -> None:
@@ -403,6 +509,12 @@ class Simulation:
             lines.append(f"speed {self.speed_m_s / KNOT:4.1f} kn   heading {self.heading_deg:5.1f} deg   "
                          + self.wake_status())
         return lines
+
+
+def record_columns(points: dict[str, tuple[float, float, float]]) -> list[str]:
+    """The record's columns: the motions' (:func:`~marinesim.vessel.response.motion_columns`), then the ship's
+    (:data:`~marinesim.manoeuvring.voyage.SHIP_COLUMNS`)."""
+    return motion_columns(points) + list(SHIP_COLUMNS)
 
 
 def _call(function):

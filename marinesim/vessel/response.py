@@ -1,11 +1,13 @@
-"""6-DOF response of a vessel on a straight track to the ocean's wave components.
+"""6-DOF response of a vessel to the ocean's wave components, on a straight track or along a manoeuvre.
 
-REFERENCES section 4: ``x_j(t) = Re sum_i H_j(w_i, beta_i - psi, U) a_i exp(i(w_i t - k_i . r(t)))``
-with ``r(t) = r0 + U t (cos psi, sin psi)`` the reference point in the Earth frame. The phase is
-linear in t, ``w_e t - k . r0`` with the encounter frequency ``w_e = w - U k cos(beta_rel)``, so
-velocities and accelerations are exact (``i w_e``, ``-w_e^2`` per component) and a block of
-time steps is one real matrix product: ``[cos(w_e t) | sin(w_e t)] @ [Re C; -Im C]`` (float64:
-exported positions differentiate twice to the exported accelerations).
+REFERENCES section 4: ``x_j(t) = Re sum_i H_j(w_i, beta_i - psi(t), U(t)) a_i exp(i(w_i t - k_i . r(t)))``
+with ``r(t)`` the reference point in the Earth frame: each component's phase accumulates its encounter
+frequency ``w - k . dr/dt`` as the ship goes, so a turn or a change of speed never makes a motion jump.
+On a straight track (:class:`Response`), ``r(t) = r0 + U t (cos psi, sin psi)``, the phase is linear in t,
+``w_e t - k . r0`` with the encounter frequency ``w_e = w - U k cos(beta_rel)``, so velocities and
+accelerations are exact (``i w_e``, ``-w_e^2`` per component) and a block of time steps is one real
+matrix product: ``[cos(w_e t) | sin(w_e t)] @ [Re C; -Im C]`` (float64: exported positions differentiate
+twice to the exported accelerations). Along a manoeuvre, :mod:`marinesim.vessel.along`.
 
 Points on board (body frame, m) move as ``xi + R p`` with ``R = Rz(yaw) Ry(pitch) Rx(roll)``
 (CONVENTIONS), their velocity and acceleration from the exact derivatives of R. Positions are
@@ -83,10 +85,12 @@ def motion_columns(points: dict[str, tuple[float, float, float]]) -> list[str]:
 
 
 class Response:
-    """Motions of a vessel (RAO table, track, named points) in the given wave components."""
+    """Motions of a vessel (RAO table, track, named points) in the given wave components. ``strict``: refuse a sea
+    a partial RAO table does not cover (a scenario's start); else its nearest headings serve (a course the ship
+    has been steered onto)."""
 
     def __init__(self, rao: RaoTable, components: Components, track: Track,
-                 points: dict[str, tuple[float, float, float]] | None = None) -> None:
+                 points: dict[str, tuple[float, float, float]] | None = None, strict: bool = True) -> None:
         self.rao, self.components, self.track = rao, components, track
         self.points = {name: np.asarray(p, dtype=float) for name, p in (points or {}).items()}
         for name, p in self.points.items():
@@ -94,7 +98,8 @@ class Response:
                 raise ParameterError(f"point {name!r} must be three finite numbers (m, body frame), got {p.tolist()}")
         c, psi = components, track.heading
         beta_rel = np.arctan2(c.ky, c.kx) - psi
-        _check_headings(rao, beta_rel, np.abs(c.amplitude) ** 2)
+        if strict:
+            _check_headings(rao, beta_rel, np.abs(c.amplitude) ** 2)
         along = c.kx * math.cos(psi) + c.ky * math.sin(psi)
         self.omega_e = c.omega - track.speed * along
         self.transfer = rao(c.omega, beta_rel, track.speed)              # (n, 6)

@@ -1,0 +1,115 @@
+"""Benchmark: own-ship dynamics (issue 34).
+
+1. The manoeuvring step per frame: the S175 (4 DOF) and the KVLCC2 (MMG) in a hard-over turn, the viewer's
+   clock moving 1/60 s a frame (the voyage steps at 0.1 s, so one frame in six steps the ship): the mean time a
+   frame spends on the ship (``Voyage.state`` and its sample for the pose), against a bare Python loop of the same
+   number of float operations per step as the baseline (RK4's four evaluations of a dozen multiplies).
+2. An hour's export at 20 Hz of the heavy-weather transit (S175, 10,600 wave components): with the dynamics on a
+   straight run (the ship in surge equilibrium: the response's fast path), against the bare straight-track
+   response of the same run (today's export before the dynamics), timed in the same run; and ten minutes of it
+   through a hard-over turn (the manoeuvre's compiled sum), per simulated second.
+
+Run: ``python benchmarks/manoeuvring.py``.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import platform
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT))
+
+from marinesim.constants import KNOT  # noqa: E402
+from marinesim.manoeuvring.voyage import Voyage  # noqa: E402
+from marinesim.scenario import load_scenario  # noqa: E402
+from marinesim.scenario.ship_file import load_ship  # noqa: E402
+from marinesim.session.assembly import Assembly  # noqa: E402
+from marinesim.session.timeline import Simulation  # noqa: E402
+
+
+def best_of(function, repeats: int = 3) -> float:
+    times = []
+    for _ in range(repeats):
+        start = time.perf_counter()
+        function()
+        times.append(time.perf_counter() - start)
+    return min(times)
+
+
+def frames(name: str, seconds: float = 600.0) -> float:
+    """Mean seconds of ship per 60 Hz frame through a hard-over turn of ``seconds``."""
+    file, ship = load_ship(ROOT / "configs" / "vessels" / f"{name}.toml")
+    state, orders = ship.start(file.approach_speed_kn * KNOT, 0.0)
+    voyage = Voyage(ship, state, orders, 0.1)
+    voyage.order(0.0, rudder_deg=35.0)
+    count = round(seconds * 60)
+    start = time.perf_counter()
+    for k in range(1, count + 1):
+        t = k / 60.0
+        voyage.state(t)
+        voyage.path(np.array([t]))
+    return (time.perf_counter() - start) / count
+
+
+def bare_step() -> float:
+    """Seconds of a bare Python loop doing a dozen float multiplies four times (RK4's evaluations), per step."""
+    def evaluate(a: float, b: float) -> float:
+        x = a
+        for _ in range(12):
+            x = x * b + a
+        return x
+    count = 100_000
+    start = time.perf_counter()
+    for k in range(count):
+        for _ in range(4):
+            evaluate(1.0001, 0.9999)
+    return (time.perf_counter() - start) / count
+
+
+def main() -> None:
+    print(f"machine: {platform.processor() or platform.machine()}, {os.cpu_count()} cores, "
+          f"Python {platform.python_version()}, numpy {np.__version__}")
+    floor = bare_step()
+    for name in ("s175", "kvlcc2"):
+        per_frame = frames(name)
+        print(f"{name}: the ship per 60 Hz frame in a hard-over turn {1e6 * per_frame:.1f} us "
+              f"({per_frame / floor:.2f} x a bare RK4-sized loop per step, {1e6 * floor:.1f} us)")
+
+    scenario = load_scenario(ROOT / "configs" / "training" / "heavy_weather_transit.toml")
+    steps, dt = 72_001, 0.05
+    response = Assembly(scenario).response
+
+    def straight():
+        for _ in response.frames(0.0, dt, steps):
+            pass
+
+    def dynamics():
+        sim = Simulation(scenario, wake=False)
+        for lo in range(0, steps, 8192):
+            sim.frame_steps(lo * dt, dt, min(8192, steps - lo))
+        sim.close()
+
+    t_straight, t_dynamics = best_of(straight), best_of(dynamics)
+    print(f"an hour at 20 Hz, {len(response.components)} components: straight-track response {t_straight:.2f} s, "
+          f"with the dynamics (a straight run) {t_dynamics:.2f} s: {t_dynamics / t_straight:.2f} x")
+
+    def turn():
+        sim = Simulation(scenario, wake=False)
+        sim.order(rudder_deg=35.0)
+        sim.frame_steps(0.0, dt, 12_000)
+        sim.close()
+
+    t_turn = best_of(turn, 1)
+    print(f"ten minutes at 20 Hz through a hard-over turn: {t_turn:.1f} s ({t_turn / 600.0 * 1000:.0f} ms per "
+          f"simulated second, {t_turn / 12_000 * 1e3:.2f} ms a row)")
+
+
+if __name__ == "__main__":
+    main()
