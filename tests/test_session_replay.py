@@ -135,6 +135,12 @@ BAD_LOGS = [
     ('{"t": 5.0, "kind": "action", "action": "change", "speed": 3}', "line 2", "unknown key 'speed'"),
     ('{"t": 5.0, "kind": "action", "action": "warp"}', "line 2", "key 'action'"),
     ('{"t": 5.0, "kind": "action", "action": "change", "speed_kn": NaN}', "line 2", "NaN"),
+    ('{"t": 5.0, "kind": "action", "action": "order", "engine": "flank speed"}', "line 2",
+     "key 'engine': expected one of full astern"),
+    ('{"t": 5.0, "kind": "action", "action": "order", "autopilot": "yes"}', "line 2", "key 'autopilot': expected true"),
+    ('{"t": 5.0, "kind": "action", "action": "order", "rudder_deg": "hard"}', "line 2", "key 'rudder_deg': expected a"),
+    ('{"t": 5.0, "kind": "action", "action": "order", "rudder_deg": 50}', "line 2",
+     "order: rudder order must be in -35..35 deg"),
 ]
 
 

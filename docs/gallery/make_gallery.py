@@ -46,6 +46,8 @@ class Shot:
     hs_factor: float = 1.0
     distance_m: float | None = None
     hud: str = "strip"
+    orders: tuple = ()
+    """(time s, the order's keywords) given on the way to ``at_s``."""
 
 
 SHOTS = (
@@ -70,6 +72,13 @@ SHOTS = (
     Shot("storm_s175", "s175_heavy_weather.toml", "The S175 in a storm: the sea doubled, 24 m/s of wind (Beaufort "
          "9), overcast.", air={"wind_speed_m_s": 24.0, "cloud_cover_oktas": 8.0, "visibility_m": 5000.0},
          elevation_deg=12.0, hs_factor=2.0),
+    Shot("turn_s175_bridge", "training/heavy_weather_transit.toml", "The S175 turning: 20 deg of starboard rudder "
+         "ordered at 30 s, 65 s later; the conning line reads her heading, hand steering, the rudder, her rate of turn, "
+         "the rpm set for 15 kn, her speed and course over ground (her bow 8 deg inside her track); she heels 5 deg "
+         "outward, to port.", camera="bridge", at_s=95.0, orders=((30.0, {"rudder_deg": 20.0}),)),
+    Shot("turn_s175_orbit", "training/heavy_weather_transit.toml", "The same moment from astern: she swings to "
+         "starboard (her wash and wake are drawn straight astern of her, as on a straight course).", at_s=95.0,
+         orders=((30.0, {"rudder_deg": 20.0}),)),
     Shot("bow_impact_s175", "s175_heavy_weather.toml", "The S175 half a second after the hardest bow impact of her "
          "first ten minutes (the sea rising against her stem at 1.7 times Ochi's slamming velocity; her forefoot stays "
          "in the water, so the slamming criterion stays at 0): spray off both sides of the bow.",
@@ -78,7 +87,8 @@ SHOTS = (
 
 
 def save(scenario: Scenario, out: Path, camera: str, at_s: float, azimuth_deg: float | None = None,
-         elevation_deg: float | None = None, distance_m: float | None = None, hud: str = "strip") -> None:
+         elevation_deg: float | None = None, distance_m: float | None = None, hud: str = "strip",
+         orders: tuple = ()) -> None:
     with Offscreen(scenario, (960, 540), camera, "auto", RenderOptions(reproducible=True, hud=hud)) as view:
         orbit = view.scene.cameras["orbit"]
         if azimuth_deg is not None:
@@ -87,6 +97,9 @@ def save(scenario: Scenario, out: Path, camera: str, at_s: float, azimuth_deg: f
             orbit.elevation_deg = elevation_deg
         if distance_m is not None:
             orbit.distance_m = distance_m
+        for t, order in orders:
+            view.go_to(t)
+            view.scene.exercise.act("order", **order)
         view.go_to(at_s)
         Image.fromarray(view.frame()).save(out, format="JPEG", quality=85)
     print(f"wrote {out.relative_to(ROOT)}")
@@ -112,7 +125,7 @@ def main() -> None:
             shots.append(f"![{path.stem}, {camera}]({out.name})")
         rows.append(f"## {path.relative_to(ROOT)} at {at:g} s\n\n{light_words(scenario, at)}\n\n"
                     + "\n".join(shots) + "\n")
-    rows.append("# The full panels; night, dusk, fog and storm\n")
+    rows.append("# The full panels; a turn; night, dusk, fog and storm\n")
     for shot in SHOTS:
         scenario = load_scenario(ROOT / "configs" / shot.scenario)
         sea = scaled_sea(scenario.sea, shot.hs_factor, 1.0, 0.0)
@@ -122,7 +135,8 @@ def main() -> None:
         environment = type(scenario.environment).model_validate(air | shot.air)
         scenario = dataclasses.replace(scenario, sea=sea, environment=environment)
         out = HERE / f"{shot.name}.jpg"
-        save(scenario, out, shot.camera, shot.at_s, shot.azimuth_deg, shot.elevation_deg, shot.distance_m, shot.hud)
+        save(scenario, out, shot.camera, shot.at_s, shot.azimuth_deg, shot.elevation_deg, shot.distance_m, shot.hud,
+             shot.orders)
         rows.append(f"## {shot.name}: configs/{shot.scenario} at {shot.at_s:g} s\n\n{shot.what} "
                     f"{light_words(scenario, shot.at_s)}\n\n![{shot.name}]({out.name})\n")
     (HERE / "README.md").write_text("# Picture gallery\n\nEvery shipped scenario from the orbit camera and from its "

@@ -55,6 +55,7 @@ def handle(args: argparse.Namespace) -> int:
     if vessel is not None:
         print(f"vessel: {vessel.rao_path.name} ({vessel.rao.source_format}), {vessel.speed_kn:.3g} kn, "
               f"heading {vessel.heading_deg:g} deg, points: {', '.join(vessel.points) or 'none'}")
+        print(f"manoeuvring: {vessel.ship.name}, {vessel.ship.describe()}")
     if not args.headless:
         from marinesim.render.viewer import NoDisplay, Viewer
 

@@ -232,8 +232,10 @@ class Scene:
         steer = f"AUTO {c['course_deg']:05.1f}" if c["course_deg"] is not None else "HAND"
         rudder = side(c["rudder_deg"]) + ("" if side(c["rudder_deg"]) == side(c["rudder_order_deg"])
                                           else f">{side(c['rudder_order_deg'])}")
+        telegraph = self.sim.vessel.ship.engine.telegraph
+        engine = c["engine"].upper() if c["engine"] in telegraph else f"(for {c['engine']})"
         return (f"HDG {c['heading_deg']:05.1f}  {steer}  RUD {rudder}  ROT {c['rate_of_turn_deg_min']:+.0f}/min  "
-                f"{c['rpm']:.0f} rpm {c['engine'].upper()}  SOG {c['speed_over_ground_kn']:.1f} kn  "
+                f"{c['rpm']:.0f} rpm {engine}  SOG {c['speed_over_ground_kn']:.1f} kn  "
                 f"COG {c['course_over_ground_deg']:05.1f}")
 
     def hud_lines(self) -> list[str]:

@@ -128,6 +128,7 @@ def motions_sidecar(exercise: Exercise, rows: int, duration_s: float) -> dict:
             "speed_kn": vessel.speed_kn,
             "heading_deg": vessel.heading_deg,
             "points_m": {name: list(p) for name, p in vessel.points.items()},
+            "manoeuvring": {"ship": vessel.ship.name, "model": vessel.ship.describe()},
         },
         "outside_rao_table": outside_table(exercise),
         "events": [{"index": h.index, "time_s": h.time_s, "what": h.event.describe()} for h in exercise.happened],

@@ -32,10 +32,15 @@ MAX_LOG_BYTES = 64 << 20
 
 @dataclass(frozen=True)
 class SessionLog:
-    """What ran (:attr:`header`) and what happened (:attr:`entries`, in time order)."""
+    """What ran (:attr:`header`) and what happened (:attr:`entries`, in time order), read from :attr:`path`."""
 
     header: dict[str, Any]
     entries: list[dict[str, Any]]
+    path: Path | None = None
+
+    def line_of(self, entry: dict[str, Any]) -> int | None:
+        """The line of the log ``entry`` was read from (the header is line 1)."""
+        return next((i + 2 for i, e in enumerate(self.entries) if e is entry), None) if self.path else None
 
     @property
     def end_s(self) -> float:
@@ -116,7 +121,7 @@ def read_log(path: Path) -> SessionLog:
             raise FileFormatError(path, number, f"key 'kind': expected a string, got {entry.get('kind')!r}")
         if entry["kind"] == "action":
             _check_action(path, number, entry)
-    return SessionLog(head, entries)
+    return SessionLog(head, entries, path)
 
 
 def _check_action(path: Path, number: int, entry: dict) -> None:

@@ -14,7 +14,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 
 from marinesim.criteria.monitor import Criterion
-from marinesim.errors import ScenarioError
+from marinesim.errors import FileFormatError, MarinesimError, ScenarioError
 from marinesim.progress import task
 from marinesim.scenario import Scenario, load_scenario, with_run
 from marinesim.session.exercise import Exercise, quiet
@@ -61,7 +61,10 @@ class Replay:
             self.exercise.advance_to(entry["t"])
             if before_action is not None:
                 before_action()
-            self.exercise.act(entry["action"], **{k: v for k, v in entry.items() if k not in SKIP})
+            try:
+                self.exercise.act(entry["action"], **{k: v for k, v in entry.items() if k not in SKIP})
+            except MarinesimError as error:  # an action the session could not have taken: the log was edited
+                raise FileFormatError(self.log.path, self.log.line_of(entry), f"{entry['action']}: {error}") from None
             self._next += 1
         self.exercise.advance_to(t)
 
