@@ -136,3 +136,16 @@ def test_a_vessel_on_station_turns_to_an_ordered_heading_in_place(tmp_path):
     with pytest.raises(Exception, match="heading orders only"):
         sim.order(rudder_deg=10.0)
     sim.close()
+
+
+def test_one_time_and_many_give_the_same_bits(transit):
+    """The viewer samples the present alone (a path of its own), the export many times at once: the same bits."""
+    sim = Simulation(transit, wake=False)
+    sim.order(rudder_deg=-25.0, at=0.0)
+    times = np.array([0.0, 0.05, 3.3, 17.77, 100.0, 250.05])
+    many = sim.voyage.sample(times)
+    for i, t in enumerate(times):
+        one = sim.voyage.sample(np.array([t]))
+        for name, values in many.items():
+            assert one[name][0] == values[i], (name, t)
+    sim.close()

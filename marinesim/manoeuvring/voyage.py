@@ -42,6 +42,8 @@ FIELDS = ("north", "east", "psi", "u", "v", "r", "p", "phi", "delta", "n", "rudd
 """A step's state as a row, followed by the derivatives of the first eight (north ... phi)."""
 HERMITE = 8
 """The first fields, interpolated with their derivatives."""
+SAMPLED = (*FIELDS, "north_dot", "east_dot", "psi_dot", "psi_ddot", "north_ddot", "east_ddot", "phi_dot", "phi_ddot")
+"""What :meth:`Voyage.sample` gives."""
 SHIP_COLUMNS = ("north_m", "east_m", "heading_deg", "course_over_ground_deg", "speed_over_ground_kn",
                 "rate_of_turn_deg_min", "rudder_deg", "rudder_order_deg", "propeller_rpm", "drift_angle_deg")
 """The ship's columns of the record (:meth:`Voyage.record`)."""
@@ -89,6 +91,9 @@ class Voyage:
         self._pieces: list[_Piece] = []
         self._start = start
         self._held: list[_Piece] = []
+        self._memo: dict[tuple[float, int], dict[str, np.ndarray]] = {}
+        self._epoch = 0
+        """Counts the orders given: a sample kept from before one may be stale."""
 
     # -- orders ---------------------------------------------------------------------------------
 
@@ -106,6 +111,7 @@ class Voyage:
         self._requests.insert(bisect.bisect_right(self._requests, (k, math.inf)), entry)
         self._orders = [(step, o) for step, o in self._orders if step < k]
         self._truncate(k)
+        self._epoch += 1
 
     def orders_at(self, t: float) -> Orders:
         """The orders in effect at ``t`` (s)."""
@@ -264,8 +270,9 @@ class Voyage:
         ``east_dot``, ``psi_dot``, ``psi_ddot``, ``north_ddot``, ``east_ddot``, ``phi_dot``, ``phi_ddot`` (those of
         the interpolants)."""
         times = np.asarray(times, dtype=float).ravel()
-        out = {name: np.empty(times.size) for name in (*FIELDS, "north_dot", "east_dot", "psi_dot", "psi_ddot",
-                                                       "north_ddot", "east_ddot", "phi_dot", "phi_ddot")}
+        if times.size == 1:
+            return self._sample_one(float(times[0]))
+        out = {name: np.empty(times.size) for name in SAMPLED}
         if not times.size:
             return out
         if times.min() < 0.0 or not np.all(np.isfinite(times)):
@@ -282,6 +289,47 @@ class Voyage:
                 self._fill_manoeuvre(out, at, piece, times[at], steps[at])
         return out
 
+    def _sample_one(self, t: float) -> dict[str, np.ndarray]:
+        """:meth:`sample` at one time ``t`` (s), in plain floats (the viewer asks for the present several times a
+        frame: the last few are kept)."""
+        key = (t, self._epoch)
+        if key in self._memo:
+            return self._memo[key]
+        if not (math.isfinite(t) and t >= 0.0):
+            raise ParameterError("a voyage is sampled at finite times from 0 s")
+        h = self.h
+        k = max(math.ceil(t / h - 1e-9) - 1, 0)
+        self._extend(k + 1)
+        piece = self._pieces[bisect.bisect_right([p.first for p in self._pieces], k) - 1]
+        if piece.straight:
+            out = {name: np.empty(1) for name in SAMPLED}
+            _fill_straight(out, np.array([0]), piece, np.array([t - piece.first * h]))
+        else:
+            rows = self._rows(piece)
+            left, right = rows[k - piece.first].tolist(), rows[k + 1 - piece.first].tolist()
+            s = (t - k * h) / h
+            (a, b, c, d), (da, db, dd), (ca, cb, cd) = _hermite(s, h)
+            n = len(FIELDS)
+            values: dict[str, float] = {}
+            for j, name in enumerate(FIELDS[:HERMITE]):
+                f0, f1, d0, d1 = left[j], right[j], left[n + j], right[n + j]
+                values[name] = a * f0 + b * d0 + c * f1 + d * d1
+                if name in ("north", "east", "psi", "phi"):
+                    values[f"{name}_dot"] = da * (f0 - f1) + db * d0 + dd * d1
+                    values[f"{name}_ddot"] = ca * (f0 - f1) + cb * d0 + cd * d1
+            for name in ("delta", "n"):
+                j = FIELDS.index(name)
+                values[name] = left[j] + s * (right[j] - left[j])
+            for name in ("rudder_order", "r_ref"):
+                values[name] = right[FIELDS.index(name)]
+            out = {name: np.array([values[name]]) for name in SAMPLED}
+        for column in out.values():
+            column.flags.writeable = False  # kept: nobody may change it
+        if len(self._memo) >= 8:
+            self._memo.pop(next(iter(self._memo)))
+        self._memo[key] = out
+        return out
+
     def _fill_manoeuvre(self, out: dict[str, np.ndarray], at: np.ndarray, piece: _Piece, times: np.ndarray,
                         steps: np.ndarray) -> None:
         h = self.h
@@ -292,10 +340,10 @@ class Voyage:
         n = len(FIELDS)
         f0, f1 = left[:, :HERMITE], right[:, :HERMITE]
         d0, d1 = left[:, n:n + HERMITE], right[:, n:n + HERMITE]
-        s2, s3 = s * s, s * s * s
-        value = (2 * s3 - 3 * s2 + 1) * f0 + (s3 - 2 * s2 + s) * h * d0 + (3 * s2 - 2 * s3) * f1 + (s3 - s2) * h * d1
-        slope = ((6 * s2 - 6 * s) * (f0 - f1) / h + (3 * s2 - 4 * s + 1) * d0 + (3 * s2 - 2 * s) * d1)
-        curve = ((12 * s - 6) * (f0 - f1) / h**2 + (6 * s - 4) * d0 / h + (6 * s - 2) * d1 / h)
+        (a, b, c, d), (da, db, dd), (ca, cb, cd) = _hermite(s, h)
+        value = a * f0 + b * d0 + c * f1 + d * d1
+        slope = da * (f0 - f1) + db * d0 + dd * d1
+        curve = ca * (f0 - f1) + cb * d0 + cd * d1
         for j, name in enumerate(FIELDS[:HERMITE]):
             out[name][at] = value[:, j]
         s = s[:, 0]
@@ -349,8 +397,7 @@ class Voyage:
             piece = self._pieces[which[lo]]
             run = None
             if piece.straight:  # its own first state: exactly straight, as the run goes on
-                start = {name: np.empty(1) for name in (*FIELDS, "north_dot", "east_dot", "psi_dot", "psi_ddot",
-                                                        "north_ddot", "east_ddot", "phi_dot", "phi_ddot")}
+                start = {name: np.empty(1) for name in SAMPLED}
                 _fill_straight(start, np.array([0]), piece, np.zeros(1))
                 run = _as_path(np.array([piece.first * self.h]), start)
             out.append((int(lo), int(hi), run))
@@ -389,3 +436,13 @@ def _as_path(times: np.ndarray, s: dict[str, np.ndarray]) -> ShipPath:
     return ShipPath(times=times, x=s["east"], y=s["north"], vx=s["east_dot"], vy=s["north_dot"], ax=s["east_ddot"],
                     ay=s["north_ddot"], heading=0.5 * math.pi - s["psi"], rate=-s["psi_dot"], rate_dot=-s["psi_ddot"],
                     speed=np.hypot(s["u"], s["v"]), roll=s["phi"], roll_rate=s["phi_dot"], roll_acc=s["phi_ddot"])
+
+
+def _hermite(s, h: float) -> tuple[tuple, tuple, tuple]:
+    """The cubic Hermite weights at ``s`` in [0, 1] of a step of ``h`` s, of (f0, h f0', f1, h f1') for the value,
+    and of (f0 - f1, f0', f1') for the first and second time derivatives; the same arithmetic for floats and
+    arrays, so one time and many give the same bits."""
+    s2, s3 = s * s, s * s * s
+    return ((2 * s3 - 3 * s2 + 1, (s3 - 2 * s2 + s) * h, 3 * s2 - 2 * s3, (s3 - s2) * h),
+            ((6 * s2 - 6 * s) / h, 3 * s2 - 4 * s + 1, 3 * s2 - 2 * s),
+            ((12 * s - 6) / (h * h), (6 * s - 4) / h, (6 * s - 2) / h))
