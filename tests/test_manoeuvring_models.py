@@ -220,3 +220,21 @@ def test_steering_gear_and_engine_follow_their_orders_at_their_rates(kvlcc2):
         if k == 199:
             assert state.n == pytest.approx(n0 * math.exp(-1.0), rel=1e-9)
     assert math.degrees(state.delta) == pytest.approx(35.0)
+
+
+@pytest.mark.parametrize("name", ["s175", "kvlcc2", "supply"])
+def test_stopped_in_a_turn_then_astern_she_stays_physical_and_steers_the_other_way(name):
+    """Hard over, the engine stopped for twenty minutes (the propeller's rate reaches zero, not a vanishing one whose
+    advance ratio overflows), then full astern: she stops and gathers sternway with every state finite, and going
+    astern a starboard rudder swings her bow to port (the flow meets the rudder from aft)."""
+    file, ship = load_ship(VESSELS / f"{name}.toml")
+    state = ship.steady(file.approach_speed_kn * KNOT)
+    for orders, seconds in ((Orders(rudder=math.radians(35.0), rps=state.n), 300),
+                            (Orders(rudder=math.radians(35.0), rps=0.0), 1200),
+                            (Orders(rudder=math.radians(20.0), rps=-ship.engine.max_astern_rps), 1500)):
+        for _ in range(seconds * 10):
+            state, _ = ship.step(state, orders)
+            assert all(map(math.isfinite, (state.u, state.v, state.r, state.p, state.phi)))
+        if orders.rps == 0.0:
+            assert state.n == 0.0 and 0.0 < state.u < 1.0
+    assert state.u < -1.0 and state.r < 0.0

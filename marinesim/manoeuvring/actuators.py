@@ -5,7 +5,8 @@ Both are exact in time, so an integrator step sees them as known functions over 
 - the steering gear turns the rudder towards its order at a constant rate (SOLAS II-1/29: from 35 deg
   on one side to 30 deg on the other in 28 s, 2.32 deg/s), never past ``max_angle``;
 - the engine's propeller rate follows its order as a first-order lag, ``n(t) = n_c + (n0 - n_c)
-  exp(-t / T)``, the order held within ``[-max_astern, max_ahead]``.
+  exp(-t / T)``, the order held within ``[-max_astern, max_ahead]``, and taken as reached within
+  :data:`SETTLED_RPS`.
 """
 
 from __future__ import annotations
@@ -16,6 +17,8 @@ from dataclasses import dataclass, field
 TELEGRAPH = ("full astern", "half astern", "slow astern", "dead slow astern", "stop", "dead slow ahead",
              "slow ahead", "half ahead", "full ahead")
 """The engine telegraph's orders, astern to ahead."""
+SETTLED_RPS = 1e-10
+"""The propeller is at its order once within this (rev/s): an exponential approach never gets there by itself."""
 SOLAS_RUDDER_DEG = 35.0
 SOLAS_RUDDER_RATE_DEG_S = 2.32
 """SOLAS II-1/29.3: 35 deg on either side; from 35 deg on one side to 30 deg on the other in 28 s."""
@@ -55,9 +58,10 @@ class Engine:
 
     def rps(self, n0: float, order: float, tau: float) -> float:
         """The propeller's rate (rev/s) ``tau`` s after it turned at ``n0`` with ``order`` (held) given."""
-        if n0 == order:
+        if abs(n0 - order) <= SETTLED_RPS:
             return order
-        return order + (n0 - order) * math.exp(-tau / self.time_constant_s)
+        n = order + (n0 - order) * math.exp(-tau / self.time_constant_s)
+        return order if abs(n - order) <= SETTLED_RPS else n
 
     @property
     def can_go_astern(self) -> bool:

@@ -4,8 +4,8 @@ Axes and signs as :mod:`marinesim.manoeuvring.state`. Sway and yaw (Fossen 2021,
 Python Vehicle Simulator's ``clarke83``, MIT; Clarke, Gedling & Hine 1983): added masses and linear hull
 derivatives from multiple regression on model tests, with ``S = pi (T/L)^2``,
 
-- ``-Y'_vdot/S = 1 + 0.16 Cb B/T - 5.1 (B/L)^2``, ``-Y'_rdot/S = 0.67 B/L - 0.0033 (B/T)^2``,
-  ``-N'_vdot/S = 1.1 B/L - 0.041 B/T``, ``-N'_rdot/S = 1/12 + 0.017 Cb B/T - 0.33 B/L``,
+- ``-Y'_vdot/S = 1 + 0.16 Cb B/T - 5.1 (B/L)^2``, ``-N'_rdot/S = 1/12 + 0.017 Cb B/T - 0.33 B/L`` (the cross
+  terms ``Y'_rdot`` and ``N'_vdot`` left out, as the MMG method leaves them),
 - ``-Y'_v/S = 1 + 0.4 Cb B/T``, ``-Y'_r/S = -1/2 + 2.2 B/L - 0.08 B/T``, ``-N'_v/S = 1/2 + 2.4 T/L``,
   ``-N'_r/S = 1/4 + 0.039 B/T - 0.56 B/L``,
 
@@ -19,9 +19,9 @@ T``; surge added mass ``0.05 m``; ``(m + m_y) v r`` the speed lost in a turn. Th
 are the MMG standard method's (:mod:`marinesim.manoeuvring.mmg`) with generic interaction coefficients:
 a four-bladed propeller of diameter ``0.65 T`` (``K_T = 0.33 - 0.24 J - 0.17 J^2``, roughly a Wageningen
 B4-55 of pitch ratio 0.8), Taylor's wake ``w_P0 = 0.5 Cb - 0.05`` (the same in a turn: the ship is symmetric
-port and starboard), thrust deduction ``0.6 w_P0``; a
-rudder of ``0.7 T`` span and aspect ratio 1.5 with area ``A_R`` (default ``L T / 60``, the classification
-societies' minimum), ``t_R = 1 - 0.28 Cb - 0.55``, ``a_H = 0.4``, ``x'_H = -0.45``, ``x'_R = -0.5``,
+port and starboard), thrust deduction ``0.6 w_P0``; a rudder of area ``A_R`` (default ``L T / 60``, the
+classification societies' minimum) and ``0.7 T`` span, so of aspect ratio ``(0.7 T)^2 / A_R`` (29.4 T/L by
+default: 1.2 for the tanker, 2.1 for the supply vessel) and Fujii's ``f_alpha = 6.13 Lambda / (Lambda + 2.25)``, ``t_R = 1 - 0.28 Cb - 0.55``, ``a_H = 0.4``, ``x'_H = -0.45``, ``x'_R = -0.5``,
 ``gamma_R = 0.5``, ``l'_R = -0.9``, ``epsilon = 1``, ``kappa = 0.5``.
 """
 
@@ -44,7 +44,7 @@ HOERNER = (np.array([0.0109, 0.1766, 0.3530, 0.4519, 0.4728, 0.4929, 0.4933, 0.5
 KINEMATIC_VISCOSITY = 1.19e-6
 """Sea water at 15 deg C (m^2/s), ITTC."""
 STRIPS = 8
-"""Gauss-Legendre points of the cross-flow drag integral (exact for the cubic in x of a pure drift or turn)."""
+"""Gauss-Legendre points of the cross-flow drag integral (a pure drift's exactly; a pure turn's ``|x|^3`` to 1e-3)."""
 
 
 def hoerner(breadth: float, draft: float) -> float:

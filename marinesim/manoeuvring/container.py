@@ -6,7 +6,8 @@ U``, ``v' = v / U``, ``r' = r L / U``, ``p' = p L / U``, ``n' = n L / U``; force
 ``(rho/2) L^3 U^2``, masses by ``(rho/2) L^3``, inertias by ``(rho/2) L^5``. Hull forces are the published
 polynomials in ``v', r', p', phi``; the propeller ``J = u_P U / (n D)``, ``K_T = 0.527 - 0.455 J``, ``u_P = u'
 ((1 - w_P) + tau ((v' + x_P r')^2 + c_pv v' + c_pr r'))``; the rudder ``F_N = -(6.13 Lambda / (Lambda + 2.25))
-(A_R / L^2) (u_R^2 + v_R^2) sin(delta + atan(v_R / u_R))`` with ``u_R = epsilon u_P sqrt(1 + 8 k K_T / (pi
+(A_R / L^2) (u_R^2 + v_R^2) sin(delta + atan2(v_R, u_R))`` (MSS's ``atan(v_R / u_R)`` round the circle: the
+flow from aft going astern reverses the force) with ``u_R = epsilon u_P sqrt(1 + 8 k K_T / (pi
 J^2))``, ``v_R = gamma v' + c_Rr r' + c_Rrrr r'^3 + c_Rrrv r'^2 v'``. The roll restoring moment is ``-W GM phi``
 (linear: GM 0.3 m). Sway, roll and yaw accelerations come from the coupled mass matrix ``[[m + m_y, -m_y l_y,
 m_y alpha_y], [-m_y l_y, I_x + J_x, 0], [m_y alpha_y, 0, I_z + J_z]]``. MSS's own rudder (10 deg, 5 deg/s)
@@ -46,8 +47,9 @@ KK, EPSILON, X_R, W_P, TAU, X_P = 0.631, 0.921, -0.5, 0.184, 1.09, -0.526
 C_PV, C_PR, GAMMA = 0.0, 0.0, 0.088
 C_RR, C_RRRR, C_RRRV = -0.156, -0.275, 1.96
 C_RX, A_H, Z_R, X_H = 0.71, 0.237, 0.033, -0.48
-MIN_SPEED = 1e-3
-"""The speed (m/s) below which the model is evaluated at this speed: its scaling divides by U."""
+MIN_SPEED = 0.5
+"""The speed (m/s) below which the model is evaluated at this speed: its scaling divides by U, and its rudder inflow
+polynomial in ``r' = r L / U`` (fitted for a ship under way) would grow without bound as she stops."""
 
 
 @dataclass(frozen=True)
@@ -86,21 +88,19 @@ class SonNomotoContainer:
         v_r = GAMMA * v_ + C_RR * r_ + C_RRRR * r_**3 + C_RRRV * r_ * r_ * v_
         thrust_scale = 2.0 * D_P**4 / (speed * speed * L * L)
         if n > 0.0:
-            j = u_p * speed / (n * D_P)
-            k_t = 0.527 - 0.455 * j
-            thrust = thrust_scale * k_t * n * n
-            race = 1.0 + 8.0 * KK * k_t / (math.pi * j * j) if j != 0.0 else math.inf
-            u_r = u_p * EPSILON * math.sqrt(race) if math.isfinite(race) else (
-                EPSILON * math.sqrt(8.0 * KK * k_t / math.pi) * n * D_P / speed)
-            if race < 0.0:
-                u_r = 0.0
+            # K_T n^2 = 0.527 n^2 - 0.455 n u_P U / D (J = u_P U / (n D)): finite as n goes to 0
+            kt_n2 = 0.527 * n * n - 0.455 * n * u_p * speed / D_P
+            thrust = thrust_scale * kt_n2
+            # u_R = epsilon u_P sqrt(1 + 8 k K_T / (pi J^2)) = epsilon sqrt(u_P^2 + 8 k K_T n^2 D^2 / (pi U^2))
+            u_r = EPSILON * math.sqrt(max(u_p * u_p + 8.0 * KK * kt_n2 * D_P * D_P / (math.pi * speed * speed), 0.0))
+            u_r = -u_r if u_p < 0.0 else u_r
         elif n < 0.0:
-            j = u_p * speed / (-n * D_P)
-            thrust = -thrust_scale * n * n * (self.astern_kt[0] + self.astern_kt[1] * j)
+            thrust = -thrust_scale * (n * n * self.astern_kt[0] - n * u_p * speed * self.astern_kt[1] / D_P)
             u_r = u_p * EPSILON
         else:
             thrust, u_r = 0.0, u_p * EPSILON
-        alpha_r = delta + (math.atan(v_r / u_r) if u_r else math.copysign(math.pi / 2.0, v_r))
+        # MSS's atan(v_R / u_R), taken round the circle: a flow from aft (going astern) reverses the rudder's force
+        alpha_r = delta + math.atan2(v_r, u_r)
         f_n = -((6.13 * ASPECT) / (ASPECT + 2.25)) * (A_R / L**2) * (u_r * u_r + v_r * v_r) * math.sin(alpha_r)
         cos_d = math.cos(delta)
         x = (XUU * u_ * abs(u_) + (1.0 - T_P) * thrust + XVR * v_ * r_ + XVV * v_ * v_ + XRR * r_ * r_

@@ -2,7 +2,8 @@
 and rudder forces, 3 DOF about midship.
 
 Axes and signs as :mod:`marinesim.manoeuvring.state` (y to starboard, r clockwise, rudder positive to
-starboard). With ``U = sqrt(u^2 + v^2)``, the drift angle ``beta = atan2(-v, u)``, ``v' = v / U`` and
+starboard). With ``U = sqrt(u^2 + v^2)``, the drift angle ``beta = asin(-v / U)`` (within +-90 deg: going astern
+the flow is not a drift of 180 deg), ``v' = v / U`` and
 ``r' = r L / U``:
 
 - motion: ``(m + m_x) du/dt - (m + m_y) v r - x_G m r^2 = X``, ``(m + m_y) dv/dt + (m + m_x) u r + x_G m
@@ -10,7 +11,7 @@ starboard). With ``U = sqrt(u^2 + v^2)``, the drift angle ``beta = atan2(-v, u)`
   propeller's (X only) and the rudder's;
 - hull: ``X_H = (rho/2) L d U^2 (-R'_0 + X'_vv v'^2 + X'_vr v' r' + X'_rr r'^2 + X'_vvvv v'^4)``, ``Y_H`` and
   ``N_H`` (times L) the cubic polynomials ``Y'_v v' + Y'_r r' + Y'_vvv v'^3 + Y'_vvr v'^2 r' + Y'_vrr v' r'^2 +
-  Y'_rrr r'^3``; the resistance ``R'_0`` taken as ``u |u|`` so that it opposes the motion astern too;
+  Y'_rrr r'^3``; the resistance ``R'_0`` with the sign of ``u``, so that it opposes the motion astern too;
 - propeller: ``X_P = (1 - t_P) rho n^2 D_P^4 K_T(J_P)``, ``K_T = k_0 + k_1 J + k_2 J^2``, ``J_P = u (1 - w_P) /
   (n D_P)``, the wake in a turn ``(1 - w_P) / (1 - w_P0) = 1 + (1 - exp(-C_1 |beta_P|)) (C_2 - 1)``, ``beta_P =
   beta - x'_P r'`` (``C_2`` by the sign of ``beta_P``); astern (``n <
@@ -120,41 +121,36 @@ class Mmg:
         speed = math.hypot(u, v)
         if speed > 1e-9:
             vv, rr = v / speed, r * lpp / speed
-            beta = math.atan2(-v, u)
+            beta = math.asin(-vv)  # within +-90 deg: going astern the flow is not a drift of 180 deg
         else:
             vv = rr = beta = 0.0
         q = self._force * speed * speed
-        x_h = (-self._force * self.r_0 * u * abs(u)
-               + q * (self.x_vv * vv * vv + self.x_vr * vv * rr + self.x_rr * rr * rr + self.x_vvvv * vv**4))
+        x_h = q * (-math.copysign(self.r_0, u) + self.x_vv * vv * vv + self.x_vr * vv * rr + self.x_rr * rr * rr
+                   + self.x_vvvv * vv**4)
         y_h = q * (self.y_v * vv + self.y_r * rr + self.y_vvv * vv**3 + self.y_vvr * vv * vv * rr
                    + self.y_vrr * vv * rr * rr + self.y_rrr * rr**3)
         n_h = q * lpp * (self.n_v * vv + self.n_r * rr + self.n_vvv * vv**3 + self.n_vvr * vv * vv * rr
                          + self.n_vrr * vv * rr * rr + self.n_rrr * rr**3)
-        # propeller
+        # propeller: K_T n^2 D^4 = (k_0 n^2 + k_1 n u_P / D + k_2 u_P^2 / D^2) D^4, finite as n goes to 0
         d_p = self.d_p
         beta_p = beta - self.x_p * rr
         c_2 = self.c_2_plus if beta_p > 0.0 else self.c_2_minus
         u_p = u * (1.0 - self.w_p0) * (1.0 + (1.0 - math.exp(-self.c_1 * abs(beta_p))) * (c_2 - 1.0))
-        if n > 0.0:
-            j = u_p / (n * d_p)
-            k_t = self.k_0 + self.k_1 * j + self.k_2 * j * j
-            thrust = rho * n * n * d_p**4 * k_t
-        elif n < 0.0:
-            j = u * (1.0 - self.w_p0) / (-n * d_p)
-            k_t = 0.0
-            thrust = -rho * n * n * d_p**4 * (self.astern_kt[0] + self.astern_kt[1] * j)
+        ahead = n * n * self.k_0 + n * u_p * self.k_1 / d_p + u_p * u_p * self.k_2 / (d_p * d_p) if n > 0.0 else 0.0
+        if n < 0.0:
+            thrust = -rho * d_p**4 * (n * n * self.astern_kt[0] - n * u * (1.0 - self.w_p0) * self.astern_kt[1] / d_p)
         else:
-            k_t = thrust = 0.0
+            thrust = rho * d_p**4 * ahead
         x_p = (1.0 - self.t_p) * thrust
-        # rudder: the inflow sped up by the propeller race (ahead only)
+        # rudder: the inflow sped up by the propeller race (ahead only); 8 K_T / (pi J^2) = 8 K_T n^2 D^2 / (pi u_P^2)
         eta = d_p / self.h_r
         if n > 0.0 and u_p > 0.0:
-            race = 1.0 + 8.0 * k_t / (math.pi * j * j)
+            race = 1.0 + 8.0 * ahead * d_p * d_p / (math.pi * u_p * u_p)
             race = 1.0 + self.kappa * (math.sqrt(race) - 1.0) if race > 0.0 else 1.0 - self.kappa
             u_r = self.epsilon * u_p * math.sqrt(eta * race * race + 1.0 - eta)
         elif n > 0.0:
             # at rest or going astern with the propeller ahead: the race alone, momentum theory (J = 0)
-            u_r = self.epsilon * math.sqrt(eta * self.kappa**2 * 8.0 * max(k_t, 0.0) / math.pi) * n * d_p
+            u_r = self.epsilon * math.sqrt(eta * self.kappa**2 * 8.0 * max(self.k_0, 0.0) / math.pi) * n * d_p
         else:
             u_r = self.epsilon * u_p
         beta_r = beta - self.l_r * rr

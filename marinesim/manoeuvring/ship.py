@@ -25,10 +25,10 @@ from marinesim.manoeuvring.state import Orders, ShipState
 
 MAX_SPEED_KN_ORDER = 40.0
 """The fastest speed that may be ordered (kn): the scenario's limit."""
-SETTLED = {"v": 1e-7, "r": 1e-10, "psi": 1e-8, "delta": 1e-9, "n": 1e-10, "du": 1e-9}
+SETTLED = {"v": 1e-7, "r": 1e-10, "psi": 1e-8, "delta": 1e-9, "n": 1e-10, "du": 1e-7}
 """Below these (m/s, rad/s, rad, rad, rev/s, m/s^2) a straight run is steady: a heading drift of 1e-10 rad/s
-turns the ship by 2e-5 deg in an hour, a surge acceleration of 1e-9 m/s^2 (the last of an approach to her
-steady speed, a surge time constant of minutes) moves her by millimetres."""
+turns the ship by 2e-5 deg in an hour; a surge acceleration of 1e-7 m/s^2, the last of an approach to her
+steady speed with a surge time constant of some minutes, leaves 3e-5 m/s of it (0.1 m an hour)."""
 STEP_S = 0.1
 """The integrator's step (s): the fastest ship dynamics (the steering gear's 2.32 deg/s, a small vessel's yaw
 time constant of a few seconds) are resolved many times over."""
@@ -76,7 +76,7 @@ class Ship:
         """The state ``h`` s after ``s`` under ``orders``, and the time derivatives of (north, east, psi, u, v, r,
         p, phi) at ``s`` (the step's first stage: the rudder and the propeller as they stood)."""
         if orders.autopilot and self.autopilot is not None:
-            rudder, r_ref = self.autopilot.command(s.psi, s.r, orders.course)
+            rudder, r_ref = self.autopilot.command(s.psi, s.r, orders.course, math.hypot(s.u, s.v))
         else:
             rudder, r_ref = orders.rudder, 0.0
         gear, engine, model = self.steering, self.engine, self.model

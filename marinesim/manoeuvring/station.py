@@ -30,13 +30,19 @@ class StationKeeping:
     speed: float = 0.0
     rate_limit: float = math.radians(DP_RATE_DEG_MIN / 60.0)
     omega: float = 0.05
-    time_constant_s: float = 20.0
+    time_constant_s: float = 5.0
+    """``1 / (4 omega)``: the reference model critically damped, so a heading order is not swung past."""
     kind = "station"
 
     def describe(self) -> str:
         if self.speed > 0.0:
             return "no manoeuvring model: a steady course and speed"
         return "on station: position held, heading by order (no dynamic positioning yet)"
+
+    @property
+    def label(self) -> str:
+        """One word for the conning strip."""
+        return "STEADY" if self.speed > 0.0 else "STATION"
 
     def start(self, speed: float, psi: float) -> tuple[ShipState, Orders]:
         """Her state and orders on heading ``psi`` (rad, clockwise from north) at her speed."""

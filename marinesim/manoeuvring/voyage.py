@@ -207,7 +207,7 @@ class Voyage:
                 piece.growing = False
                 break
         if rows:
-            piece.rows = np.vstack([piece.rows, np.array(rows)])
+            piece.rows = np.vstack([self._rows(piece), np.array(rows)])
             piece.last = k
         if k >= piece.end:
             piece.growing = False
@@ -225,7 +225,11 @@ class Voyage:
     def _hold(self, piece: _Piece) -> None:
         self._held.append(piece)
         while len(self._held) > BLOCKS_KEPT:
-            self._held.pop(0).rows = None
+            oldest = next((p for p in self._held if not p.growing), None)  # a manoeuvre still growing stays
+            if oldest is None:
+                break
+            self._held.remove(oldest)
+            oldest.rows = None
 
     def _rows(self, piece: _Piece) -> np.ndarray:
         """A manoeuvre's rows, stepped again from its first state if they were let go."""
@@ -357,7 +361,8 @@ class Voyage:
             out[f"{name}_ddot"][at] = curve[:, j]
 
     def path(self, times: np.ndarray) -> ShipPath:
-        """The track at ``times`` (s) in CONVENTIONS: the reference point's position (m, E frame: x east, y north),
+        """The track at ``times`` (s) in CONVENTIONS: the model's origin (midship, taken as the RAO table's reference
+        point): its position (m, E frame: x east, y north),
         velocity and acceleration, the heading (a math angle, rad, unwrapped) and its rate and acceleration, the
         speed through the water (m/s), the heel (rad, CONVENTIONS' roll) and its rate and acceleration."""
         return _as_path(np.asarray(times, dtype=float).ravel(), self.sample(times))

@@ -162,12 +162,12 @@ class Controls:
         """The trainee's orders to the ship: helm, telegraph, autopilot and its course (a vessel on station: her
         heading)."""
         sim = self.scene.sim
-        ship, c = sim.vessel.ship, sim.conning()
+        ship, c, orders = sim.vessel.ship, sim.conning(), sim.voyage.orders  # the orders given, not yet answered too
 
         def order(**fields) -> Callable[[], None]:
             return lambda: self._act("order", **fields)
 
-        course = c["course_deg"] if c["course_deg"] is not None else c["heading_deg"]
+        course = math.degrees(orders.course) % 360.0 if orders.autopilot else c["heading_deg"]
 
         def steer(step: float) -> Callable[[], None]:
             return order(course_deg=round((course + step) % 360.0, 6))
@@ -175,19 +175,19 @@ class Controls:
         if ship.kind == "station":
             return {"LEFT": steer(-HELM_STEP_DEG), "RIGHT": steer(HELM_STEP_DEG)}
         hard = math.degrees(ship.steering.max_angle)
-        rudder = c["rudder_order_deg"]
+        rudder = math.degrees(orders.rudder) if not orders.autopilot else c["rudder_order_deg"]
 
         def helm(step: float) -> Callable[[], None]:
             return order(rudder_deg=round(max(min(rudder + step, hard), -hard), 6))
 
         def telegraph(steps: int) -> Callable[[], None]:
-            return order(engine=ship.engine.step(c["engine"], steps, c["rpm"] / 60.0))
+            return order(engine=ship.engine.step(orders.engine, steps, orders.rps))
 
         small, large = COURSE_STEPS_DEG
         return {"LEFT": helm(-HELM_STEP_DEG), "RIGHT": helm(HELM_STEP_DEG), "X": order(rudder_deg=0.0),
                 "Z": order(rudder_deg=-hard), "V": order(rudder_deg=hard),
                 "UP": telegraph(1), "DOWN": telegraph(-1),
-                "P": order(autopilot=c["course_deg"] is None),
+                "P": order(autopilot=not orders.autopilot),
                 "U": steer(-small), "I": steer(small), "_9": steer(-large), "_0": steer(large)}
 
     def trigger_next(self) -> None:

@@ -55,9 +55,9 @@ NAV_LIGHTS = ("underway", "restricted", "anchored", "none")
 in her ability to manoeuvre (those and red-white-red all round), at anchor (all-round white forward and aft), or
 none drawn."""
 WEATHER = ("visibility_m", "cloud_cover_oktas", "wind_speed_m_s", "rain_mm_h")
+"""The ``[environment]`` keys an event or the instructor may change during a run."""
 ORDERS = ("speed_kn", "heading_deg", "rudder_deg", "engine", "autopilot")
 """The ``[[events]]`` keys that are orders to the ship."""
-"""The ``[environment]`` keys an event or the instructor may change during a run."""
 
 
 @dataclass(frozen=True)

@@ -421,9 +421,10 @@ class Simulation:
         return self.response_at(self.legs[-1].after, math.floor(self.time / KNOT_S) * KNOT_S)
 
     def response_at(self, index: int, t: float) -> Response:
-        """Component set ``index``'s response on the track the ship is on at ``t`` (s): the straight track through
-        her place then at her heading and speed."""
-        return self._straight_response(index, self.voyage.path(np.array([t])))
+        """Component set ``index``'s response on the track the ship is on at ``t`` (s): her straight run, or in a
+        manoeuvre the straight track through her place then at her heading and speed."""
+        _, _, run = self.voyage.runs(np.array([t]))[0]
+        return self._straight_response(index, run if run is not None else self.voyage.path(np.array([t])))
 
     def velocity(self) -> np.ndarray:
         """The vessel's velocity over ground now (E frame, m/s, (2,)); zero without a vessel."""

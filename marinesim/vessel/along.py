@@ -3,8 +3,8 @@
 Each wave component's phase is that of the incident wave at the reference point where it is, ``phi = w t - k .
 r(t)``: it accumulates the encounter frequency ``w_e = w - k . dr/dt`` as the ship goes, so a turn or a change
 of speed never makes a motion jump. The transfer functions ``H(w, beta - psi, U)`` are taken at the heading and
-speed of every :data:`KNOT_S` and between by the cubic through four knots (Catmull-Rom: C1 in time), two knots
-late: the motion at ``t`` reads the ship's heading and speed up to ``t`` and no later (an order given after ``t``
+speed of every :data:`KNOT_S` and between by a Catmull-Rom spline (through the knots, C1 in time, exact for a
+quadratic change), two knots late: the motion at ``t`` reads the ship's heading and speed up to ``t`` and no later (an order given after ``t``
 cannot change it), and a response that settles over a few wave periods is not made to follow a turn faster than
 that. The derivatives follow the product rule (exact for that interpolation):
 
@@ -41,7 +41,8 @@ KNOTS_PER_PASS = 16
 
 @dataclass(frozen=True)
 class ShipPath:
-    """The reference point's track at ``times`` (T,) (s): position ``x``, ``y`` (m, E frame), velocity ``vx``,
+    """The track at ``times`` (T,) (s) of the manoeuvring model's origin (midship), taken as the RAO table's reference
+    point: position ``x``, ``y`` (m, E frame), velocity ``vx``,
     ``vy`` (m/s) and acceleration ``ax``, ``ay`` (m/s^2), the heading (math angle of the bow, rad), its rate
     (rad/s) and acceleration (rad/s^2), the speed through the water (m/s), and the manoeuvre's own heel
     (CONVENTIONS' roll, rad) with its rate and acceleration."""
