@@ -33,15 +33,7 @@ from marinesim.scenario import load_scenario  # noqa: E402
 from marinesim.scenario.ship_file import load_ship  # noqa: E402
 from marinesim.session.assembly import Assembly  # noqa: E402
 from marinesim.session.timeline import Simulation  # noqa: E402
-
-
-def best_of(function, repeats: int = 3) -> float:
-    times = []
-    for _ in range(repeats):
-        start = time.perf_counter()
-        function()
-        times.append(time.perf_counter() - start)
-    return min(times)
+from response import best_of  # noqa: E402  (benchmarks/response.py, beside this one)
 
 
 def frames(name: str, seconds: float = 600.0) -> float:

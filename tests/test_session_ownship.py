@@ -33,6 +33,7 @@ def _derivative(values: np.ndarray, dt: float) -> np.ndarray:
     return out
 
 
+@pytest.mark.slow
 def test_a_straight_steady_run_is_the_straight_track_response(transit):
     """With no order the S175's wave-frequency motions over 20 minutes at 20 Hz are those of the response on her
     straight track (the manoeuvring model in surge equilibrium) to 1e-9, and her own columns are those of a
