@@ -83,3 +83,16 @@ def test_a_bad_manoeuvring_file_is_one_line_naming_the_key(tmp_path, capsys, cha
     error = captured.err.strip()
     assert expected in error and str(path) in error and "\n" not in error, error
     assert "Traceback" not in captured.err and captured.out == "" and not plot.exists()
+
+
+def test_the_plot_is_never_written_over_an_input(tmp_path, capsys):
+    """``--plot`` onto the manoeuvring file it reads (here through a hard link) would lose the file: refused in one
+    line, the file unchanged."""
+    ship = write(tmp_path, KVLCC2.read_text(), "ship.toml")
+    link = tmp_path / "link.png"
+    link.hardlink_to(ship)
+    before = ship.read_bytes()
+    assert main(["trials", str(ship), "--plot", str(link), "--quiet"]) == 2
+    error = capsys.readouterr().err.strip()
+    assert "is the command's own input" in error and "\n" not in error
+    assert ship.read_bytes() == before

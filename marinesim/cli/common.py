@@ -1,11 +1,14 @@
-"""What several commands share: strict JSON, progress bars, number lists, hull placement and view options."""
+"""What several commands share: strict JSON, progress bars, number lists, hull placement and view options, an output
+refused where it is one of the command's inputs."""
 
 from __future__ import annotations
 
 import argparse
 import json
 import math
+import os
 import sys
+from pathlib import Path
 from typing import Any
 
 from marinesim.errors import ParameterError, require_finite
@@ -85,3 +88,13 @@ def render_options(args: argparse.Namespace):
     from marinesim.render.renderer import RenderOptions
 
     return RenderOptions(wake=not args.no_wake, cascades=args.cascades, hud=args.hud)
+
+
+def refuse_overwriting(output: Path | None, inputs: list[Path | None], option: str) -> None:
+    """Refuse (one line) an ``output`` that is one of the command's ``inputs`` (the same file, by any path or link):
+    writing it would lose the input."""
+    if output is None or not output.exists():
+        return
+    for given in inputs:
+        if given is not None and given.exists() and os.path.samefile(output, given):
+            raise ParameterError(f"{option} {output} is the command's own input {given}: it would be written over")

@@ -6,7 +6,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from marinesim.cli.common import bars, json_text
+from marinesim.cli.common import bars, json_text, refuse_overwriting
 
 NEEDS = ("marinesim.scenario", "marinesim.scenario.ship_file", "marinesim.manoeuvring.trials")
 """The modules the command loads before it starts (Ctrl-C is held until they are in)."""
@@ -39,6 +39,7 @@ def handle(args: argparse.Namespace) -> int:
 
     if args.plot is not None and not args.plot.resolve().parent.is_dir():
         raise ParameterError(f"cannot write {args.plot}: folder {args.plot.resolve().parent} does not exist")
+    refuse_overwriting(args.plot, [args.scenario], "--plot")
     if _is_ship_file(args.scenario, tomllib):
         file, ship = load_ship(args.scenario)
         speed = file.approach_speed_kn * KNOT
@@ -46,6 +47,7 @@ def handle(args: argparse.Namespace) -> int:
         vessel = load_scenario(args.scenario).vessel
         if vessel is None:
             raise ScenarioError(f"{args.scenario}: no [vessel]: nothing to trial")
+        refuse_overwriting(args.plot, [vessel.rao_path, vessel.hull_path], "--plot")
         ship = vessel.ship
         if ship.kind != "ship":
             raise ParameterError(f"{args.scenario}: {ship.name}: {ship.describe()}; no manoeuvring model to trial")

@@ -105,10 +105,6 @@ class Clarke:
     def length_m(self) -> float:
         return self.length
 
-    @property
-    def mass_kg(self) -> float:
-        return self._mmg.mass_kg
-
     def resistance(self, u: float) -> float:
         """Calm-water resistance (N) at surge ``u`` (m/s), opposing it."""
         scale, re_per_speed = self._resistance
@@ -118,14 +114,10 @@ class Clarke:
     def accelerations(self, u: float, v: float, r: float, p: float, phi: float, delta: float, n: float
                       ) -> tuple[float, float, float, float]:
         """(du/dt, dv/dt, dr/dt, 0) (m/s^2, rad/s^2) at midship (see the module)."""
-        mmg = self._mmg
-        mass, m_x, _ = mmg._mass
         y = nn = 0.0
         for x, weight in self._strips:
             w = v + x * r
             drag = -self._cross * abs(w) * w * weight
             y += drag
             nn += x * drag
-        i11, i12, i22 = mmg._inverse
-        du, dv, dr, _ = mmg.accelerations(u, v, r, p, phi, delta, n)
-        return du - self.resistance(u) / (mass + m_x), dv + i11 * y + i12 * nn, dr + i12 * y + i22 * nn, 0.0
+        return self._mmg.accelerations(u, v, r, p, phi, delta, n, more=(-self.resistance(u), y, nn))

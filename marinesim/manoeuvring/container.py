@@ -71,10 +71,6 @@ class SonNomotoContainer:
     def length_m(self) -> float:
         return LENGTH_M
 
-    @property
-    def mass_kg(self) -> float:
-        return M * 0.5 * RHO * LENGTH_M**3
-
     def accelerations(self, u: float, v: float, r: float, p: float, phi: float, delta: float, n: float
                       ) -> tuple[float, float, float, float]:
         """(du/dt, dv/dt, dr/dt, dp/dt) (m/s^2, rad/s^2) for ``u``, ``v`` (m/s), ``r``, ``p`` (rad/s), heel ``phi``,

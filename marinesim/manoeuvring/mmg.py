@@ -108,14 +108,11 @@ class Mmg:
     def length_m(self) -> float:
         return self.lpp
 
-    @property
-    def mass_kg(self) -> float:
-        return self._mass[0]
-
-    def accelerations(self, u: float, v: float, r: float, p: float, phi: float, delta: float, n: float
-                      ) -> tuple[float, float, float, float]:
+    def accelerations(self, u: float, v: float, r: float, p: float, phi: float, delta: float, n: float,
+                      more: tuple[float, float, float] = (0.0, 0.0, 0.0)) -> tuple[float, float, float, float]:
         """(du/dt, dv/dt, dr/dt, dp/dt) (m/s^2, rad/s^2) at midship for surge ``u``, sway ``v`` (m/s), yaw rate
-        ``r`` (rad/s), rudder ``delta`` (rad) and propeller ``n`` (rev/s); roll is not modelled (dp/dt = 0)."""
+        ``r`` (rad/s), rudder ``delta`` (rad) and propeller ``n`` (rev/s), with ``more`` surge and sway force (N) and
+        yaw moment (N m) of a model built on this one; roll is not modelled (dp/dt = 0)."""
         lpp, rho = self.lpp, self.rho
         mass, m_x, m_y = self._mass
         speed = math.hypot(u, v)
@@ -163,8 +160,8 @@ class Mmg:
         y_r = -(1.0 + self.a_h) * f_n * cos_d
         n_r = -(self.x_r + self.a_h * self.x_h) * lpp * f_n * cos_d
         # motion
-        x = x_h + x_p + x_r + (mass + m_y) * v * r + self.x_g * mass * r * r
-        y = y_h + y_r - (mass + m_x) * u * r
-        nn = n_h + n_r - self.x_g * mass * u * r
+        x = x_h + x_p + x_r + more[0] + (mass + m_y) * v * r + self.x_g * mass * r * r
+        y = y_h + y_r + more[1] - (mass + m_x) * u * r
+        nn = n_h + n_r + more[2] - self.x_g * mass * u * r
         i11, i12, i22 = self._inverse
         return x / (mass + m_x), i11 * y + i12 * nn, i12 * y + i22 * nn, 0.0

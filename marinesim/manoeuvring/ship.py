@@ -66,12 +66,6 @@ class Ship:
     def length_m(self) -> float:
         return self.model.length_m
 
-    def derivatives(self, s: ShipState, delta: float, n: float) -> tuple[float, ...]:
-        """Time derivatives of (north, east, psi, u, v, r, p, phi) at ``s`` with rudder ``delta`` (rad) and
-        propeller ``n`` (rev/s)."""
-        du, dv, dr, dp = self.model.accelerations(s.u, s.v, s.r, s.p, s.phi, delta, n)
-        return _kinematics(s.psi, s.u, s.v, s.r, s.phi) + (du, dv, dr, dp, s.p)
-
     def step(self, s: ShipState, orders: Orders, h: float = STEP_S) -> tuple[ShipState, tuple[float, ...]]:
         """The state ``h`` s after ``s`` under ``orders``, and the time derivatives of (north, east, psi, u, v, r,
         p, phi) at ``s`` (the step's first stage: the rudder and the propeller as they stood)."""

@@ -171,7 +171,7 @@ def _interpolated(record: Record, name: str, index: int, level: float) -> float:
 def turning_circle(ship: Ship, speed: float, side: int) -> Turning:
     """The hard-over turning circle to starboard (``side`` +1) or port (-1) from ``speed`` (m/s)."""
     rudder = side * ship.steering.max_angle
-    record = _run(ship, speed, lambda s, c: Orders(rudder=rudder, rps=_rps(ship, speed)),
+    record = _run(ship, speed, lambda s, c: Orders(rudder=rudder, rps=ship.rps_for_speed(speed)),
                   lambda s, c: abs(c) >= 720.0)
     i90, i180 = _at(record, record.heading, 90.0), _at(record, record.heading, 180.0)
     i540, i720 = _at(record, record.heading, 540.0), len(record.time) - 1
@@ -188,18 +188,14 @@ def turning_circle(ship: Ship, speed: float, side: int) -> Turning:
 def hard_over(ship: Ship, speed: float) -> None:
     """Refuse (:class:`ParameterError`) a model that goes unstable in a hard-over turn to starboard from ``speed``
     (m/s), turned through 360 deg."""
-    rudder, rps = ship.steering.max_angle, _rps(ship, speed)
+    rudder, rps = ship.steering.max_angle, ship.rps_for_speed(speed)
     _run(ship, speed, lambda s, c: Orders(rudder=rudder, rps=rps), lambda s, c: abs(c) >= 360.0)
-
-
-def _rps(ship: Ship, speed: float) -> float:
-    return ship.rps_for_speed(speed)
 
 
 def zigzag(ship: Ship, speed: float, angle_deg: float, side: int = 1) -> Zigzag:
     """The ``angle_deg``/``angle_deg`` zig-zag from ``speed`` (m/s), the first rudder to starboard (``side`` +1)
     or port (-1)."""
-    rudder, rps = side * math.radians(angle_deg), _rps(ship, speed)
+    rudder, rps = side * math.radians(angle_deg), ship.rps_for_speed(speed)
     phase = {"sign": 1, "reversals": 0, "peak": 0.0, "overshoots": []}
 
     def control(state: ShipState, change: float) -> Orders:

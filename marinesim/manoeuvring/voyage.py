@@ -201,9 +201,10 @@ class Voyage:
         while k < min(k_target, piece.end):
             following, rates = self.ship.step(state, orders, self.h)
             rows.append(_row(state, rates))
+            settled = self.ship.settled(state, orders, rates)
             k += 1
             piece.following = state = following
-            if k == piece.end or self.ship.settled(ShipState(*rows[-1][:len(FIELDS)]), orders, rates):
+            if settled:
                 piece.growing = False
                 break
         if rows:
@@ -304,7 +305,7 @@ class Voyage:
         h = self.h
         k = max(math.ceil(t / h - 1e-9) - 1, 0)
         self._extend(k + 1)
-        piece = self._pieces[bisect.bisect_right([p.first for p in self._pieces], k) - 1]
+        piece = self._piece(k)
         if piece.straight:
             out = {name: np.empty(1) for name in SAMPLED}
             _fill_straight(out, np.array([0]), piece, np.array([t - piece.first * h]))

@@ -270,12 +270,6 @@ class Simulation:
         self.components(index)  # computed now, at the change, not in the next frame
         return index
 
-    def _legs_at(self, t: float) -> tuple[Leg, float]:
-        """(the leg at ``t``, the weight of its new sea)."""
-        index = max(i for i, leg in enumerate(self.legs) if leg.start <= t or i == 0)
-        leg = self.legs[index]
-        return leg, float(leg.weight(t))
-
     # -- the ship -----------------------------------------------------------------------------
 
     @property
