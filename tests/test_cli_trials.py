@@ -96,3 +96,17 @@ def test_the_plot_is_never_written_over_an_input(tmp_path, capsys):
     error = capsys.readouterr().err.strip()
     assert "is the command's own input" in error and "\n" not in error
     assert ship.read_bytes() == before
+
+
+def test_a_plot_into_a_missing_folder_and_a_manoeuvring_file_that_is_no_toml_are_one_line(tmp_path, capsys):
+    """The plot's folder must exist (checked before the trials run); a scenario naming a manoeuvring file that is
+    not TOML is refused naming that file."""
+    assert main(["trials", str(KVLCC2), "--plot", str(tmp_path / "no" / "t.png"), "--quiet"]) == 2
+    assert "folder" in capsys.readouterr().err
+    (tmp_path / "ship.toml").write_text("model = [unclosed\n")
+    scenario = write(tmp_path, (ROOT / "configs" / "training" / "heavy_weather_transit.toml").read_text()
+                     .replace('manoeuvring = "s175"', f'manoeuvring = "{(tmp_path / "ship.toml").as_posix()}"')
+                     .replace('"../../', f'"{ROOT.as_posix()}/'))
+    assert main(["trials", str(scenario), "--quiet"]) == 2
+    error = capsys.readouterr().err.strip()
+    assert "ship.toml: not valid TOML" in error and "\n" not in error, error

@@ -118,6 +118,10 @@ def test_bad_change_arguments_are_refused_when_asked(default):
     for ramp_s in (0.0, -1.0, math.nan):
         with pytest.raises(ParameterError, match="ramp time"):
             sim.change(hs_factor=1.2, ramp_s=ramp_s)
+    before = sim.voyage.orders
+    with pytest.raises(ParameterError, match="ramp time"):  # the whole change refused, its order too
+        sim.change(hs_factor=1.2, speed_kn=6.0, ramp_s=0.0)
+    assert sim.voyage.orders == before
     sim.advance(2.0)
     assert len(sim.legs) == 1 and sim.sea.hs == pytest.approx(default.sea.hs)
     sim.change(speed_kn=6.0, ramp_s=0.0)

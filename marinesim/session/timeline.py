@@ -38,7 +38,7 @@ from marinesim.pose import Pose
 from marinesim.recent import Recent
 from marinesim.scenario import Scenario
 from marinesim.scenario.model import CHANGE_RAMP_S, MAX_SPEED_KN, WEATHER, EnvironmentOptions
-from marinesim.sea.ocean import smoothstep
+from marinesim.sea.ocean import Components, smoothstep
 from marinesim.sea.seastate import SeaState, scaled_sea
 from marinesim.session.assembly import Assembly
 from marinesim.vessel.along import KNOT_S, ShipPath, linear_along
@@ -159,7 +159,7 @@ class Simulation:
 
     # -- timeline -----------------------------------------------------------------------------
 
-    def components(self, index: int):
+    def components(self, index: int) -> Components:
         """Component set ``index`` (:meth:`Assembly.components` at its time): set 0 the scenario's sea."""
         if index == 0:
             return self.assembly.components()
@@ -208,17 +208,18 @@ class Simulation:
         directions turned by ``turn_waves_deg`` (compass, clockwise), or a new ``sea``, blending in over ``ramp_s``
         from ``at`` (s; default :data:`PREPARE_S` from now) whatever the sea is doing then; ``speed_kn`` and
         ``heading_deg`` are orders to the engine and the autopilot (:meth:`order`), given at ``at`` (default now)."""
-        if speed_kn is not None or heading_deg is not None:
-            self.order(speed_kn=speed_kn, course_deg=heading_deg, at=at)
         start = self.time if at is None else require_at_least("start of a change (s)", at, 0.0)
         if (hs_factor, tp_factor, turn_waves_deg) != (1.0, 1.0, 0.0):
             if sea is not None:
                 raise ParameterError("give a new sea or factors of the present one, not both")
             sea = scaled_sea(self.sea, hs_factor, tp_factor, turn_waves_deg)
+        if sea is not None:  # refused before any part of the change is taken
+            ramp = require_positive("ramp time of a sea change (s)", ramp_s)
+            self.ocean.check(sea)
+        if speed_kn is not None or heading_deg is not None:
+            self.order(speed_kn=speed_kn, course_deg=heading_deg, at=at)
         if sea is None:
             return
-        ramp = require_positive("ramp time of a sea change (s)", ramp_s)
-        self.ocean.check(sea)
         ready = max(start + (PREPARE_S if at is None else 0.0), self._pending[-1].ready_at if self._pending else 0.0)
         self._pending.append(_Change(sea, ramp, ready, self._preparing.submit(self.ocean.prepare, sea)))
         self._move_clock(self.time)
