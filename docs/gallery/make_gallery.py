@@ -73,7 +73,8 @@ SHOTS = (
          "9), overcast.", air={"wind_speed_m_s": 24.0, "cloud_cover_oktas": 8.0, "visibility_m": 5000.0},
          elevation_deg=12.0, hs_factor=2.0),
     Shot("turn_s175_bridge", "training/heavy_weather_transit.toml", "The S175 turning: 20 deg of starboard rudder "
-         "ordered at 30 s, 65 s later; the conning line reads her heading, hand steering, the rudder, her rate of turn, "
+         "ordered at 30 s, 65 s later; the conning line reads her heading, hand steering, the rudder, her rate of "
+         "turn, "
          "the rpm set for 15 kn, her speed and course over ground (her bow 8 deg inside her track); she heels 5 deg "
          "outward, to port.", camera="bridge", at_s=95.0, orders=((30.0, {"rudder_deg": 20.0}),)),
     Shot("turn_s175_orbit", "training/heavy_weather_transit.toml", "The same moment from astern: she swings to "

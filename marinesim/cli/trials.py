@@ -81,7 +81,8 @@ def _table(result) -> str:
     length = result.length_m
     lines = [f"{result.name}: L {length:.1f} m, approach {result.speed_m_s / KNOT:.2f} kn, calm water"]
     for turn in (result.port, result.starboard):
-        lines.append(f"  turning {turn.rudder_deg:+.0f} deg: advance {turn.advance_m:.0f} m ({turn.advance_m / length:.2f} "
+        lines.append(f"  turning {turn.rudder_deg:+.0f} deg: advance {turn.advance_m:.0f} m "
+                     f"({turn.advance_m / length:.2f} "
                      f"L), transfer {turn.transfer_m:.0f} m, tactical diameter {turn.tactical_diameter_m:.0f} m "
                      f"({turn.tactical_diameter_m / length:.2f} L), steady diameter {turn.steady_diameter_m:.0f} m, "
                      f"final speed {turn.final_speed_kn:.1f} kn")
@@ -92,7 +93,8 @@ def _table(result) -> str:
         lines.append("  crash stop: the engine cannot go astern")
     else:
         s = result.stopping
-        lines.append(f"  crash stop: track reach {s.track_reach_m:.0f} m ({s.track_reach_m / length:.2f} L), head reach "
+        lines.append(f"  crash stop: track reach {s.track_reach_m:.0f} m ({s.track_reach_m / length:.2f} L), "
+                     "head reach "
                      f"{s.head_reach_m:.0f} m, {s.time_s:.0f} s")
     lines.append("IMO MSC.137(76): " + ("all criteria met" if result.passed else "NOT all criteria met"))
     for c in result.criteria:

@@ -9,20 +9,20 @@ derivatives from multiple regression on model tests, with ``S = pi (T/L)^2``,
 - ``-Y'_v/S = 1 + 0.4 Cb B/T``, ``-Y'_r/S = -1/2 + 2.2 B/L - 0.08 B/T``, ``-N'_v/S = 1/2 + 2.4 T/L``,
   ``-N'_r/S = 1/4 + 0.039 B/T - 0.56 B/L``,
 
-taken as the hull's (the rigid body's ``m u r`` is added separately). A linear model turns ever faster
-with more rudder; a real hull does not, so the cross-flow drag of strip theory is added: ``Y = -(rho/2) T
-C_D int |v + x r| (v + x r) dx``, ``N = -(rho/2) T C_D int x |v + x r| (v + x r) dx`` over ``-L/2..L/2``
-(Gauss-Legendre), ``C_D`` Hoerner's 2-D cross-flow drag of a section with ``B/2T`` (Fossen's
-digitisation). Surge: the ITTC 1957 friction line with a form factor, ``R = (rho/2) S_w (1 + k) C_F u|u|``,
-``C_F = 0.075 / (log10 Re - 2)^2``, ``k = 0.1 + 0.4 Cb``, the wetted area by Mumford ``S_w = 1.7 L T + V /
-T``; surge added mass ``0.05 m``; ``(m + m_y) v r`` the speed lost in a turn. The propeller and the rudder
-are the MMG standard method's (:mod:`marinesim.manoeuvring.mmg`) with generic interaction coefficients:
-a four-bladed propeller of diameter ``0.65 T`` (``K_T = 0.33 - 0.24 J - 0.17 J^2``, roughly a Wageningen
-B4-55 of pitch ratio 0.8), Taylor's wake ``w_P0 = 0.5 Cb - 0.05`` (the same in a turn: the ship is symmetric
-port and starboard), thrust deduction ``0.6 w_P0``; a rudder of area ``A_R`` (default ``L T / 60``, the
-classification societies' minimum) and ``0.7 T`` span, so of aspect ratio ``(0.7 T)^2 / A_R`` (29.4 T/L by
-default: 1.2 for the tanker, 2.1 for the supply vessel) and Fujii's ``f_alpha = 6.13 Lambda / (Lambda + 2.25)``, ``t_R = 1 - 0.28 Cb - 0.55``, ``a_H = 0.4``, ``x'_H = -0.45``, ``x'_R = -0.5``,
-``gamma_R = 0.5``, ``l'_R = -0.9``, ``epsilon = 1``, ``kappa = 0.5``.
+taken as the hull's (the rigid body's ``m u r`` is added separately). A linear model turns ever faster with more
+rudder; a real hull does not, so the cross-flow drag of strip theory is added: ``Y = -(rho/2) T C_D int |v + x r| (v
++ x r) dx``, ``N = -(rho/2) T C_D int x |v + x r| (v + x r) dx`` over ``-L/2..L/2`` (Gauss-Legendre), ``C_D``
+Hoerner's 2-D cross-flow drag of a section with ``B/2T`` (Fossen's digitisation). Surge: the ITTC 1957 friction line
+with a form factor, ``R = (rho/2) S_w (1 + k) C_F u|u|``, ``C_F = 0.075 / (log10 Re - 2)^2``, ``k = 0.1 + 0.4 Cb``,
+the wetted area by Mumford ``S_w = 1.7 L T + V / T``; surge added mass ``0.05 m``; ``(m + m_y) v r`` the speed lost
+in a turn. The propeller and the rudder are the MMG standard method's (:mod:`marinesim.manoeuvring.mmg`) with
+generic interaction coefficients: a four-bladed propeller of diameter ``0.65 T`` (``K_T = 0.33 - 0.24 J - 0.17
+J^2``, roughly a Wageningen B4-55 of pitch ratio 0.8), Taylor's wake ``w_P0 = 0.5 Cb - 0.05`` (the same in a turn:
+the ship is symmetric port and starboard), thrust deduction ``0.6 w_P0``; a rudder of area ``A_R`` (default ``L T /
+60``, the classification societies' minimum) and ``0.7 T`` span, so of aspect ratio ``(0.7 T)^2 / A_R`` (29.4 T/L by
+default: 1.2 for the tanker, 2.1 for the supply vessel) and Fujii's ``f_alpha = 6.13 Lambda / (Lambda + 2.25)``,
+``t_R = 1 - 0.28 Cb - 0.55``, ``a_H = 0.4``, ``x'_H = -0.45``, ``x'_R = -0.5``, ``gamma_R = 0.5``, ``l'_R = -0.9``,
+``epsilon = 1``, ``kappa = 0.5``.
 """
 
 from __future__ import annotations

@@ -23,7 +23,8 @@ def plot_trials(result: Trials, path: Path) -> None:
         r = turn.record
         track.plot(r.east / length, r.north / length, color=colour,
                    label=f"35 deg {('port' if turn.rudder_deg < 0 else 'starboard')}: advance "
-                         f"{turn.advance_m / length:.2f} L, tactical diameter {turn.tactical_diameter_m / length:.2f} L")
+                         f"{turn.advance_m / length:.2f} L, tactical diameter "
+                         f"{turn.tactical_diameter_m / length:.2f} L")
     if result.stopping is not None:
         r = result.stopping.record
         track.plot(r.east / length, r.north / length, color="k", lw=2,

@@ -134,7 +134,8 @@ class Ship:
             return np.array([dv, dr, dp, p][:size])
 
         zero = np.zeros(size)
-        a = np.column_stack([(rates(zero + eps * e, 0.0) - rates(zero - eps * e, 0.0)) / (2 * eps) for e in np.eye(size)])
+        a = np.column_stack([(rates(zero + eps * e, 0.0) - rates(zero - eps * e, 0.0)) / (2 * eps)
+                             for e in np.eye(size)])
         b = (rates(zero, eps) - rates(zero, -eps)) / (2 * eps)
         return a, b
 

@@ -4,20 +4,20 @@ Every manoeuvre starts on a straight course at the approach speed with the prope
 it (:meth:`Ship.steady`); the order is given at t = 0 and the steering gear and the engine carry it out at
 their rates. Distances are those of the model's origin (midship) from where the order was given.
 
-- Turning circle: the rudder hard over (the steering gear's limit, 35 deg by SOLAS) until the heading has
-  changed 720 deg. Advance: the distance along the original course when the heading has changed 90 deg;
-  transfer: across it then; tactical diameter: across it at 180 deg; the steady diameter: the distance
-  between the positions at 540 and 720 deg (half a steady circle apart); the final speed at 720 deg.
-- Zig-zag a/b: the rudder to a deg starboard; when the heading has changed b deg, to a deg port; when it
-  has changed b deg to port, back to starboard; the first overshoot is how far the heading goes past b
-  after the first reversal, the second past -b after the second. Initial turning: the distance run
-  until the heading has changed 10 deg with 10 deg of rudder.
-- Crash stop: full astern from the approach; track reach the distance run along the track until the ship
-  stops (no headway), head reach the distance along the original course.
-- Criteria (MSC.137(76) 5.3): advance <= 4.5 L, tactical diameter <= 5 L; initial turning <= 2.5 L; 10/10
-  first overshoot <= 10 deg if L/V < 10 s, <= 20 deg if L/V >= 30 s, 5 + L/(2V) between, the second <= 25,
-  40 and 17.5 + 0.75 L/V; 20/20 first overshoot <= 25 deg; crash-stop track reach <= 15 L (an Administration may allow 20
-  L for large ships).
+- Turning circle: the rudder hard over (the steering gear's limit, 35 deg by SOLAS) until the heading has changed
+  720 deg. Advance: the distance along the original course when the heading has changed 90 deg; transfer: across it
+  then; tactical diameter: across it at 180 deg; the steady diameter: the distance between the positions at 540 and
+  720 deg (half a steady circle apart); the final speed at 720 deg.
+- Zig-zag a/b: the rudder to a deg starboard; when the heading has changed b deg, to a deg port; when it has changed
+  b deg to port, back to starboard; the first overshoot is how far the heading goes past b after the first reversal,
+  the second past -b after the second. Initial turning: the distance run until the heading has changed 10 deg with
+  10 deg of rudder.
+- Crash stop: full astern from the approach; track reach the distance run along the track until the ship stops (no
+  headway), head reach the distance along the original course.
+- Criteria (MSC.137(76) 5.3): advance <= 4.5 L, tactical diameter <= 5 L; initial turning <= 2.5 L; 10/10 first
+  overshoot <= 10 deg if L/V < 10 s, <= 20 deg if L/V >= 30 s, 5 + L/(2V) between, the second <= 25, 40 and 17.5 +
+  0.75 L/V; 20/20 first overshoot <= 25 deg; crash-stop track reach <= 15 L (an Administration may allow 20 L for
+  large ships).
 """
 
 from __future__ import annotations

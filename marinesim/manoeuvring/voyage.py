@@ -8,11 +8,11 @@ velocities and accelerations given with them are the interpolants' own derivativ
 on a straight course at steady speed (:meth:`Ship.settled`) the voyage goes on exactly straight until the next
 order, in one piece (what the response's fast path takes).
 
-The voyage is computed ahead on demand and an order drops what was computed past its step (a forecast under
-the old orders). Orders are kept as asked ("rudder 10 to starboard", "autopilot on") and worked out against the
-ship's state at their step, so an order given now before one already given for a moment later (a scripted
-event asked ahead) acts first, and the later one on top of it. Memory stays bounded: the steps are kept in blocks, of which only the newest are held; an
-older block is stepped again from its first state when asked for, to the same bits.
+The voyage is computed ahead on demand and an order drops what was computed past its step (a forecast under the old
+orders). Orders are kept as asked ("rudder 10 to starboard", "autopilot on") and worked out against the ship's state
+at their step, so an order given now before one already given for a moment later (a scripted event asked ahead) acts
+first, and the later one on top of it. Memory stays bounded: the steps are kept in blocks, of which only the newest
+are held; an older block is stepped again from its first state when asked for, to the same bits.
 
 :meth:`Voyage.path` gives the track in CONVENTIONS (x east, y north, heading a math angle): the one conversion
 from the manoeuvring axes (:mod:`marinesim.manoeuvring.state`).

@@ -224,7 +224,8 @@ class Scene:
                 (ordered - c["heading_deg"] + 180.0) % 360.0 - 180.0) > 0.5 else ""
             if not full:  # the strip: as short as a ship's speed and heading were
                 return f"HDG {c['heading_deg']:03.0f}{turning} {self.sim.vessel.ship.label}"
-            return f"HDG {c['heading_deg']:03.0f}{turning} {c['engine'].upper()}   SOG {c['speed_over_ground_kn']:.1f} kn"
+            return (f"HDG {c['heading_deg']:03.0f}{turning} {c['engine'].upper()}   "
+                    f"SOG {c['speed_over_ground_kn']:.1f} kn")
 
         def side(deg: float) -> str:
             return "mid" if abs(deg) < 0.5 else f"{abs(deg):.0f}{'S' if deg > 0 else 'P'}"

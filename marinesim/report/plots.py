@@ -2,8 +2,8 @@
 the ship's track over the ground (to scale, north up) and her handling (heading, speed, rudder, propeller).
 
 Drawn with :class:`matplotlib.figure.Figure` on the Agg canvas (never pyplot: no global figure state)
-1000 px wide (the track as tall as its shape needs) at 100 dpi, every font size given, and saved without the PNG's ``Software`` text,
-so the same data give the same bytes. Time runs along x as elapsed min:s (h:min:s past an hour),
+1000 px wide (the track as tall as its shape needs) at 100 dpi, every font size given, and saved without the
+PNG's ``Software`` text, so the same data give the same bytes. Time runs along x as elapsed min:s (h:min:s past an hour),
 the way the report's tables give it (:func:`clock`).
 """
 

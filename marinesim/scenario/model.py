@@ -434,7 +434,8 @@ class EventOptions(Section):
             raise _refuse("message", "an event needs something to do: sea, " + ", ".join(ORDERS) + ", "
                                      "visibility_m, cloud_cover_oktas, wind_speed_m_s, rain_mm_h or message")
         if self.heading_deg is not None and self.autopilot is False:
-            raise _refuse("autopilot", "heading_deg is a course for the autopilot: it cannot come with autopilot = false")
+            raise _refuse("autopilot", "heading_deg is a course for the autopilot: it cannot come with "
+                                       "autopilot = false")
         if self.rudder_deg is not None and (self.heading_deg is not None or self.autopilot):
             raise _refuse("rudder_deg", "a rudder order by hand takes the helm from the autopilot: give it without "
                                         "heading_deg or autopilot = true")

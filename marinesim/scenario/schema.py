@@ -96,8 +96,8 @@ class Event:
         if self.heading_deg is not None:
             parts.append(f"course {self.heading_deg:g} deg")
         if self.rudder_deg is not None:
-            parts.append(f"rudder {abs(self.rudder_deg):g} deg "
-                         + ("to starboard" if self.rudder_deg > 0 else "to port" if self.rudder_deg < 0 else "midships"))
+            side = "to starboard" if self.rudder_deg > 0 else "to port" if self.rudder_deg < 0 else "midships"
+            parts.append(f"rudder {abs(self.rudder_deg):g} deg {side}")
         if self.engine is not None:
             parts.append(self.engine)
         if self.autopilot is not None:

@@ -202,7 +202,8 @@ class ShipFile(Section):
             given = getattr(self, name) is not None
             if given != (name == self.model):
                 raise _refuse(name, f"a [{name}] table with model = {self.model!r}: its coefficients go in "
-                                    f"[{self.model}]" if given else f"model = {self.model!r} needs its [{self.model}] table")
+                                    f"[{self.model}]" if given
+                              else f"model = {self.model!r} needs its [{self.model}] table")
         if self.autopilot.rudder_limit_deg > self.steering.max_rudder_deg:
             raise _refuse("autopilot", f"rudder_limit_deg {self.autopilot.rudder_limit_deg:g} is more than the "
                                        f"steering gear's max_rudder_deg {self.steering.max_rudder_deg:g}")

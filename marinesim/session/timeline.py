@@ -152,6 +152,10 @@ class Simulation:
         self.wake_on = wake and self.vessel is not None and self.vessel.hull is not None
         self._wake_grid = wake_grid
         self._wakes: dict[float, Future | Wake | None] = {}
+        whole_knots = (k * WAKE_STEP_KN * KNOT for k in range(1, int(MAX_SPEED_KN / WAKE_STEP_KN) + 1))
+        self._wake_grid_speeds = sorted({*(self.vessel.wake_speeds_m_s if self.vessel is not None else ()),
+                                         *whole_knots})
+        """The speeds (m/s) wakes are computed at: the scenario's and whole knots."""
         self._pool = ThreadPoolExecutor(max_workers=1) if self.wake_on else None
         self.solver: LocalSolver | None = None
         if self.wake_on:
@@ -433,8 +437,7 @@ class Simulation:
     def _wake_speeds(self, speed: float) -> list[tuple[float, float]]:
         """The wake speeds (m/s) to draw at ``speed`` (m/s) with their weights: the scenario's speeds and whole
         knots, the two around ``speed`` blended linearly."""
-        grid = sorted({*self.vessel.wake_speeds_m_s,
-                       *(k * WAKE_STEP_KN * KNOT for k in range(1, int(MAX_SPEED_KN / WAKE_STEP_KN) + 1))})
+        grid = self._wake_grid_speeds
         near = [u for u in grid if abs(u - speed) < 0.05 * KNOT]
         if near:
             return [(near[0], 1.0)]

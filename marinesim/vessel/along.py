@@ -1,12 +1,12 @@
 """The vessel's response along a manoeuvre: a track that turns and changes speed.
 
 Each wave component's phase is that of the incident wave at the reference point where it is, ``phi = w t - k .
-r(t)``: it accumulates the encounter frequency ``w_e = w - k . dr/dt`` as the ship goes, so a turn or a change
-of speed never makes a motion jump. The transfer functions ``H(w, beta - psi, U)`` are taken at the heading and
-speed of every :data:`KNOT_S` and between by a Catmull-Rom spline (through the knots, C1 in time, exact for a
-quadratic change), two knots late: the motion at ``t`` reads the ship's heading and speed up to ``t`` and no later (an order given after ``t``
-cannot change it), and a response that settles over a few wave periods is not made to follow a turn faster than
-that. The derivatives follow the product rule (exact for that interpolation):
+r(t)``: it accumulates the encounter frequency ``w_e = w - k . dr/dt`` as the ship goes, so a turn or a change of
+speed never makes a motion jump. The transfer functions ``H(w, beta - psi, U)`` are taken at the heading and speed
+of every :data:`KNOT_S` and between by a Catmull-Rom spline (through the knots, C1 in time, exact for a quadratic
+change), two knots late: the motion at ``t`` reads the ship's heading and speed up to ``t`` and no later (an order
+given after ``t`` cannot change it), and a response that settles over a few wave periods is not made to follow a
+turn faster than that. The derivatives follow the product rule (exact for that interpolation):
 
 - ``x = Re sum H a e^{i phi}``, ``dx/dt = Re sum (dH/dt + i w_e H) a e^{i phi}``,
 - ``d2x/dt2 = Re sum (d2H/dt2 + 2 i w_e dH/dt + (i dw_e/dt - w_e^2) H) a e^{i phi}``, ``dw_e/dt = -k . d2r/dt2``;
@@ -135,7 +135,8 @@ def _sum(t, knot, weights, x, y, vx, vy, ax, ay, px, py, omega, kx, ky, amplitud
                     ddh += w[2, m] * q
                 acc[d] += h.real * ce - h.imag * se
                 acc[6 + d] += dh.real * ce - dh.imag * se + h.real * fr - h.imag * fi
-                acc[12 + d] += ddh.real * ce - ddh.imag * se + 2.0 * (dh.real * fr - dh.imag * fi) + h.real * gr - h.imag * gi
+                acc[12 + d] += (ddh.real * ce - ddh.imag * se + 2.0 * (dh.real * fr - dh.imag * fi)
+                                + h.real * gr - h.imag * gi)
             a = amplitude[i]
             acc[18] += a.real * ce - a.imag * se
             for p in range(points):
