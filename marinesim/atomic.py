@@ -147,16 +147,23 @@ def _backup(path: Path) -> Path | None:
 
 @contextlib.contextmanager
 def signals_held() -> Iterator[None]:
-    """SIGINT and SIGTERM are delivered only when the block ends (main thread; elsewhere a no-op)."""
+    """SIGINT and SIGTERM are noted, not acted on, inside the block and delivered once it ends (main thread;
+    elsewhere a no-op). Python handlers are swapped rather than the signal mask set: a process-directed signal
+    reaches any thread that does not block it (an FFT or a thread pool's worker) and Python then runs the
+    handler on the main thread whatever that thread's mask says."""
     if threading.current_thread() is not threading.main_thread():
         yield
         return
-    held = {signal.SIGINT, signal.SIGTERM}
-    previous = signal.pthread_sigmask(signal.SIG_BLOCK, held)
+    noted: list[int] = []
+    previous = {number: signal.signal(number, lambda number, frame: noted.append(number))
+                for number in (signal.SIGINT, signal.SIGTERM)}
     try:
         yield
     finally:
-        signal.pthread_sigmask(signal.SIG_SETMASK, previous)
+        for number, handler in previous.items():
+            signal.signal(number, handler)
+        if noted:
+            signal.raise_signal(noted[0])
 
 
 @contextlib.contextmanager

@@ -13,13 +13,14 @@ import signal
 import stat
 import subprocess
 import sys
+import threading
 import time
 from pathlib import Path
 
 import pandas as pd
 import pytest
 
-from marinesim.atomic import AtomicFile, commit_together
+from marinesim.atomic import AtomicFile, commit_together, signals_held
 from marinesim.errors import MarinesimError, ParameterError
 from marinesim.scenario import load_scenario, with_run
 from marinesim.session.assembly import Assembly
@@ -148,6 +149,34 @@ def test_a_failed_rename_puts_back_what_was_there(tmp_path):
         commit_together([new_b, new_a])
     assert (a.read_text(), b.read_text()) == ("old table", "old sidecar")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["a.csv", "a.csv.json"]
+
+
+def test_a_held_signal_waits_for_the_block_even_with_other_threads_running():
+    """A SIGINT sent to the process while a temporary file is being registered must wait for the block to
+    end, though another thread (an FFT worker, a thread pool) is there to take it: were it acted on inside,
+    the temporary file would be left behind (the campaign saw one after a Ctrl-C)."""
+    stop = threading.Event()
+    worker = threading.Thread(target=stop.wait)
+    worker.start()
+    arrived, wakeup = os.pipe()  # the C-level handler writes the signal's number here, whichever thread takes it
+    os.set_blocking(wakeup, False)
+    previous = signal.set_wakeup_fd(wakeup)
+    reached_end = False
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            with signals_held():
+                os.kill(os.getpid(), signal.SIGINT)
+                assert os.read(arrived, 1) == bytes([signal.SIGINT])
+                for _ in range(1000):  # bytecodes enough for a pending handler to run
+                    pass
+                reached_end = True
+    finally:
+        signal.set_wakeup_fd(previous)
+        os.close(arrived)
+        os.close(wakeup)
+        stop.set()
+        worker.join()
+    assert reached_end
 
 
 @pytest.mark.parametrize("kind", ["fifo", "symlink", "device", "folder"])

@@ -14,6 +14,7 @@ import sys
 from typing import NoReturn
 
 from marinesim import __version__
+from marinesim.atomic import signals_held
 from marinesim.cli import assess, export, hull, operability, rao, render, replay, report, run, sea, trials, wake
 from marinesim.errors import MarinesimError
 
@@ -57,19 +58,11 @@ def _terminate(signum: int, frame: object) -> None:
 
 
 def _load(modules: tuple[str, ...]) -> None:
-    """Import ``modules`` with SIGINT and SIGTERM noted, not raised, and delivered once they are in: an
-    interrupt inside an import (scipy's, for one) can leave the import broken and end in a traceback."""
-    noted: list[int] = []
-    held = (signal.SIGINT, signal.SIGTERM)
-    previous = {number: signal.signal(number, lambda number, frame: noted.append(number)) for number in held}
-    try:
+    """Import ``modules`` with SIGINT and SIGTERM held until they are in: an interrupt inside an import
+    (scipy's, for one) can leave the import broken and end in a traceback."""
+    with signals_held():
         for name in modules:
             importlib.import_module(name)
-    finally:
-        for number, handler in previous.items():
-            signal.signal(number, handler)
-    if noted:
-        signal.raise_signal(noted[0])
 
 
 class Parser(argparse.ArgumentParser):
