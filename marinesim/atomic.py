@@ -2,16 +2,21 @@
 then renamed over it.
 
 An interrupted run never leaves a half-written file behind, an existing file is replaced only by
-a complete one, and every output gets the same permissions (0666 less the umask, as ``open``
-would give; ``mkstemp`` alone makes 0600). Only a regular file (or nothing) is ever replaced: a
+a complete one, and every output gets the permissions ``open`` would give (0666 less the umask,
+the temporary file being created with them). Only a regular file (or nothing) is ever replaced: a
 device, a FIFO, a directory or a symbolic link at the target is refused before anything is written.
 A failed write (a full disk, a read-only folder) is reported as a :class:`MarinesimError` naming the
 target, never its temporary name.
 
+Inside :func:`inputs_kept` (a command's run) no output is written over a file the command reads: every
+reader passes :func:`~marinesim.formats.check_file`, which notes the file (and its sidecar) here, and the
+same file under any name, symbolic or hard link, is refused as an output.
+
 Files that belong together (a table and the sidecar that describes it) are committed by
 :func:`commit_together`: SIGINT and SIGTERM wait until the last is in place, and if a rename fails
 the files renamed before it get their previous contents back, so the pair on disk is the old one
-or the new one. :func:`output_lock` keeps a second writer off an output while the first runs.
+or the new one. :func:`output_lock` keeps a second writer off an output while the first runs, and
+clears what a writer that was killed left behind.
 """
 
 from __future__ import annotations
@@ -19,19 +24,25 @@ from __future__ import annotations
 import contextlib
 import json
 import os
+import re
+import secrets
 import signal
 import stat
-import tempfile
 import threading
 from pathlib import Path
 from typing import Iterator, Sequence
 
-from marinesim.errors import MarinesimError
+import filelock
+
+from marinesim.errors import MarinesimError, ParameterError
+
+PART = ".part"
+"""What a temporary file's name carries before the target's suffix: ``.<stem>.<8 hex>.part<suffix>``."""
 
 
 class AtomicFile:
     """A file of ``path`` being written under the temporary name :attr:`temp` until :meth:`commit`;
-    errors name :attr:`named`: ``named`` if given (the output a lock file is for), else ``path``."""
+    errors name :attr:`named`: ``named`` if given, else ``path``."""
 
     def __init__(self, path: str | os.PathLike, named: str | os.PathLike | None = None) -> None:
         self.path = Path(path)
@@ -39,19 +50,11 @@ class AtomicFile:
         if not self.path.parent.is_dir():
             raise MarinesimError(f"cannot write {self.named}: folder {self.path.parent} does not exist")
         check_replaceable(self.path)
-        try:
-            fd, temp = tempfile.mkstemp(prefix=f".{self.path.stem}.", suffix=f".part{self.path.suffix}",
-                                        dir=self.path.parent)
-        except OSError as error:
-            raise MarinesimError(f"cannot write {self.named}: {error.strerror or error}") from None
-        os.close(fd)
-        self.temp = Path(temp)
+        refuse_input(self.path, f"cannot write {self.named}")
+        self.temp = temporary(self.path, named=self.named)
 
     def commit(self) -> Path:
-        """Give the temporary file the usual permissions and rename it to :attr:`path`."""
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(self.temp, 0o666 & ~umask)
+        """Rename the temporary file to :attr:`path`."""
         os.replace(self.temp, self.path)
         return self.path
 
@@ -59,6 +62,81 @@ class AtomicFile:
         """Delete the temporary file, keeping whatever :attr:`path` held before."""
         with contextlib.suppress(FileNotFoundError):
             os.unlink(self.temp)
+
+
+def temporary(path: Path, part: str = PART, named: Path | None = None) -> Path:
+    """A new empty temporary file beside ``path``, ``.<stem>.<8 hex><part><suffix>``, created with mode 0666 (the
+    umask applies, as ``open``'s); errors name ``named`` (default ``path``)."""
+    named = path if named is None else named
+    for _ in range(100):
+        temp = path.with_name(f".{path.stem}.{secrets.token_hex(4)}{part}{path.suffix}")
+        try:
+            os.close(os.open(temp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666))
+            return temp
+        except FileExistsError:
+            continue
+        except OSError as error:
+            raise MarinesimError(f"cannot write {named}: {error.strerror or error}") from None
+    raise MarinesimError(f"cannot write {named}: no free temporary name beside it")
+
+
+def _temporaries(path: Path) -> re.Pattern:
+    """The names :func:`temporary` gives the temporary files of ``path``."""
+    return re.compile(rf"\.{re.escape(path.stem)}\.[0-9a-f]{{8}}{re.escape(PART + path.suffix)}")
+
+
+def sidecar_path(path: Path) -> Path:
+    """Where the sidecar of the table (or log) ``path`` goes: its full name plus ``.json``."""
+    return path.with_name(path.name + ".json")
+
+
+_inputs: dict[tuple[int, int], Path] | None = None
+"""The files the running command reads, by (device, inode): None outside :func:`inputs_kept`."""
+_inputs_lock = threading.Lock()
+
+
+@contextlib.contextmanager
+def inputs_kept() -> Iterator[None]:
+    """Inside the block, the files :func:`note_input` is told of are refused as outputs."""
+    global _inputs
+    _inputs = {}
+    try:
+        yield
+    finally:
+        _inputs = None
+
+
+def note_input(path: Path) -> None:
+    """Note ``path`` (and its sidecar, if there is one) as read by the running command; outside
+    :func:`inputs_kept`, nothing."""
+    inputs = _inputs  # one read: the block may end in another thread meanwhile
+    if inputs is None:
+        return
+    for file in (Path(path), sidecar_path(Path(path))):
+        try:
+            found = os.stat(file)
+        except (OSError, ValueError):
+            continue
+        with _inputs_lock:
+            inputs.setdefault((found.st_dev, found.st_ino), file)
+
+
+def refuse_input(path: Path, doing: str) -> None:
+    """Refuse (:class:`ParameterError`, after ``doing``) an output ``path`` that is, by any name or link, a
+    file the running command reads: writing it would lose that input."""
+    inputs = _inputs
+    if inputs is None:
+        return
+    try:
+        found = os.stat(path)
+    except (OSError, ValueError):
+        return
+    with _inputs_lock:
+        given = inputs.get((found.st_dev, found.st_ino))
+    if given is not None:
+        same = "" if given.resolve() == Path(path).resolve() else f" (the same file as {given})"
+        raise ParameterError(f"{doing}: it is one of this command's inputs{same}; writing it would lose it, "
+                             "choose another path")
 
 
 def check_replaceable(path: Path) -> None:
@@ -167,48 +245,47 @@ def signals_held() -> Iterator[None]:
 
 
 @contextlib.contextmanager
-def output_lock(path: Path) -> Iterator[None]:
-    """Hold ``<path>.lock`` (it names this process) while ``path`` is written; a second writer is refused
-    while the first runs, and a lock left by a process that no longer runs is taken over."""
+def output_lock(path: Path, covers: Sequence[Path] = ()) -> Iterator[None]:
+    """Hold ``<path>.lock`` (an OS lock, given up when the process ends however it ends) while ``path`` and
+    ``covers`` are written: a second writer is refused while the first runs. Once it is held, the temporary
+    files a killed writer of these outputs left are removed."""
     lock = path.with_name(path.name + ".lock")
-    mine = AtomicFile(lock, named=path)
-    with writing(mine):
-        mine.temp.write_text(f"{os.getpid()}\n")
+    held = filelock.FileLock(lock, timeout=0)
     try:
-        for _ in range(2):
-            try:
-                os.link(mine.temp, lock)  # fails if the lock exists: creating it with its content is atomic
-                break
-            except FileExistsError:
-                owner = _lock_owner(lock)
-                if owner is not None:
-                    raise MarinesimError(f"cannot write {path}: another marinesim (process {owner}) is writing "
-                                         f"it; wait for it to finish (or remove {lock} if it no longer runs)") from None
-                with contextlib.suppress(FileNotFoundError):
-                    os.unlink(lock)
-        else:
-            raise MarinesimError(f"cannot write {path}: the lock {lock} keeps coming back")
-    finally:
-        mine.discard()
+        held.acquire()
+    except filelock.Timeout:
+        owner = _lock_owner(lock)
+        process = f" (process {owner})" if owner is not None else ""
+        raise MarinesimError(f"cannot write {path}: another marinesim{process} is writing it; wait for it to "
+                             "finish") from None
+    except OSError as error:
+        raise MarinesimError(f"cannot write {path}: {error.strerror or error}") from None
     try:
+        with contextlib.suppress(OSError):  # only for a second writer's message: a full disk is told by the output
+            lock.write_text(f"{os.getpid()}\n")
+        _clear_leftovers([path, *covers])
         yield
     finally:
         with contextlib.suppress(FileNotFoundError):
-            os.unlink(lock)
+            os.unlink(lock)  # while held: a writer waiting on this inode sees it unlinked and makes a new one
+        held.release()
+
+
+def _clear_leftovers(outputs: Sequence[Path]) -> None:
+    """Remove the temporary files of ``outputs`` and of their sidecars (only the lock's holder writes these
+    outputs: a temporary file there now was left by a writer that no longer runs)."""
+    for output in outputs:
+        for target in (output, sidecar_path(output)):
+            names = _temporaries(target)
+            for found in target.parent.iterdir():
+                if names.fullmatch(found.name):
+                    with contextlib.suppress(FileNotFoundError):
+                        os.unlink(found)
 
 
 def _lock_owner(lock: Path) -> int | None:
-    """The process that holds ``lock`` if it still runs, else None (a lock names its process from the start)."""
+    """The process named in ``lock`` (None if it names none yet)."""
     try:
-        pid = int(lock.read_text().strip())
+        return int(lock.read_text().strip())
     except (OSError, ValueError):
         return None
-    if pid <= 0:
-        return None
-    try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
-        return None
-    except PermissionError:
-        return pid
-    return pid

@@ -176,17 +176,20 @@ __all__ = ["DEFAULT", "RENDER_SIZE", "ROOT", "SEA_SCENARIO", "VESSEL_SCENARIO", 
 
 @pytest.fixture(scope="session", autouse=True)
 def wake_cache(tmp_path_factory):
-    """Wakes computed by the tests are cached in a temporary folder, never in the user's cache."""
+    """Wakes computed by the tests are cached in a temporary folder, and session logs are signed with a key in
+    another: never the user's cache or configuration (subprocesses inherit both)."""
     import os
 
-    folder = tmp_path_factory.mktemp("wake-cache")
-    previous = os.environ.get("MARINESIM_CACHE_DIR")
-    os.environ["MARINESIM_CACHE_DIR"] = str(folder)
-    yield folder
-    if previous is None:
-        del os.environ["MARINESIM_CACHE_DIR"]
-    else:
-        os.environ["MARINESIM_CACHE_DIR"] = previous
+    folders = {"MARINESIM_CACHE_DIR": tmp_path_factory.mktemp("wake-cache"),
+               "MARINESIM_CONFIG_DIR": tmp_path_factory.mktemp("config")}
+    previous = {name: os.environ.get(name) for name in folders}
+    os.environ.update({name: str(folder) for name, folder in folders.items()})
+    yield folders["MARINESIM_CACHE_DIR"]
+    for name, value in previous.items():
+        if value is None:
+            del os.environ[name]
+        else:
+            os.environ[name] = value
 
 
 def outcome(read: Callable[[Path], object], valid: type, path: Path) -> None:

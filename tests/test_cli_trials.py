@@ -94,7 +94,7 @@ def test_the_plot_is_never_written_over_an_input(tmp_path, capsys):
     before = ship.read_bytes()
     assert main(["trials", str(ship), "--plot", str(link), "--quiet"]) == 2
     error = capsys.readouterr().err.strip()
-    assert "is the command's own input" in error and "\n" not in error
+    assert "is one of this command's inputs" in error and "\n" not in error
     assert ship.read_bytes() == before
 
 

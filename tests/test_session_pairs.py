@@ -135,6 +135,30 @@ def test_a_lock_left_by_a_process_that_no_longer_runs_is_taken_over(tmp_path, sc
     assert (tmp_path / "m.csv").exists() and not (tmp_path / "m.csv.lock").exists()
 
 
+def test_every_output_gets_the_permissions_open_would_give(tmp_path, scenario):
+    """0666 less the umask, the table and its sidecar alike, from an export and from the live recorder (whose
+    rows once went in under a private temporary file's 0600: a table others could not read beside its sidecar).
+    The umask is set here, and the temporary files are made with it: no process-wide toggling while threads run."""
+    from marinesim.session.exercise import Exercise
+    from marinesim.session.recorder import Recorder
+    from marinesim.session.timeline import Simulation
+
+    previous = os.umask(0o027)
+    try:
+        short = with_run(load_scenario(scenario), 5.0)
+        export_motions(Assembly(short), tmp_path / "m.csv")
+        simulation = Simulation(short, wake=False)
+        recorder = Recorder(Exercise(simulation), tmp_path / "r.csv")
+        simulation.advance(2.0)
+        recorder.stop()
+        simulation.close()
+    finally:
+        os.umask(previous)
+    modes = {name: stat.S_IMODE((tmp_path / name).stat().st_mode) for name in ("m.csv", "m.csv.json", "r.csv",
+                                                                                "r.csv.json")}
+    assert modes == dict.fromkeys(modes, 0o640), modes
+
+
 def test_a_failed_rename_puts_back_what_was_there(tmp_path):
     """If the second rename of a pair fails (here: its temporary file vanished), the first file gets its
     previous contents back: the pair on disk is the old one, not a mix."""

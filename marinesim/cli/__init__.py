@@ -14,7 +14,7 @@ import sys
 from typing import NoReturn
 
 from marinesim import __version__
-from marinesim.atomic import signals_held
+from marinesim.atomic import inputs_kept, signals_held
 from marinesim.cli import assess, export, hull, operability, rao, render, replay, report, run, sea, trials, wake
 from marinesim.errors import MarinesimError
 
@@ -36,7 +36,8 @@ def main(argv: list[str] | None = None) -> int:
     previous = signal.signal(signal.SIGTERM, _terminate)
     try:
         _load(sys.modules[args.handler.__module__].NEEDS)
-        return args.handler(args)
+        with inputs_kept():  # no output is written over a file the command reads
+            return args.handler(args)
     except MarinesimError as error:
         print(f"marinesim {args.command}: error: {error}", file=sys.stderr)
         return 2

@@ -6,11 +6,11 @@ from __future__ import annotations
 import argparse
 import json
 import math
-import os
 import sys
 from pathlib import Path
 from typing import Any
 
+from marinesim.atomic import refuse_input, sidecar_path
 from marinesim.errors import ParameterError, require_finite
 from marinesim.progress import Bar, Reporter
 from marinesim.render import CAMERAS, CASCADES, HUDS
@@ -90,11 +90,10 @@ def render_options(args: argparse.Namespace):
     return RenderOptions(wake=not args.no_wake, cascades=args.cascades, hud=args.hud)
 
 
-def refuse_overwriting(output: Path | None, inputs: list[Path | None], option: str) -> None:
-    """Refuse (one line) an ``output`` that is one of the command's ``inputs`` (the same file, by any path or link):
-    writing it would lose the input."""
-    if output is None or not output.exists():
-        return
-    for given in inputs:
-        if given is not None and given.exists() and os.path.samefile(output, given):
-            raise ParameterError(f"{option} {output} is the command's own input {given}: it would be written over")
+def refuse_overwriting(output: Path | None, option: str, sidecar: bool = False) -> None:
+    """Refuse (one line naming ``option``) an ``output`` (with ``sidecar``, its sidecar too) that is one of the
+    files the command has read so far, by any path or link: checked once the inputs are read, before the work,
+    so that nothing is computed for an output that would be refused (:func:`marinesim.atomic.refuse_input`)."""
+    if output is not None and output.name:  # an empty path is refused where it is written
+        for path in (output, sidecar_path(output)) if sidecar else (output,):
+            refuse_input(path, f"{option} {path}")

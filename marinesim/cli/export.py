@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from marinesim.cli.common import bars
+from marinesim.cli.common import bars, refuse_overwriting
 
 
 NEEDS = ("marinesim.scenario", "marinesim.session.assembly", "marinesim.session.export")
@@ -34,6 +34,7 @@ def handle(args: argparse.Namespace) -> int:
     from marinesim.session.export import export_motions, outside_table_note
 
     scenario = with_run(load_scenario(args.scenario), args.duration, args.dt, args.seed)
+    refuse_overwriting(args.out, "--out", sidecar=True)
     with reporting(bars(args.quiet)):
         result = export_motions(Assembly(scenario), args.out, args.format)
     print(f"wrote {result.rows} rows x {len(result.columns)} columns to {result.table} "

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from marinesim.cli.common import add_view_options, bars, render_options
+from marinesim.cli.common import add_view_options, bars, refuse_overwriting, render_options
 from marinesim.errors import ParameterError
 
 
@@ -39,6 +39,9 @@ def handle(args: argparse.Namespace) -> int:
     if (args.out is None) == (args.screenshot is None):
         raise ParameterError("give either --out VIDEO.mp4 or --screenshot SHOT.png")
     scenario = load_scenario(args.scenario)
+    refuse_overwriting(args.screenshot, "--screenshot")
+    refuse_overwriting(args.out, "--out")
+    refuse_overwriting(None if args.out is None else args.out.with_suffix(".csv"), "--out", sidecar=True)
     if args.screenshot is not None:
         path = screenshot(scenario, args.screenshot, args.time, size, args.camera, args.solver, render_options(args))
         print(f"wrote the frame at {args.time:g} s ({size[0]}x{size[1]}, camera {args.camera}): {path}")

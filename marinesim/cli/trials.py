@@ -39,7 +39,6 @@ def handle(args: argparse.Namespace) -> int:
 
     if args.plot is not None and not args.plot.resolve().parent.is_dir():
         raise ParameterError(f"cannot write {args.plot}: folder {args.plot.resolve().parent} does not exist")
-    refuse_overwriting(args.plot, [args.scenario], "--plot")
     if _is_ship_file(args.scenario, tomllib):
         file, ship = load_ship(args.scenario)
         speed = file.approach_speed_kn * KNOT
@@ -47,11 +46,11 @@ def handle(args: argparse.Namespace) -> int:
         vessel = load_scenario(args.scenario).vessel
         if vessel is None:
             raise ScenarioError(f"{args.scenario}: no [vessel]: nothing to trial")
-        refuse_overwriting(args.plot, [vessel.rao_path, vessel.hull_path], "--plot")
         ship = vessel.ship
         if ship.kind != "ship":
             raise ParameterError(f"{args.scenario}: {ship.name}: {ship.describe()}; no manoeuvring model to trial")
         speed = vessel.speed_m_s if vessel.speed_m_s > 0.0 else ship.approach_speed
+    refuse_overwriting(args.plot, "--plot")
     with reporting(bars(args.quiet or args.json)):
         result = trials(ship, speed)
     if args.plot is not None:

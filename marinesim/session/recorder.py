@@ -12,12 +12,11 @@ from __future__ import annotations
 
 import math
 import os
-import tempfile
 from pathlib import Path
 
 import numpy as np
 
-from marinesim.atomic import check_replaceable
+from marinesim.atomic import check_replaceable, temporary
 from marinesim.errors import MarinesimError
 from marinesim.session.exercise import Exercise
 from marinesim.session.export import motions_sidecar, write_csv_block
@@ -33,9 +32,8 @@ class Recorder:
             raise MarinesimError("nothing to record: the scenario has no vessel")
         self.path.parent.mkdir(parents=True, exist_ok=True)
         check_replaceable(self.path)
-        fd, temp = tempfile.mkstemp(prefix=f".{self.path.stem}.", suffix=".rows", dir=self.path.parent)
-        self._temp = Path(temp)
-        self._handle = os.fdopen(fd, "w", encoding="utf-8", newline="")
+        self._temp = temporary(self.path, ".rows")
+        self._handle = self._temp.open("w", encoding="utf-8", newline="")
         self._dt = exercise.dt
         self._first = self._next = math.ceil(exercise.sim.time / self._dt - 1e-9)  # the next row's index
         self.rows = 0

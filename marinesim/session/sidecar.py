@@ -17,7 +17,8 @@ from typing import Callable
 import numpy as np
 
 from marinesim import __version__
-from marinesim.atomic import AtomicFile, commit_together, json_text, output_lock, signals_held, writing
+from marinesim.atomic import (AtomicFile, commit_together, json_text, output_lock, sidecar_path, signals_held,
+                              writing)
 from marinesim.sea.ocean import Components
 from marinesim.sea.summary import summary
 from marinesim.session.assembly import VARIANCE_FRACTION, Assembly
@@ -30,11 +31,6 @@ def sha256(path: Path) -> str:
         for chunk in iter(lambda: handle.read(1 << 20), b""):
             digest.update(chunk)
     return digest.hexdigest()
-
-
-def sidecar_path(table: Path) -> Path:
-    """Where the sidecar of ``table`` goes: its full name plus ``.json``."""
-    return table.with_name(table.name + ".json")
 
 
 def write_table(path: Path, write: Callable[[Path], None], describe: Callable[[], dict]) -> Path:

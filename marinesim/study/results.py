@@ -90,7 +90,7 @@ def write_study(out_dir: Path, data, summary: str, pictures: dict[str, bytes]) -
         raise MarinesimError(f"cannot write the study into {out_dir}: it is not a folder")
     out_dir.mkdir(parents=True, exist_ok=True)
     contents = {"operability.nc": _netcdf(data), "summary.csv": summary.encode()} | pictures
-    with output_lock(out_dir / "operability.nc"):
+    with output_lock(out_dir / "operability.nc", [out_dir / name for name in contents]):
         files = [AtomicFile(out_dir / name) for name in contents]
         with writing(*files):
             for file, payload in zip(files, contents.values()):
