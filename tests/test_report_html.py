@@ -21,6 +21,7 @@ from marinesim.scenario import load_scenario
 from marinesim.session.log import write_log
 from test_session_replay import SESSION, _live_session
 
+
 RED = (0xd0, 0x31, 0x2d)
 """The 'exceeded' badge's red (:data:`marinesim.report.plots.EXCEEDED`)."""
 

@@ -18,6 +18,7 @@ from marinesim.session.recorder import Recorder
 from marinesim.session.timeline import Simulation
 from test_session_exercise import CONDITIONAL
 
+
 SESSION = CONDITIONAL.format(threshold=0.17).replace("limit = 0.5", "limit = {limit}")
 """400 s of the vessel scenario: a bridge-acceleration criterion (120 s window; its values run from
 0.11 to 0.19 m/s^2) whose value above 0.17 fires a slow-down event, and a message at 200 s."""
@@ -153,7 +154,7 @@ def test_a_bad_session_log_is_refused_in_one_line(tmp_path, line, where, words):
             "scenario_sha256": sha256(scenario), "seed": 1, "duration_s": 400.0, "dt_s": 0.25}
     log = tmp_path / "bad.jsonl"
     log.write_text(json.dumps(head) + "\n" + line + "\n")
-    result = cli("replay", str(log), "--export", str(tmp_path / "x.csv"), "--quiet")
+    result = cli("replay", str(log), "--export", str(tmp_path / "x.csv"), "--unverified", "--quiet")
     lines = result.stderr.strip().splitlines()
     assert result.returncode == 2 and len(lines) == 1 and "Traceback" not in result.stderr, result.stderr
     assert str(log) in lines[0] and where in lines[0] and words in lines[0], lines[0]

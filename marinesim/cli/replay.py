@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from marinesim.cli.common import add_view_options, bars, render_options
+from marinesim.cli.common import add_view_options, bars, refuse_overwriting, render_options
 
 NEEDS = ("marinesim.scenario", "marinesim.session.replay", "marinesim.session.log")
 """The modules the command loads before it starts (Ctrl-C is held until they are in)."""
@@ -18,10 +18,14 @@ def add(commands: argparse._SubParsersAction) -> None:
                     "the same scenario, seed and live actions at the same times, with a time slider (LEFT/RIGHT "
                     "seek 30 s, HOME start, click the slider, SPACE pause, + / - pace). With --export, or "
                     "without a display, replay it headless to its end: with --export the motions are written as "
-                    "the session's recorder wrote them, to the same bytes.")
+                    "the session's recorder wrote them, to the same bytes. A log that is not verified (no sidecar, "
+                    "a sha256 or signature that does not match, no end entry, signed on another installation) "
+                    "is refused unless --unverified is given.")
     p.add_argument("log", type=Path, help="session log (.jsonl)")
     p.add_argument("--export", type=Path, help="write the session's motions (CSV, with its sidecar) and exit")
     p.add_argument("--headless", action="store_true", help="do not open a window even if there is a display")
+    p.add_argument("--unverified", action="store_true",
+                   help="replay a log that is not verified, said to be UNVERIFIED (default: refused)")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     add_view_options(p)
     p.set_defaults(handler=handle)
@@ -30,11 +34,17 @@ def add(commands: argparse._SubParsersAction) -> None:
 def handle(args: argparse.Namespace) -> int:
     from marinesim.cli.assess import table
     from marinesim.progress import reporting
+    from marinesim.errors import MarinesimError
     from marinesim.session.log import describe, read_log
     from marinesim.session.replay import replay_session, session_scenario
 
     session = read_log(args.log)
+    refuse_overwriting(args.export, "--export", sidecar=True)
+    check = session.verification
+    if not check.verified and not args.unverified:
+        raise MarinesimError(f"{args.log}: {check.summary()}; give --unverified to replay it anyway")
     print(f"session {args.log}: {describe(session)}")
+    print(f"session log {check.summary()}")
     if args.export is None and not args.headless:
         from marinesim.render.viewer import NoDisplay, Viewer
 
@@ -49,7 +59,7 @@ def handle(args: argparse.Namespace) -> int:
             viewer.run()
             return 0
     with reporting(bars(args.quiet)):
-        exercise = replay_session(args.log, args.export, log=print)
+        exercise = replay_session(session, args.export, log=print)
     if exercise.monitor is not None:
         print("\n".join(table(exercise.assessment())))
     if args.export is not None:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from marinesim.cli.common import bars
+from marinesim.cli.common import bars, refuse_overwriting
 
 NEEDS = ("marinesim.scenario", "marinesim.session.replay", "marinesim.report.debrief", "marinesim.report.html")
 """The modules the command loads before it starts (Ctrl-C is held until they are in)."""
@@ -17,7 +17,9 @@ def add(commands: argparse._SubParsersAction) -> None:
         description="Run a session log again (or a scenario's exercise, headless) and write the debrief as one "
                     "self-contained HTML file: the briefing and a verdict per objective, every criterion over "
                     "time with its limit, caution line and the events, exceedance statistics, the alarms with "
-                    "their acknowledgement delays, motion sickness (MSI, MSDV) and the conditions.")
+                    "their acknowledgement delays, motion sickness (MSI, MSDV) and the conditions. The debrief of a "
+                    "session log that is not verified (no sidecar, a sha256 or signature that does not match, no end "
+                    "entry, signed on another installation) carries an UNVERIFIED LOG banner saying why.")
     p.add_argument("source", type=Path, help="session log (.jsonl) or scenario (.toml)")
     p.add_argument("--out", type=Path, required=True, help="the report's HTML file")
     p.add_argument("--duration", type=float, help="a scenario's run length, s (default: the scenario's)")
@@ -42,17 +44,23 @@ def handle(args: argparse.Namespace) -> int:
         if is_log:
             if args.duration is not None or args.seed is not None:
                 raise ParameterError("--duration and --seed are the session's own: give them with a scenario")
-            watch = sickness_criteria(session_scenario(read_log(args.source), args.source))
-            exercise = replay_session(args.source, watch=watch, log=print)
+            session = read_log(args.source)
+            print(f"session log {session.verification.summary()}")
+            watch = sickness_criteria(session_scenario(session, args.source))
+            refuse_overwriting(args.out, "--out")
+            exercise = replay_session(session, watch=watch, log=print)
         else:
+            session = None
             scenario = with_run(load_scenario(args.source), args.duration, seed=args.seed)
+            refuse_overwriting(args.out, "--out")
             simulation = Simulation(scenario, wake=False)
             try:
                 exercise = Exercise(simulation, log=print, watch=sickness_criteria(scenario))
                 exercise.run()
             finally:
                 simulation.close()
-    out = write_report(debrief(exercise, args.source if is_log else None), args.out)
+    out = write_report(debrief(exercise, session), args.out)
     print(f"verdict: {exercise.assessment()['verdict']}")
-    print(f"wrote the after-action report: {out}")
+    marked = " (marked UNVERIFIED LOG)" if session is not None and not session.verification.verified else ""
+    print(f"wrote the after-action report: {out}{marked}")
     return 0

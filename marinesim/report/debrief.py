@@ -4,13 +4,13 @@
 dictionary :mod:`marinesim.report.html` lays out: the briefing and a verdict per objective, each
 criterion's running value at every evaluation, the events, alarms with their acknowledgements, the
 messages and actions, motion sickness (MSI, MSDV) at the vessel's points, the ship's track and handling
-(heading, speed, rudder, propeller), and the conditions.
+(heading, speed, rudder, propeller), and the conditions; from a session log, whether the log is verified
+(:class:`~marinesim.session.log.Verification`), for the report's header to say.
 """
 
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import numpy as np
 
@@ -21,6 +21,7 @@ from marinesim.criteria.sickness import MAX_WF_DT_S
 from marinesim.scenario import Scenario
 from marinesim.sea.seastate import SeaState
 from marinesim.session.exercise import Exercise
+from marinesim.session.log import SessionLog
 from marinesim.session.sidecar import sha256
 
 VERDICTS = {"ok": "met", "caution": "met with caution", "exceeded": "not met", "settling": "no value"}
@@ -37,7 +38,7 @@ def sickness_criteria(scenario: Scenario) -> list[Criterion]:
     return [Criterion(q, point=point) for point in vessel.points for q in quantities]
 
 
-def debrief(exercise: Exercise, log: Path | None = None) -> dict:
+def debrief(exercise: Exercise, log: SessionLog | None = None) -> dict:
     """The report's data from ``exercise`` (run with ``watch=sickness_criteria(...)``), its session ``log`` if any."""
     scenario = exercise.scenario
     result = exercise.assessment()
@@ -66,7 +67,9 @@ def debrief(exercise: Exercise, log: Path | None = None) -> dict:
         sickness = list(by_point.values())
     return {
         "title": scenario.name.replace("_", " "),
-        "source": str(log) if log is not None else str(scenario.path),
+        "source": str(log.path) if log is not None else str(scenario.path),
+        "log_check": None if log is None else {"verified": log.verification.verified,
+                                               "problems": [words for _, words in log.verification.problems]},
         "briefing": briefing,
         "verdict": result["verdict"],
         "conditions": _conditions(exercise, log),
@@ -134,7 +137,7 @@ def _order_words(key: str, value: object) -> str:
     return str(value)
 
 
-def _conditions(exercise: Exercise, log: Path | None) -> dict:
+def _conditions(exercise: Exercise, log: SessionLog | None) -> dict:
     scenario = exercise.scenario
     vessel = scenario.vessel
     seas = []
@@ -145,7 +148,8 @@ def _conditions(exercise: Exercise, log: Path | None) -> dict:
                      "spreading_s": getattr(getattr(system, "spreading", None), "s", None)})
     out = {"scenario": str(scenario.path), "scenario_sha256": sha256(scenario.path), "seed": scenario.run.seed,
            "duration_s": exercise.sim.time, "dt_s": scenario.run.dt_s,
-           "log": str(log) if log is not None else None, "log_sha256": sha256(log) if log is not None else None,
+           "log": str(log.path) if log is not None else None,
+           "log_sha256": log.verification.sha256 if log is not None else None,
            "marinesim": __version__, "sea": seas}
     if vessel is not None:
         out["vessel"] = {"rao": str(vessel.rao_path), "rao_sha256": sha256(vessel.rao_path),

@@ -5,6 +5,8 @@ objectives), from the plain dictionary :func:`marinesim.report.debrief.debrief` 
 the overall verdict, the briefing with a verdict per objective, each criterion over the run, exceedance
 statistics, the ship's track and handling (with a vessel), the timeline and the alarms with their
 acknowledgement delays, motion sickness, the log of events, messages and actions, and the conditions. A
+debrief of a session log says at the top whether the log is verified; one that is not gets a red
+"UNVERIFIED LOG" banner above everything else, saying why, and the page's title says so too. A
 part the data leave out (or give empty) is left out of the page. Every text from the data is HTML-escaped.
 The same data give the same bytes: no dates, and the PNGs carry no metadata (:mod:`marinesim.report.plots`).
 The one script counts the plots the browser decoded into ``body[data-plots-loaded]``, for a test to read the
@@ -74,6 +76,10 @@ figcaption{{font-size:13.5px;margin-top:5px;display:flex;gap:10px;align-items:ba
 .key.limit{{border-top:3px solid var(--exceeded)}} .key.caution{{border-top:3px dashed var(--caution)}}
 .key.value{{border-top:3px solid #1f4e8c}} .key.span{{height:12px;background:rgba(208,49,45,.16)}}
 .key.event{{border-top:2px dotted #3d4651}}
+.unverified{{background:var(--exceeded);color:#fff;padding:12px 18px;border-radius:6px;margin:0 0 16px}}
+.unverified strong{{display:block;font-size:24px;letter-spacing:.08em}}
+.unverified p{{margin:4px 0;max-width:none}} .unverified ul{{margin:4px 0 6px;padding-left:22px}}
+.logcheck{{margin:4px 0 0;max-width:none;font-size:13px;font-weight:bold;color:var(--ok)}}
 footer{{margin-top:36px;padding-top:8px;border-top:1px solid var(--rule);color:var(--muted);font-size:12px}}
 @page{{size:A4;margin:14mm 12mm}}
 @media print{{body{{font-size:10pt}} main{{max-width:none;padding:0}} h1{{font-size:20pt}} h2{{font-size:14pt;
@@ -105,9 +111,11 @@ def render_report(data: dict) -> str:
              page.ship_section(), page.alarms_section(), page.sickness_section(), page.log_section(),
              page.conditions_section()]
     title = _e(data.get("title") or "exercise")
+    check = data.get("log_check")
+    unverified = " (UNVERIFIED LOG)" if check and not check.get("verified") else ""
     return ("<!DOCTYPE html>\n<html lang='en'>\n<head>\n<meta charset='utf-8'>\n"
             "<meta name='viewport' content='width=device-width,initial-scale=1'>\n"
-            f"<title>Debrief: {title}</title>\n<style>{CSS}</style>\n</head>\n<body>\n<main>\n"
+            f"<title>Debrief{unverified}: {title}</title>\n<style>{CSS}</style>\n</head>\n<body>\n<main>\n"
             + "\n".join(part for part in parts if part)
             + f"\n<footer>After-action report written by marinesim {_e(_get(data, 'conditions', 'marinesim') or '')}"
             " from the data named above; the same run gives this same file.</footer>\n</main>\n"
@@ -162,11 +170,25 @@ class _Page:
             facts.append(self._fact("Objectives", f"{met} of {len(objectives)} met",
                                     _count([o.get("verdict") for o in objectives], "not met", "met with caution"),
                                     worst))
-        return ("<header class='top'>\n<div class='kicker'>After-action report · debrief</div>\n"
+        check = self.data.get("log_check")
+        return ("<header class='top'>\n" + (self._unverified(check) if check and not check.get("verified") else "")
+                + "<div class='kicker'>After-action report · debrief</div>\n"
                 f"<div class='titlerow'><h1>{_e(self.data.get('title') or 'exercise')}</h1>"
                 f"{_badge(verdict, extra='verdict')}</div>\n"
                 + (f"<p class='source'>{_e(source)}</p>\n" if source else "")
+                + ("<p class='logcheck'>Session log verified: it is the log the session wrote on this installation, "
+                   "unchanged and complete.</p>\n" if check and check.get("verified") else "")
                 + f"<dl class='facts'>{''.join(facts)}</dl>\n</header>")
+
+    @staticmethod
+    def _unverified(check: dict) -> str:
+        """The banner of a debrief made from a log that is not verified, with why."""
+        reasons = "".join(f"<li>{_e(problem)}</li>" for problem in check.get("problems") or [])
+        return ("<div class='unverified' role='alert'><strong>UNVERIFIED LOG</strong>\n"
+                "<p>This debrief was made from a session log that cannot be shown to be the one the session "
+                "wrote:</p>\n" + (f"<ul>{reasons}</ul>\n" if reasons else "")
+                + "<p>Its times, alarms, acknowledgement delays and verdicts may not be what happened: do not take it "
+                "as a record of the trainee's performance.</p></div>\n")
 
     @staticmethod
     def _fact(name: str, value: str, detail: str | list[str] = "", level: str = "") -> str:
@@ -374,7 +396,10 @@ class _Page:
         if c.get("scenario"):
             rows.append(("scenario", _file(c["scenario"], c.get("scenario_sha256"))))
         if c.get("log"):
-            rows.append(("session log", _file(c["log"], c.get("log_sha256"))))
+            check = self.data.get("log_check") or {}
+            status = ("" if "verified" not in check else "<br><b>verified</b>" if check["verified"]
+                      else "<br><span class='warn'>UNVERIFIED</span>")
+            rows.append(("session log", _file(c["log"], c.get("log_sha256")) + status))
         if c.get("seed") is not None:
             rows.append(("random seed", _e(str(c["seed"]))))
         if c.get("duration_s") is not None:

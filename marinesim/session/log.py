@@ -1,33 +1,79 @@
 """The session log: a scenario, its seed and everything that happened in one viewer session, as JSON lines.
 
-The first line says what ran (the scenario's path and sha256, the seed, the run's duration and dt);
-each line after it is one journal entry of the exercise (:attr:`Exercise.journal`) with its
-simulation time ``t`` (s): events, alarms, acknowledgements, the instructor's and the trainee's
-actions, key presses, pauses. The log is written with a sidecar (``<log>.json``: its sha256 and the
-hashes of the scenario and the vessel's files) as one unit, when the session ends. A replay
-(:mod:`marinesim.session.replay`) reads it back and applies the ``action`` entries again at their
-times; the other entries are what the session saw, kept for the debrief.
+The first line says what ran (the scenario's path and sha256, the seed, the run's duration and dt, and
+when the session ended); each line after it is one journal entry of the exercise
+(:attr:`Exercise.journal`) with its simulation time ``t`` (s): events, alarms, acknowledgements, the
+instructor's and the trainee's actions, key presses, pauses, and last the ``end``. No entry lies
+outside the session (0 to its end, plus one step): a log that says otherwise is refused. The log is
+written with a sidecar (``<log>.json``: its sha256, the hashes of the scenario and the vessel's files,
+and its signature) as one unit, when the session ends. A replay (:mod:`marinesim.session.replay`)
+reads it back and applies the ``action`` entries again at their times; the other entries are what
+the session saw, kept for the debrief.
+
+A debrief is evidence, so every reader gets the log's :class:`Verification`: verified only if the
+sidecar is there, its sha256 is the log's, the log ends with its ``end`` entry, and its signature
+checks: an HMAC-SHA256 of the log's bytes under this installation's key (:mod:`marinesim.session.signing`,
+made on first use, readable by its owner only). A sha256 alone can be computed again by whoever edits the
+log; the signature cannot be without the key. A log signed with a key this installation does not hold
+cannot be checked here and is said to be so, not called forged. The header names the scenario and the
+vessel's files by their sha256, so the signature covers them too: a replay refuses files changed since. The log's bytes hold no key:
+the same session gives the same log everywhere; its sidecar's signature is this installation's.
 """
 
 from __future__ import annotations
 
+import hashlib
+import hmac
 import json
+import logging
 import math
+import os
+import re
+import stat
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from marinesim import __version__
-from marinesim.errors import FileFormatError
+from marinesim.atomic import sidecar_path
+from marinesim.errors import FileFormatError, MarinesimError
+from marinesim.formats import check_file
 from marinesim.manoeuvring.actuators import TELEGRAPH
 from marinesim.scenario import Scenario
+from marinesim.scenario.model import MAX_DURATION_S
 from marinesim.session.exercise import ACTIONS, CHANGE_KEYS, MAX_MESSAGE, Exercise
 from marinesim.session.sidecar import sha256, write_table
+from marinesim.session.signing import installation_key, key_id, signature
 
 FORMAT = "marinesim session log"
 VERSION = 1
 MAX_LOG_BYTES = 64 << 20
 """The largest log read (bytes): a day of a busy session is well under 1 MB."""
+MAX_SIDECAR_BYTES = 1 << 20
+"""The largest sidecar read (bytes); a log's is under 2 kB."""
+
+logger = logging.getLogger("marinesim.session")
+
+
+@dataclass(frozen=True)
+class Verification:
+    """Whether a session log is whole and, byte for byte, the one a session on this installation wrote:
+    :attr:`problems` (a code, then words an instructor reads) says what shows otherwise, none if it is."""
+
+    sha256: str
+    """The sha256 of the log's bytes as read (hex)."""
+    problems: tuple[tuple[str, str], ...] = ()
+
+    @property
+    def verified(self) -> bool:
+        return not self.problems
+
+    def summary(self) -> str:
+        """One line: verified, or ``UNVERIFIED LOG:`` and why."""
+        if self.verified:
+            return ("verified: the log is the one the session wrote on this installation (its sha256 and its "
+                    "signature match) and it runs to the session's end")
+        return "UNVERIFIED LOG: " + "; ".join(words for _, words in self.problems)
 
 
 @dataclass(frozen=True)
@@ -36,11 +82,12 @@ class SessionLog:
 
     header: dict[str, Any]
     entries: list[dict[str, Any]]
-    path: Path | None = None
+    path: Path
+    verification: Verification
 
     def line_of(self, entry: dict[str, Any]) -> int | None:
         """The line of the log ``entry`` was read from (the header is line 1)."""
-        return next((i + 2 for i, e in enumerate(self.entries) if e is entry), None) if self.path else None
+        return next((i + 2 for i, e in enumerate(self.entries) if e is entry), None)
 
     @property
     def end_s(self) -> float:
@@ -52,35 +99,53 @@ class SessionLog:
         return [entry for entry in self.entries if entry["kind"] == "action"]
 
 
-def header(scenario: Scenario, duration_s: float) -> dict[str, Any]:
-    """The first line of a session's log: what ran."""
+def header(scenario: Scenario, duration_s: float, end_s: float) -> dict[str, Any]:
+    """The first line of a session's log: what ran (the scenario and the vessel's files, with their sha256:
+    signed with the log, so a replay of other physics is told), planned for ``duration_s`` and ended at
+    ``end_s`` (s)."""
     return {"format": FORMAT, "version": VERSION, "scenario": str(Path(scenario.path).resolve()),
             "scenario_sha256": sha256(scenario.path), "seed": scenario.run.seed, "duration_s": duration_s,
-            "dt_s": scenario.run.dt_s, "marinesim": __version__}
+            "dt_s": scenario.run.dt_s, "end_s": end_s, "marinesim": __version__,
+            "vessel_sha256": {key: sha256(path) for key, path in vessel_files(scenario).items()}}
+
+
+def vessel_files(scenario: Scenario) -> dict[str, Path]:
+    """The files the vessel of ``scenario`` is read from (its RAO table, its hull if any), by role."""
+    vessel = scenario.vessel
+    if vessel is None:
+        return {}
+    return {"rao": vessel.rao_path, **({"hull": vessel.hull_path} if vessel.hull_path else {})}
 
 
 def write_log(path: Path, exercise: Exercise) -> Path:
-    """Write ``exercise``'s journal as a session log at ``path`` with its sidecar, as one unit; returns ``path``."""
+    """Write ``exercise``'s journal as a session log at ``path`` with its sidecar, signed with this installation's
+    key, as one unit; returns ``path``. Without a key (one that cannot be made or read) the log is written
+    unsigned, with a warning: the session's record is kept, and its readers say it is unverified."""
     scenario = exercise.scenario
-    lines = [json.dumps(header(scenario, exercise.duration_s))]
+    lines = [json.dumps(header(scenario, exercise.duration_s, exercise.sim.time))]
     lines += [json.dumps(entry, allow_nan=False) for entry in exercise.journal]
+    data = ("\n".join(lines) + "\n").encode("utf-8")
+    try:
+        signed = {"signature": signature(installation_key(create=True), data)}
+    except MarinesimError as error:
+        logger.warning("marinesim: warning: %s; the session log is written unsigned", error)
+        signed = {}
 
     def describe() -> dict:
-        vessel = scenario.vessel
-        files = {"scenario": scenario.path}
-        if vessel is not None:
-            files |= {"rao": vessel.rao_path, **({"hull": vessel.hull_path} if vessel.hull_path else {})}
+        files = {"scenario": scenario.path} | vessel_files(scenario)
         return {"format": FORMAT, "entries": len(exercise.journal), "end_s": exercise.sim.time,
-                "files": {key: {"path": str(p), "sha256": sha256(p)} for key, p in files.items()}}
+                "files": {key: {"path": str(p), "sha256": sha256(p)} for key, p in files.items()}} | signed
 
     Path(path).parent.mkdir(parents=True, exist_ok=True)
-    write_table(Path(path), lambda temp: temp.write_text("\n".join(lines) + "\n", encoding="utf-8"), describe)
+    write_table(Path(path), lambda temp: temp.write_bytes(data), describe)
     return Path(path)
 
 
 def read_log(path: Path) -> SessionLog:
-    """Read and check a session log: each fault is reported as one line naming the file, line and key."""
+    """Read and check a session log (each fault is reported as one line naming the file, line and key) and
+    verify it (:attr:`SessionLog.verification`)."""
     path = Path(path)
+    check_file(path, "session log")
     try:
         size = path.stat().st_size
     except OSError as error:
@@ -88,7 +153,8 @@ def read_log(path: Path) -> SessionLog:
     if size > MAX_LOG_BYTES:
         raise FileFormatError(path, None, f"{size} bytes is more than a session log holds ({MAX_LOG_BYTES} at most)")
     try:
-        text = path.read_text(encoding="utf-8")
+        data = path.read_bytes()
+        text = data.decode("utf-8")
     except (OSError, UnicodeDecodeError) as error:
         raise FileFormatError(path, None, f"cannot read the session log as UTF-8 text ({error})") from None
     lines = text.splitlines()
@@ -110,18 +176,93 @@ def read_log(path: Path) -> SessionLog:
                       ("dt_s", float)):
         if not _is(head.get(key), kind):
             raise FileFormatError(path, 1, f"key {key!r}: expected {kind.__name__}, got {head.get(key)!r}")
+    hashes = head.get("vessel_sha256", {})
+    if not (isinstance(hashes, dict) and all(isinstance(v, str) for v in hashes.values())):
+        raise FileFormatError(path, 1, f"key 'vessel_sha256': expected a table of sha256 by file, got {hashes!r}")
+    end = _session_end(path, head)
+    limit = end + head["dt_s"]
     entries = records[1:]
     last = 0.0
     for number, entry in enumerate(entries, start=2):
         t = entry.get("t")
-        if not _is(t, float) or t < last:
-            raise FileFormatError(path, number, f"key 't': expected a time (s) at or after {last:g}, got {t!r}")
+        if not _is(t, float) or not last <= t <= limit:
+            raise FileFormatError(path, number, f"key 't': expected a time (s) from {last:g} (the entry before) to "
+                                                f"{end:g} (the session's end, line 1) plus one step, got {t!r}")
         last = t
         if not isinstance(entry.get("kind"), str):
             raise FileFormatError(path, number, f"key 'kind': expected a string, got {entry.get('kind')!r}")
         if entry["kind"] == "action":
             _check_action(path, number, entry)
-    return SessionLog(head, entries, path)
+    return SessionLog(head, entries, path, verify(path, data, entries))
+
+
+def _session_end(path: Path, head: dict) -> float:
+    """When the session of ``head`` (line 1 of ``path``) ended (s): its ``end_s``, or in a log that does not say
+    (written before logs did; unsigned, so unverified), the longest run a scenario allows: the viewer runs on past
+    the planned ``duration_s``. A run length no scenario allows is refused."""
+    duration, dt = head["duration_s"], head["dt_s"]
+    if not 0.0 < duration <= MAX_DURATION_S:
+        raise FileFormatError(path, 1, f"key 'duration_s': expected a run length in (0, {MAX_DURATION_S:g}] s, "
+                                       f"got {duration!r}")
+    if not 0.0 < dt <= duration:
+        raise FileFormatError(path, 1, f"key 'dt_s': expected a step in (0, duration_s] s, got {dt!r}")
+    end = head.get("end_s", MAX_DURATION_S)
+    if not _is(end, float) or not 0.0 <= end <= MAX_DURATION_S:
+        raise FileFormatError(path, 1, f"key 'end_s': expected the session's end in [0, {MAX_DURATION_S:g}] s, "
+                                       f"got {end!r}")
+    return end
+
+
+def verify(path: Path, data: bytes, entries: list[dict[str, Any]]) -> Verification:
+    """The :class:`Verification` of the log at ``path``, of bytes ``data`` and ``entries`` (read from them)."""
+    digest = hashlib.sha256(data).hexdigest()
+    problems = _sidecar_problems(path, data, digest)
+    if not entries or entries[-1]["kind"] != "end":
+        problems.append(("truncated", "the log is cut short: it has no end entry, so the end of the session may be "
+                                      "missing"))
+    return Verification(digest, tuple(problems))
+
+
+def _sidecar_problems(path: Path, data: bytes, digest: str) -> list[tuple[str, str]]:
+    """What the sidecar of the log ``path`` (bytes ``data``, sha256 ``digest``) shows against it: nothing if its
+    sha256 and this installation's signature match."""
+    side = sidecar_path(path)
+    try:
+        found = os.stat(side)
+        if not stat.S_ISREG(found.st_mode) or found.st_size > MAX_SIDECAR_BYTES:
+            return [("bad sidecar", f"its sidecar {side.name} is not a sidecar (not a file, or over "
+                                    f"{MAX_SIDECAR_BYTES} bytes)")]
+        meta = json.loads(side.read_bytes())
+    except FileNotFoundError:
+        return [("no sidecar", f"its sidecar {side.name} is missing, so nothing shows that the log is the one the "
+                               "session wrote")]
+    except (OSError, ValueError, RecursionError) as error:
+        reason = getattr(error, "strerror", None) or error
+        return [("bad sidecar", f"its sidecar {side.name} cannot be read ({reason})")]
+    if not isinstance(meta, dict):
+        return [("bad sidecar", f"its sidecar {side.name} is not a sidecar (not a JSON object)")]
+    if meta.get("data_sha256") != digest:
+        return [("hash mismatch", "the log was changed after the session wrote it: its sha256 is not the one its "
+                                  "sidecar gives")]
+    signed = meta.get("signature")
+    if signed is None:
+        return [("unsigned", "the log is not signed, so an edit made together with its sidecar could not be told")]
+    if not (isinstance(signed, dict) and isinstance(signed.get("key_id"), str)
+            and isinstance(signed.get("hmac_sha256"), str) and re.fullmatch(r"[0-9a-f]{16}", signed["key_id"])
+            and re.fullmatch(r"[0-9a-f]{64}", signed["hmac_sha256"])):
+        return [("bad sidecar", f"its sidecar {side.name} holds a signature marinesim does not write")]
+    try:
+        key = installation_key()
+    except MarinesimError as error:
+        return [("cannot check", f"its signature cannot be checked here: {error}")]
+    if key is None or signed["key_id"] != key_id(key):
+        return [("signed elsewhere", f"it was signed with a key this installation does not hold (key "
+                                     f"{signed['key_id']}: signed on another marinesim installation, or altered): "
+                                     "its signature cannot be checked here")]
+    if not hmac.compare_digest(signed["hmac_sha256"], signature(key, data)["hmac_sha256"]):
+        return [("signature mismatch", "the log and its sidecar were both changed after the session wrote them: the "
+                                       "log's signature does not match")]
+    return []
 
 
 def _check_action(path: Path, number: int, entry: dict) -> None:

@@ -18,7 +18,7 @@ from marinesim.errors import FileFormatError, MarinesimError, ScenarioError
 from marinesim.progress import task
 from marinesim.scenario import Scenario, load_scenario, with_run
 from marinesim.session.exercise import Exercise, quiet
-from marinesim.session.log import SessionLog, read_log
+from marinesim.session.log import SessionLog, read_log, vessel_files
 from marinesim.session.recorder import Recorder
 from marinesim.session.sidecar import sha256
 from marinesim.session.timeline import Simulation
@@ -38,7 +38,13 @@ def session_scenario(log: SessionLog, where: Path) -> Scenario:
     if sha256(path) != log.header["scenario_sha256"]:
         raise ScenarioError(f"{where}: the scenario {path} has changed since the session (its sha256 differs): "
                             "a replay would not be that session")
-    return with_run(load_scenario(path), log.header["duration_s"], seed=log.header["seed"])
+    scenario = with_run(load_scenario(path), log.header["duration_s"], seed=log.header["seed"])
+    logged = log.header.get("vessel_sha256", {})
+    for role, file in vessel_files(scenario).items():
+        if role in logged and sha256(file) != logged[role]:
+            raise ScenarioError(f"{where}: the vessel's {role} file {file} has changed since the session (its sha256 "
+                                "differs): a replay would not be that session")
+    return scenario
 
 
 class Replay:
@@ -69,13 +75,13 @@ class Replay:
         self.exercise.advance_to(t)
 
 
-def replay_session(path: Path, export: Path | None = None, watch: Sequence[Criterion] = (),
+def replay_session(source: Path | SessionLog, export: Path | None = None, watch: Sequence[Criterion] = (),
                    log: Callable[[str], None] = quiet) -> Exercise:
-    """Replay the session log at ``path`` headless to its end, its motions recorded to the CSV ``export``
-    as the session's recorder would have written them; returns the exercise run (``watch``: as
-    :class:`Exercise`)."""
-    session = read_log(path)
-    scenario = session_scenario(session, path)
+    """Replay the session log ``source`` (read, or its path) headless to its end, its motions recorded to the
+    CSV ``export`` as the session's recorder would have written them; returns the exercise run (``watch``: as
+    :class:`Exercise`). Whether the log is verified is the caller's to say (:attr:`SessionLog.verification`)."""
+    session = source if isinstance(source, SessionLog) else read_log(source)
+    scenario = session_scenario(session, session.path)
     simulation = Simulation(scenario, wake=False)
     try:
         exercise = Exercise(simulation, log=log, watch=watch)
