@@ -20,6 +20,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
+from marinesim.atomic import note_input
 from marinesim.errors import FileFormatError, ParameterError
 
 KINDS = {"rao": "RAO", "mesh": "mesh"}  # kind -> what the messages call a file of that kind
@@ -112,7 +113,8 @@ def detect(path: Path, kind: str, what: str | None = None) -> Format:
 def check_file(path: Path, what: str = "file") -> None:
     """Refuse (:class:`FileFormatError`, ``what`` naming the kind of file) a path that is not a regular file
     (after symbolic links): a missing file, a folder, a FIFO or device (reading it could block for ever), a
-    symbolic-link loop, a name with a NUL byte."""
+    symbolic-link loop, a name with a NUL byte. Every reader calls this first: the file is noted as one of
+    the running command's inputs, never to be written over (:func:`~marinesim.atomic.note_input`)."""
     try:
         mode = os.stat(path).st_mode
     except FileNotFoundError:
@@ -125,6 +127,7 @@ def check_file(path: Path, what: str = "file") -> None:
         raise FileFormatError(path, None, f"is a folder, not a {what}")
     if not stat.S_ISREG(mode):
         raise FileFormatError(path, None, f"not a regular file (a FIFO or device): give a {what}")
+    note_input(path)
 
 
 def reader(fmt: Format | str) -> Callable:
@@ -148,7 +151,7 @@ def _head(path: Path) -> bytes:
 
 
 register(Format("wamit", "rao", "WAMIT .4 motion RAOs (numeric output)", (".4",),
-                "marinesim.vessel.wamit:read_wamit", "marinesim.vessel.wamit:sniff", options=("ulen",)))
+                "marinesim.vessel.wamit:read_wamit", "marinesim.vessel.wamit:sniff", options=("ulen", "body")))
 register(Format("veres", "rao", "VERES/ShipX .re1 motion transfer functions", (".re1",),
                 "marinesim.vessel.veres:read_veres", "marinesim.vessel.veres:sniff"))
 register(Format("capytaine", "rao", "Capytaine NetCDF dataset (.nc) with hydrodynamic coefficients", (".nc",),
@@ -158,7 +161,7 @@ register(Format("native", "rao", "marinesim table (.csv, .txt, .rao; see marines
                 (".csv", ".txt", ".rao"), "marinesim.vessel.native:read_native", "marinesim.vessel.native:sniff"))
 register(Format("wamit-forces", "rao", "WAMIT .1, .3, .hst and .frc side by side: RAOs solved from forces and mass",
                 (".3", ".1", ".hst", ".frc"), "marinesim.vessel.wamit_forces:read_wamit_forces",
-                "marinesim.vessel.wamit_forces:sniff", options=("ulen", "rigid_body")))
+                "marinesim.vessel.wamit_forces:sniff", options=("ulen", "rigid_body", "body")))
 register(Format("wamit-out", "rao", "WAMIT report (.out, or any name: found by its banner, as other programs "
                 "write .out too): its motions, or RAOs solved from its forces and the scenario's mass", (),
                 "marinesim.vessel.wamit_out:read_wamit_out",

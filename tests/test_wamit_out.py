@@ -113,7 +113,7 @@ def test_the_weight_restoring_is_the_scenario_mass_at_its_centre_of_gravity(iea)
 
 
 @pytest.mark.parametrize("edit,words", [
-    (lambda t: t.replace("Water density:", "Water dens:"), "lacks Water density"),
+    (lambda t: t.replace("Gravity:", "Grav:"), "lacks Gravity"),
     (lambda t: t.replace("Wave period (sec) =  7.860000E+00", "Wave period (sec) =  -7.86"), "wave period > 0"),
     (lambda t: t.replace("RESPONSE AMPLITUDE OPERATORS", "RESPONSE AMPLITUDE OPERATORS\n 1 0.5 3", 1),
      "a row before its 'Wave Heading"),

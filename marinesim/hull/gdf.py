@@ -20,7 +20,7 @@ import numpy as np
 import trimesh
 
 from marinesim.errors import FileFormatError
-from marinesim.hull.wamit_pot import pot_beside
+from marinesim.hull.wamit_pot import placement
 from marinesim.tokens import Tokens, parse_float, parse_int, read_text
 
 
@@ -79,16 +79,20 @@ def read_gdf(path: str | Path) -> tuple[GdfHeader, np.ndarray, np.ndarray]:
 
 def read_gdf_mesh(path: Path) -> trimesh.Trimesh:
     """The whole (mirrored) surface of a ``.gdf`` file as a mesh, vertices and faces as :func:`read_gdf` gives them,
-    raised by ``ZBODY`` where the run's ``.pot`` beside places the body origin off the free surface
-    (:mod:`marinesim.hull.wamit_pot`; its horizontal offset and angle place the body in WAMIT's global frame
-    only, and the hull stays in its own)."""
+    moved up by ``ZBODY`` (down where it is negative) where the run's ``.pot`` places the body origin off the free
+    surface (:func:`marinesim.hull.wamit_pot.placement`: the ``.pot`` of the same name, or the one that names this
+    file among its bodies); its horizontal offset and angle place the body in WAMIT's global frame only, and the
+    hull stays in its own."""
     _, vertices, faces = read_gdf(path)
-    pot = pot_beside(path)
     mesh = trimesh.Trimesh(vertices, faces, process=False)
-    if pot is not None and pot.xbody is not None and pot.xbody[2] != 0.0:
-        mesh.vertices = mesh.vertices + [0.0, 0.0, pot.xbody[2]]
-        mesh.metadata["notes"] = (f"{path.with_suffix('.pot').name}: ZBODY {pot.xbody[2]:g} m, the body origin above "
-                                  "the free surface: the hull raised by it, so the free surface is its z = 0",)
+    placed = placement(path)
+    if placed is not None and placed[2].xbody[2] != 0.0:
+        pot, n, body = placed
+        z = body.xbody[2]
+        mesh.vertices = mesh.vertices + [0.0, 0.0, z]
+        side, moved = ("below", "lowered") if z < 0.0 else ("above", "raised")
+        mesh.metadata["notes"] = (f"{pot.name}: body {n}, ZBODY {z:g} m, the body origin {abs(z):g} m {side} the "
+                                  f"free surface: the hull {moved} by {abs(z):g} m, so the free surface is its z = 0",)
     return mesh
 
 

@@ -56,6 +56,20 @@ MAX_ORBIT_FACTOR = 3.0
 noted as implausible (couplings near a resonance reach about twice it: the HAMS cylinder's 2.1)."""
 MAX_ROTATION_SLOPES = 50.0
 """Largest rotation |RAO| as a multiple of the wave slope per amplitude, k = w^2 / g (rad/m)."""
+RESONANCE_DAMPING = 0.1
+"""Largest damping (fraction of critical) of a peak that may be a real resonance beyond the limits above (a moored
+spar's surge, a flap's roll): such a peak is described and left to the reader's caller to refuse or accept."""
+
+
+@dataclass(frozen=True)
+class Resonance:
+    """A lightly damped resonance peak of one DOF beyond a plausibility limit: ``text`` says what was found (the
+    peak, its period, its damping); ``refused``: beyond :data:`MAX_TRANSLATION_M_M` or :data:`MAX_ROTATION_RAD_M`
+    (refused unless accepted), else beyond :data:`MAX_ORBIT_FACTOR` (noted); ``dof`` its index in :data:`DOFS`."""
+
+    text: str
+    refused: bool
+    dof: int
 
 
 def long_wave_limit(omega: np.ndarray, beta: np.ndarray, g: float = G, depth: float = math.inf) -> np.ndarray:
@@ -104,6 +118,8 @@ class RaoTable:
     mirrored: bool = False
     depth: float = math.inf
     covered: tuple[tuple[float, float], ...] | None = None
+    resonances: tuple[Resonance, ...] = ()
+    draft: float | None = None              # the vessel's draft (m) as her file gives it; None if it gives none
 
     def __call__(self, omega: np.ndarray, beta: np.ndarray, speed: float = 0.0) -> np.ndarray:
         """Interpolated RAOs, shape (n, 6), at wave frequencies ``omega`` (rad/s, > 0) and
@@ -220,15 +236,18 @@ def refer_phases(values: np.ndarray, omega: np.ndarray, headings_deg: np.ndarray
 
 def make_table(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: np.ndarray, *,
                reference_point=(0.0, 0.0, 0.0), rho: float = 1025.0, g: float = G, source: str = "",
-               source_format: str = "", notes: tuple[str, ...] = (), depth: float = math.inf) -> RaoTable:
+               source_format: str = "", notes: tuple[str, ...] = (), depth: float = math.inf,
+               draft: float | None = None) -> RaoTable:
     """Validate and complete an RAO table already in the internal convention.
 
     ``values`` has shape (speeds, headings, frequencies, 6). Headings (rad) spanning exactly
     0..pi are completed by the port/starboard mirror (:data:`MIRROR_SIGN`); headings that leave a
     gap wider than :data:`MAX_HEADING_GAP` make a partial table (:attr:`RaoTable.covered`).
-    ``depth``: water depth (m, > 0; inf = deep). Raises :class:`ParameterError` on anything else.
+    ``depth``: water depth (m, > 0; inf = deep); ``draft``: the vessel's (m, > 0) if the file gives it. Raises
+    :class:`ParameterError` on anything else.
     """
     depth = require_positive("water depth", depth, allow_infinite=True)
+    draft = None if draft is None else require_positive("draft", draft)
     omega = np.asarray(omega, dtype=float)
     beta = np.asarray(beta, dtype=float)
     speed = np.atleast_1d(np.asarray(speed, dtype=float))
@@ -239,7 +258,7 @@ def make_table(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: n
     if not np.all(np.isfinite(values)):
         raise ParameterError("RAO values must be finite")
     _check_increasing("frequencies", omega, minimum=0.0)
-    _check_amplitudes(omega, beta, values, g)
+    resonances = _check_amplitudes(omega, beta, speed, values, g)
     _check_increasing("speeds", speed, minimum=None)
     if beta.size == 0 or not np.all(np.isfinite(beta)):
         raise ParameterError("RAO headings must be finite and at least one")
@@ -266,52 +285,112 @@ def make_table(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: n
         ends = np.flatnonzero(wide)                      # the gap after these headings is too wide to bridge
         starts = (ends + 1) % beta.size
         covered = tuple((float(beta[a]), float(beta[b])) for a, b in zip(starts, np.roll(ends, -1), strict=True))
-    notes = tuple(notes) + _implausible(omega, beta, speed, values, g, depth)
+    implausible, orbit_resonances = _implausible(omega, beta, speed, values, g, depth, {r.dof for r in resonances})
     return RaoTable(omega, beta, speed, values, tuple(float(v) for v in reference_point), float(rho),
-                    float(g), str(source), source_format, notes, mirrored, depth, covered)
+                    float(g), str(source), source_format, tuple(notes) + implausible, mirrored, depth, covered,
+                    resonances + orbit_resonances, draft)
+
+
+def _where(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, index: tuple) -> str:
+    """Speed, heading and period of ``index`` (speed, heading, frequency) in words."""
+    s, b, w = index
+    return f"{speed[s] / KNOT:.3g} kn, heading {math.degrees(beta[b]):g} deg, T {2 * math.pi / omega[w]:.3g} s"
+
+
+def resonance_damping(omega: np.ndarray, amplitude: np.ndarray, peak: int) -> float | None:
+    """Damping (fraction of critical) of the peak of ``amplitude`` (|H| at the frequencies ``omega``, rad/s) at
+    index ``peak``, from its half-power bandwidth ``(w2 - w1) / (2 wn)`` (``|H| = peak / sqrt 2`` at w1 and w2,
+    linear between the tabulated points; one side doubled where the table ends before the other); None unless
+    ``peak`` is an interior maximum with a half-power point. An upper bound where the peak is narrower than the
+    frequency step."""
+    if not 0 < peak < omega.size - 1 or amplitude[peak] < max(amplitude[peak - 1], amplitude[peak + 1]):
+        return None
+    half = amplitude[peak] / math.sqrt(2.0)
+    sides = []
+    for step in (-1, 1):
+        k = peak
+        while 0 <= k + step < omega.size and amplitude[k + step] > half:
+            k += step
+        if not 0 <= k + step < omega.size:
+            continue
+        f = (amplitude[k] - half) / (amplitude[k] - amplitude[k + step])
+        sides.append(abs(omega[k] + f * (omega[k + step] - omega[k]) - omega[peak]))
+    if not sides:
+        return None
+    return float(sum(sides) * 2.0 / len(sides) / (2.0 * omega[peak]))
+
+
+def _resonance_text(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: np.ndarray,
+                    index: tuple, j: int) -> str | None:
+    """The lightly damped resonance (:data:`RESONANCE_DAMPING`) of DOF ``j`` whose peak over frequency, at the
+    speed and heading of ``index``, is at ``index``'s frequency, in words; None where there is none."""
+    s, b, w = index
+    amplitude = np.abs(values[s, b, :, j])
+    while 0 < w < omega.size - 1 and max(amplitude[w - 1], amplitude[w + 1]) > amplitude[w]:
+        w += 1 if amplitude[w + 1] > amplitude[w - 1] else -1  # up to the peak
+    index = (s, b, w)
+    zeta = resonance_damping(omega, amplitude, w)
+    if zeta is None or zeta > RESONANCE_DAMPING:
+        return None
+    return (f"a resonance peak of {amplitude[w]:.3g} at T {2 * math.pi / omega[w]:.3g} s (heading "
+            f"{math.degrees(beta[b]):g} deg, {speed[s] / KNOT:.3g} kn) with about {100 * zeta:.2g} % of critical "
+            "damping or less (its half-power bandwidth between the tabulated frequencies)")
 
 
 def _implausible(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: np.ndarray, g: float,
-                 depth: float) -> tuple[str, ...]:
+                 depth: float, resonant: set[int]) -> tuple[tuple[str, ...], tuple[Resonance, ...]]:
     """Notes on surge and sway RAOs a floating body does not have (:data:`SURGE_SPEED_FACTOR`,
-    :data:`MAX_ORBIT_FACTOR`): each names where the largest is and what it was compared with."""
-    def where(index: tuple) -> str:
-        s, b, w = index
-        return f"{speed[s] / KNOT:.3g} kn, heading {math.degrees(beta[b]):g} deg, T {2 * math.pi / omega[w]:.3g} s"
-
-    notes = []
+    :data:`MAX_ORBIT_FACTOR`): each names where the largest is and what it was compared with; a surge or sway
+    beyond the orbit factor at a lightly damped resonance peak is a :class:`Resonance` instead, unless its DOF is
+    in ``resonant`` (already one beyond the amplitude limits)."""
+    notes, resonances = [], []
     k = k_from_omega(omega, depth, g)
     orbit = np.ones_like(k) if math.isinf(depth) else 1.0 / np.tanh(k * depth)
     for j, dof in ((0, "surge"), (1, "sway")):
         ratio = np.abs(values[..., j]) / orbit
         peak = np.unravel_index(int(np.argmax(ratio)), ratio.shape)
-        if ratio[peak] > MAX_ORBIT_FACTOR:
-            notes.append(f"implausible {dof} RAO: {abs(values[peak + (j,)]):.3g} m/m at {where(peak)}, "
-                         f"{ratio[peak]:.2g} times the wave orbit; check the file's units and reference point")
+        if ratio[peak] > MAX_ORBIT_FACTOR and j not in resonant:
+            found = f"{dof} RAO {abs(values[peak + (j,)]):.3g} m/m, {ratio[peak]:.2g} times the wave orbit"
+            resonance = _resonance_text(omega, beta, speed, values, peak, j)
+            if resonance is not None:
+                resonances.append(Resonance(f"{found}: {resonance}", refused=False, dof=j))
+            else:
+                notes.append(f"implausible {dof} RAO: {abs(values[peak + (j,)]):.3g} m/m at "
+                             f"{_where(omega, beta, speed, peak)}, {ratio[peak]:.2g} times the wave orbit; check the "
+                             "file's units and reference point")
     at_rest = np.flatnonzero(np.abs(speed) < 1e-9)
     if at_rest.size and speed.size > 1:
         surge = np.abs(values[..., 0])
         still = surge[at_rest].max()
         peak = np.unravel_index(int(np.argmax(surge)), surge.shape)
         if still > 0.0 and surge[peak] > SURGE_SPEED_FACTOR * still:
-            notes.append(f"implausible surge RAO at speed: {surge[peak]:.3g} m/m at {where(peak)}, "
-                         f"{surge[peak] / still:.2g} times the largest at 0 kn ({still:.3g} m/m); surge has no "
+            notes.append(f"implausible surge RAO at speed: {surge[peak]:.3g} m/m at "
+                         f"{_where(omega, beta, speed, peak)}, {surge[peak] / still:.2g} times the largest at 0 kn "
+                         f"({still:.3g} m/m); surge has no "
                          "restoring force to resonate with, so this is the source's (strip-theory surge at "
                          "speed is unreliable): treat surge at this speed with caution")
-    return tuple(notes)
+    return tuple(notes), tuple(resonances)
 
 
-def _check_amplitudes(omega: np.ndarray, beta: np.ndarray, values: np.ndarray, g: float) -> None:
-    """Refuse an |RAO| no floating body has (:data:`MAX_TRANSLATION_M_M`, :data:`MAX_ROTATION_RAD_M`)."""
+def _check_amplitudes(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: np.ndarray,
+                      g: float) -> tuple[Resonance, ...]:
+    """Refuse an |RAO| no floating body has (:data:`MAX_TRANSLATION_M_M`, :data:`MAX_ROTATION_RAD_M`), unless the
+    DOF's largest excess is a lightly damped resonance peak: that is returned, described, for the caller to refuse
+    or accept."""
     limit = np.full((omega.size, 6), MAX_TRANSLATION_M_M)
     limit[:, list(ROTATIONS)] = np.maximum(MAX_ROTATION_RAD_M, MAX_ROTATION_SLOPES * omega**2 / g)[:, None]
-    over = np.abs(values) > limit
-    if over.any():
-        s, b, w, j = np.argwhere(over)[0]
+    excess = np.abs(values) / limit
+    resonances = []
+    for j in np.flatnonzero((excess > 1.0).any(axis=(0, 1, 2))):
+        s, b, w = np.unravel_index(int(np.argmax(excess[..., j])), excess.shape[:3])
         unit = "rad/m" if j in ROTATIONS else "m/m"
-        raise ParameterError(f"RAO {DOFS[j]} amplitude {abs(values[s, b, w, j]):.3g} {unit} at {omega[w]:.4g} rad/s, "
-                             f"heading {math.degrees(beta[b]):g} deg is beyond any floating body's "
-                             f"(<= {limit[w, j]:.3g} {unit}): check the units")
+        found = (f"RAO {DOFS[j]} amplitude {abs(values[s, b, w, j]):.3g} {unit} at {omega[w]:.4g} rad/s, heading "
+                 f"{math.degrees(beta[b]):g} deg is beyond any floating body's (<= {limit[w, j]:.3g} {unit})")
+        resonance = _resonance_text(omega, beta, speed, values, (s, b, w), j)
+        if resonance is None:
+            raise ParameterError(f"{found}: check the units")
+        resonances.append(Resonance(f"{found}: {resonance}", refused=True, dof=int(j)))
+    return tuple(resonances)
 
 
 def _check_increasing(name: str, grid: np.ndarray, minimum: float | None) -> None:

@@ -119,6 +119,6 @@ def read_veres(path: str | Path) -> RaoTable:
              f"LCG {lcg:g} m, VCG {vcg:g} m; reference point (XMTN, 0, ZMTN)",)
     try:
         return make_table(np.array(freqs), np.radians(heads), np.array(speeds), values, reference_point=reference,
-                          rho=rho, g=g, source=str(path), source_format="veres", notes=notes)
+                          rho=rho, g=g, source=str(path), source_format="veres", notes=notes, draft=draught)
     except ParameterError as error:
         raise FileFormatError(path, None, str(error)) from None

@@ -12,7 +12,10 @@ rad/m = value / ULEN. ``ULEN`` and ``g`` come from the ``.gdf`` of the same name
 the ``.frc``. Lines with zero modulus carry a dummy phase (90 deg): only ``RE`` and ``IM`` are
 used. The reference point is the origin of WAMIT's body coordinates. A header line
 (``NUMHDR = 1`` in the ``.cfg``) is skipped; modes above 6 (generalised modes, other bodies)
-are ignored with a note: WAMIT solved them together, so the rigid-body RAOs are complete.
+are ignored with a note: WAMIT solved them together, so the rigid-body RAOs are complete. A run of several
+bodies (``NBODY > 1`` in the ``.pot`` of the same name) gives body n's motions as modes ``6 (n - 1) + 1 ..
+6 n``: the body is named by its number or its ``.gdf`` file (``marinesim rao --body``, ``[vessel] rao_body``),
+and placed by its own ``XBODY``.
 
 A ``.3`` file (exciting forces) has the same seven columns; its values (forces per
 ``rho g A ULEN^2``) are far beyond any motion RAO for a ship-sized body, which is how
@@ -45,22 +48,28 @@ MAX_FORCE_LIKE_ROTATION = MAX_ROTATION_RAD_M * ULEN_RANGE_M[1]
 """Largest rotation value a ``.4`` can hold (per A / ULEN): the largest rotation RAO times the largest ULEN."""
 
 
-def read_wamit(path: str | Path, *, ulen: float | None = None, period_kind: int | None = None) -> RaoTable:
-    """Read a WAMIT ``.4`` file; ``ulen`` and ``period_kind`` (IPEROUT) override the files beside it. HAMS's
-    WAMIT-format ``.4`` (motions over rho g, conjugated) is recognised and read as HAMS wrote it, with a note."""
+def read_wamit(path: str | Path, *, ulen: float | None = None, period_kind: int | None = None,
+               body: str | None = None) -> RaoTable:
+    """Read a WAMIT ``.4`` file; ``ulen`` and ``period_kind`` (IPEROUT) override the files beside it, ``body``
+    (number or ``.gdf`` name) picks one body of several. HAMS's WAMIT-format ``.4`` (motions over rho g,
+    conjugated) is recognised and read as HAMS wrote it, with a note."""
     path = Path(path)
     from marinesim.vessel.hydrostar import is_hams_output, read_hams_wamit  # it reads rows as this module does
 
     if is_hams_output(path):
+        if body is not None:
+            raise ParameterError(f"{path}: HAMS's .4 holds one body: a body ({body!r}) is for WAMIT runs of several")
         return read_hams_wamit(path)
-    settings = Settings.beside(path, ulen=ulen, period_kind=period_kind)
+    settings = Settings.beside(path, ulen=ulen, period_kind=period_kind, body=body)
     notes = list(settings.notes)
     rho = _frc_rho(path.with_suffix(".frc"))
     if rho is None:
         rho = RHO_SEAWATER
         notes.append(f"rho not found (no .frc beside the file): assumed {RHO_SEAWATER:g} kg/m^3")
 
-    periods, headings, values, row_notes = read_rows(path, header_lines=settings.header_lines)
+    periods, headings, values, row_notes = read_rows(path, header_lines=settings.header_lines,
+                                                     offset=settings.mode_offset)
+    settings.check_headings(path, headings)
     notes += row_notes
     biggest = np.abs(values).max(axis=(0, 1))
     if looks_like_forces(biggest):
@@ -166,13 +175,21 @@ class Settings:
 
     def __init__(self, g: float, ulen: float, period_kind: int, period_key: str, header_lines: int,
                  depth: float, notes: tuple[str, ...], xbody: tuple[float, float, float, float] = (0.0,) * 4,
-                 placed_by: str = "") -> None:
+                 placed_by: str = "", body: int = 1, bodies: int = 1, headings: tuple[float, ...] | None = None
+                 ) -> None:
         self.g, self.ulen, self.period_kind, self.period_key = g, ulen, period_kind, period_key
         self.header_lines, self.depth, self.notes = header_lines, depth, notes
         self.xbody, self.placed_by = xbody, placed_by
+        self.body, self.bodies, self.headings = body, bodies, headings
+
+    @property
+    def mode_offset(self) -> int:
+        """How many modes come before the body's surge in the files (6 per body before it)."""
+        return RIGID_MODES * (self.body - 1)
 
     @classmethod
-    def beside(cls, path: Path, *, ulen: float | None = None, period_kind: int | None = None) -> "Settings":
+    def beside(cls, path: Path, *, ulen: float | None = None, period_kind: int | None = None,
+               body: str | None = None) -> "Settings":
         notes: list[str] = []
         g, gdf_ulen = _gdf_settings(path.with_suffix(".gdf"))
         if ulen is None:
@@ -198,8 +215,28 @@ class Settings:
             if header not in (0, 1):
                 raise FileFormatError(cfg, number, f"NUMHDR must be 0 or 1, got {header}")
         pot = pot_beside(path) or Pot(math.nan)
-        return cls(g, ulen, period_kind, key, header, pot.depth, tuple(notes), pot.xbody or (0.0,) * 4,
-                   path.with_suffix(".pot").name)
+        number = _body_number(path, pot, body)
+        xbody = pot.bodies[number - 1].xbody if pot.bodies else (0.0,) * 4
+        if len(pot.bodies) > 1 or number > 1:
+            first = RIGID_MODES * (number - 1) + 1
+            name = f" ({pot.bodies[number - 1].gdf})" if pot.bodies else ""
+            notes.append(f"body {number}{name} of a run of {len(pot.bodies) or 'several'} bodies: its modes "
+                         f"{first}-{first + RIGID_MODES - 1}")
+        return cls(g, ulen, period_kind, key, header, pot.depth, tuple(notes), xbody, path.with_suffix(".pot").name,
+                   number, max(len(pot.bodies), number), pot.headings)
+
+    def check_headings(self, path: Path, headings: np.ndarray) -> None:
+        """Refuse headings (deg) of ``path`` other than those the run's ``.pot`` lists (where it lists them)."""
+        if not self.headings:
+            return
+        listed = np.array(self.headings, float)
+        missing = [h for h in listed if not np.isclose(headings, h, atol=1e-6).any()]
+        extra = [h for h in headings if not np.isclose(listed, h, atol=1e-6).any()]
+        if missing or extra:
+            words = ([f"lacks heading(s) {', '.join(f'{h:g}' for h in missing)} deg"] if missing else []) + (
+                [f"has heading(s) {', '.join(f'{h:g}' for h in extra)} deg"] if extra else [])
+            raise FileFormatError(path, None, " and ".join(words) + f" against the {len(listed)} the run's "
+                                  f"{self.placed_by} lists (a cut file, or a file of another run?)")
 
     def omega(self, per: np.ndarray, path: Path) -> np.ndarray:
         """The wave frequencies (rad/s) of the PER column ``per`` (> 0) of ``path``."""
@@ -222,6 +259,32 @@ class Settings:
             depth = "not given (no .pot): infinite assumed"
         return (f"PER column read as {PERIOD_KINDS[self.period_kind]} ({self.period_key}), ULEN = {self.ulen:g} m, "
                 f"g = {self.g:g} m/s^2, water depth {depth}")
+
+
+def _body_number(path: Path, pot: Pot, body: str | None) -> int:
+    """The number (from 1) of the body ``body`` names (its number, or its ``.gdf`` file's name with or without
+    ``.gdf``) among the ``.pot``'s; 1 for a run of one body. A run of several needs it named."""
+    names = [b.gdf for b in pot.bodies]
+    listed = ", ".join(f"{n} ({name})" for n, name in enumerate(names, 1))
+    if body is None:
+        if len(names) > 1:
+            raise FileFormatError(path, None, f"a run of {len(names)} bodies, {listed} in "
+                                              f"{path.with_suffix('.pot').name}: name the one whose motions to read "
+                                              "(marinesim rao --body, [vessel] rao_body)")
+        return 1
+    if body.strip().isdigit():
+        number = int(body)
+        if number >= 1 and (not names or number <= len(names)):
+            return number
+    else:
+        number = next((n for n, b in enumerate(pot.bodies, 1) if b.names(Path(body).with_suffix(".gdf"))), 0)
+        if number:
+            return number
+    if len(names) == 1:
+        raise FileFormatError(path, None, f"the run holds one body: a body ({body!r}) is for runs of several")
+    known = f"the bodies of {path.with_suffix('.pot').name} are {listed}" if names else (
+        f"without {path.with_suffix('.pot').name} beside the file, a body is named by its number 1, 2, ...")
+    raise FileFormatError(path, None, f"no body {body!r}: {known}")
 
 
 def output_period_kind(cfg: Path, keys: dict[str, tuple[int, str]] | None = None) -> tuple[int, str]:

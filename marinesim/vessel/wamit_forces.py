@@ -14,15 +14,21 @@ translation-translation, mixed and rotation-rotation pairs; ``C = Cbar rho g L^(
 with ``rho`` from the ``.frc``, ``g`` and ``ULEN`` from the ``.gdf``. ``M``, ``B_ext``, ``C_ext`` come from
 the ``.frc`` (:mod:`marinesim.vessel.wamit_frc`) in SI, or from the scenario
 (:class:`~marinesim.vessel.body.RigidBody`): its mass replaces the ``.frc``'s (which is then not needed), its
-external matrices add to the ``.frc``'s. The PER column, header lines and modes above 6
-are read as for the ``.4`` (:mod:`marinesim.vessel.wamit`); the zero- and infinite-frequency lines of the
-``.1`` (PER <= 0) carry no RAO and are skipped.
+external matrices add to the ``.frc``'s. The PER column, header lines, modes above 6 and the body of a run of
+several are read as for the ``.4`` (:mod:`marinesim.vessel.wamit`); the zero- and infinite-frequency lines of the
+``.1`` (PER <= 0) carry no RAO and are skipped. Body n of several takes its mass from the scenario and is solved
+in its own modes with the other bodies held still (WAMIT's ``.4`` of the run has the coupled motions).
+
+The files are checked against each other, as WAMIT writes them for one run: the ``.1`` and ``.3`` have the same
+periods, the ``.3`` the headings the ``.pot`` lists, the ``.1`` the diagonal pair of each of the body's modes at
+every period, and the ``.hst`` every pair of the body's modes (zeros included); a file that does not fit is
+refused, naming it and what it lacks.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
@@ -37,10 +43,10 @@ from marinesim.vessel.wamit_rows import RIGID_MODES, ignored_modes_note, read_ro
 from marinesim.vessel.wamit_frc import ForceControl, read_frc
 
 SET = (".1", ".3", ".hst", ".frc")
+"""The files of a WAMIT force set, in the order they are read."""
 NO_FRC = ForceControl(form=0, rho=None, vcg=0.0, cog=None, radii=None, mass=None, damping=np.zeros((6, 6)),
                       stiffness=np.zeros((6, 6)))
 """What a force set without a ``.frc`` has (its mass then comes from the scenario)."""
-"""The files of a WAMIT force set, in the order they are read."""
 ROTATION = np.arange(RIGID_MODES) >= 3
 PAIR_POWER = ROTATION[:, None].astype(int) + ROTATION[None, :].astype(int)
 """0, 1, 2: how many of the mode pair (i, j) are rotations; WAMIT's length exponents build on it."""
@@ -70,12 +76,14 @@ class ForceSet:
     notes: tuple[str, ...]
 
 
-def read_wamit_forces(path: str | Path, *, ulen: float | None = None, rigid_body: RigidBody | None = None) -> RaoTable:
+def read_wamit_forces(path: str | Path, *, ulen: float | None = None, rigid_body: RigidBody | None = None,
+                      body: str | None = None) -> RaoTable:
     """RAOs (internal convention) solved from the WAMIT ``.1``, ``.3``, ``.hst`` and ``.frc`` named like ``path``;
-    ``rigid_body`` (the scenario's) gives the mass instead of the ``.frc`` and adds its external matrices."""
+    ``rigid_body`` (the scenario's) gives the mass instead of the ``.frc`` and adds its external matrices; ``body``
+    (number or ``.gdf`` name) picks one body of several."""
     path = Path(path)
     rigid_body = rigid_body or RigidBody()
-    fs = read_force_set(path, ulen=ulen, rigid_body=rigid_body)
+    fs = read_force_set(path, ulen=ulen, rigid_body=rigid_body, body=body)
     notes = list(fs.notes)
     stiffness = fs.stiffness + fs.frc.stiffness + rigid_body.stiffness()
     if rigid_body.mass_kg is not None:
@@ -92,16 +100,20 @@ def read_wamit_forces(path: str | Path, *, ulen: float | None = None, rigid_body
                  f"{path.with_suffix('.hst').name} with {source}" + _external(fs.frc))
     if rigid_body.given:
         notes.append(rigid_body.describe())
+    if fs.settings.bodies > 1:
+        notes.append(f"body {fs.settings.body} solved alone, the other bodies held still (their masses are not "
+                     "read): the run's .4 has the motions of the bodies coupled")
     if path.with_suffix(".4").is_file():
         notes.append(f"{path.with_suffix('.4').name} beside holds WAMIT's own RAOs of this set")
     return table_from(path, fs.omega[order], fs.headings_deg, motions[:, order], rho=fs.rho, settings=fs.settings,
                       notes=tuple(notes) + (fs.settings.describe(),), source_format="wamit-forces")
 
 
-def read_force_set(path: str | Path, *, ulen: float | None = None, rigid_body: RigidBody | None = None) -> ForceSet:
-    """The ``.1``, ``.3``, ``.hst`` and ``.frc`` named like ``path``, WAMIT's normalisation undone (module docstring).
-    With the scenario's mass (``rigid_body``) the ``.frc`` is optional: it then gives only rho and the external
-    matrices."""
+def read_force_set(path: str | Path, *, ulen: float | None = None, rigid_body: RigidBody | None = None,
+                   body: str | None = None) -> ForceSet:
+    """The ``.1``, ``.3``, ``.hst`` and ``.frc`` named like ``path``, checked against each other and WAMIT's
+    normalisation undone (module docstring); ``body`` picks one body of several. With the scenario's mass
+    (``rigid_body``) the ``.frc`` is optional: it then gives only rho and the external matrices."""
     path = Path(path)
     given = rigid_body is not None and rigid_body.mass_kg is not None
     files = {suffix: path.with_suffix(suffix) for suffix in SET}
@@ -111,17 +123,28 @@ def read_force_set(path: str | Path, *, ulen: float | None = None, rigid_body: R
     if missing:
         raise FileFormatError(path, None, "RAOs from WAMIT forces need " + ", ".join(f.name for f in files.values())
                               + " side by side; missing: " + ", ".join(missing))
-    settings = Settings.beside(files[".3"], ulen=ulen)
+    settings = Settings.beside(files[".3"], ulen=ulen, body=body)
+    if settings.bodies > 1 and not given:
+        raise FileFormatError(path, None, f"body {settings.body} of a run of several: its mass is not read from "
+                                          f"{files['.frc'].name} (a run's .frc holds one body); give mass_kg, cog_m "
+                                          "and radii_of_gyration_m in the scenario's [vessel], or read the run's .4")
     notes = list(settings.notes)
-    frc = read_frc(files[".frc"], frc_form(path.with_suffix(".cfg"))) if ".frc" in files else NO_FRC
+    if settings.bodies > 1 and ".frc" in files:  # not this body's mass, centre of gravity or external matrices
+        frc = replace(NO_FRC, form=-1, rho=_rho_of(files[".frc"], frc_form(path.with_suffix(".cfg"))))
+        notes.append(f"{files['.frc'].name} read for rho only: body {settings.body}'s mass, centre of gravity and "
+                     "external matrices are the scenario's")
+    else:
+        frc = read_frc(files[".frc"], frc_form(path.with_suffix(".cfg"))) if ".frc" in files else NO_FRC
     rho = frc.rho if frc.rho is not None else RHO_SEAWATER
     if ".frc" not in files:
         notes.append(f"no {path.with_suffix('.frc').name}: rho {RHO_SEAWATER:g} kg/m^3 assumed for WAMIT's "
                      "normalisation (it scales the hydrodynamic terms against the scenario's mass)")
-    per_1, added, damping, coefficient_notes = read_coefficients(files[".1"], settings.header_lines)
-    stiffness, stiffness_notes = read_hydrostatics(files[".hst"], settings.header_lines)
+    offset = settings.mode_offset
+    per_1, added, damping, coefficient_notes = read_coefficients(files[".1"], settings.header_lines, offset)
+    stiffness, stiffness_notes = read_hydrostatics(files[".hst"], settings.header_lines, offset)
     periods, headings, forces, force_notes = read_rows(files[".3"], header_lines=settings.header_lines,
-                                                       what="force mode")
+                                                       what="force mode", offset=offset)
+    settings.check_headings(files[".3"], headings)
     notes += coefficient_notes + stiffness_notes + force_notes
     at = _match_periods(files[".3"], periods, files[".1"], per_1)
     omega = settings.omega(periods, files[".3"])
@@ -143,10 +166,12 @@ def dimensional(rho: float, g: float, ulen: float, omega: np.ndarray, added: np.
             stiffness * rho * g * ulen ** (2 + PAIR_POWER), forces * rho * g * ulen ** np.where(ROTATION, 3, 2))
 
 
-def read_coefficients(path: Path, header_lines: int = 0) -> tuple[np.ndarray, np.ndarray, np.ndarray, list[str]]:
-    """The ``.1`` file: positive PER values (file order), nondimensional added mass and damping, both
-    (periods, 6, 6), and notes. Lines ``PER I J Abar Bbar``; pairs not listed are zero (WAMIT omits them);
-    PER <= 0 (the zero and infinite frequency limits, ``PER I J Abar``) are skipped."""
+def read_coefficients(path: Path, header_lines: int = 0, offset: int = 0) -> tuple[
+        np.ndarray, np.ndarray, np.ndarray, list[str]]:
+    """The ``.1`` file: positive PER values (file order), nondimensional added mass and damping of the modes
+    ``offset + 1 .. offset + 6``, both (periods, 6, 6), and notes. Lines ``PER I J Abar Bbar``; pairs not listed
+    are zero (WAMIT omits them), but each mode's diagonal pair is there at every period; PER <= 0 (the zero and
+    infinite frequency limits, ``PER I J Abar``) are skipped."""
     periods: list[float] = []
     at: dict[float, int] = {}
     values: list[np.ndarray] = []
@@ -166,9 +191,10 @@ def read_coefficients(path: Path, header_lines: int = 0) -> tuple[np.ndarray, np
                                                                          (4, "Bbar (damping)")))
         if min(i, j) < 1:
             raise FileFormatError(path, number, f"modes I, J must be >= 1, got {i} {j}")
-        if max(i, j) > RIGID_MODES:
-            ignored.add(max(i, j))
+        if not (offset < i <= offset + RIGID_MODES and offset < j <= offset + RIGID_MODES):
+            ignored.update(m for m in (i, j) if not offset < m <= offset + RIGID_MODES)
             continue
+        i, j = i - offset, j - offset
         if per not in at:
             if periods and (len(periods) >= 2 and (per - periods[-1]) * (periods[-1] - periods[-2]) < 0):
                 raise FileFormatError(path, number, f"PER {parts[0]} breaks the order of the periods (must be "
@@ -179,19 +205,27 @@ def read_coefficients(path: Path, header_lines: int = 0) -> tuple[np.ndarray, np
         elif at[per] != len(periods) - 1:
             raise FileFormatError(path, number, f"PER {parts[0]} appears again after other periods")
         if (at[per], i, j) in seen:
-            raise FileFormatError(path, number, f"I J = {i} {j} given twice for PER {parts[0]}")
+            raise FileFormatError(path, number, f"I J = {i + offset} {j + offset} given twice for PER {parts[0]}")
         seen.add((at[per], i, j))
         values[at[per]][:, i - 1, j - 1] = (a, b)
     if not periods:
         raise FileFormatError(path, None, "no lines PER I J Abar Bbar with PER > 0 (only zero or infinite "
                                           "frequencies, or an empty file)")
+    for k, per in enumerate(periods):
+        missing = [m + offset for m in range(1, RIGID_MODES + 1) if (k, m, m) not in seen]
+        if missing:
+            raise FileFormatError(path, None, f"PER {per:g} has no added mass and damping of mode(s) "
+                                              f"{', '.join(map(str, missing))} (no line I = J): a cut file, or a run "
+                                              "with those modes fixed (IMODE = 0)? Free bodies are solved here: read "
+                                              "that run's .4")
     table = np.array(values)
-    notes = [ignored_modes_note(path, ignored)] if ignored else []
+    notes = [ignored_modes_note(path, ignored, offset)] if ignored else []
     return np.array(periods), table[:, 0], table[:, 1], notes
 
 
-def read_hydrostatics(path: Path, header_lines: int = 0) -> tuple[np.ndarray, list[str]]:
-    """The ``.hst`` file: nondimensional hydrostatic stiffness (6, 6) from lines ``I J Cbar``, and notes."""
+def read_hydrostatics(path: Path, header_lines: int = 0, offset: int = 0) -> tuple[np.ndarray, list[str]]:
+    """The ``.hst`` file: nondimensional hydrostatic stiffness (6, 6) of the modes ``offset + 1 .. offset + 6`` from
+    lines ``I J Cbar``, and notes. WAMIT writes every pair of modes, zeros included: a pair missing is refused."""
     stiffness = np.zeros((RIGID_MODES, RIGID_MODES))
     seen: set[tuple[int, int]] = set()
     ignored: set[int] = set()
@@ -202,22 +236,42 @@ def read_hydrostatics(path: Path, header_lines: int = 0) -> tuple[np.ndarray, li
         value = parse_float(path, number, parts[2], "Cbar (hydrostatic stiffness)")
         if min(i, j) < 1:
             raise FileFormatError(path, number, f"modes I, J must be >= 1, got {i} {j}")
-        if max(i, j) > RIGID_MODES:
-            ignored.add(max(i, j))
+        if not (offset < i <= offset + RIGID_MODES and offset < j <= offset + RIGID_MODES):
+            ignored.update(m for m in (i, j) if not offset < m <= offset + RIGID_MODES)
             continue
         if (i, j) in seen:
             raise FileFormatError(path, number, f"I J = {i} {j} given twice")
         seen.add((i, j))
-        stiffness[i - 1, j - 1] = value
+        stiffness[i - offset - 1, j - offset - 1] = value
     if not seen:
         raise FileFormatError(path, None, "no lines I J Cbar")
-    return stiffness, [ignored_modes_note(path, ignored)] if ignored else []
+    modes = range(offset + 1, offset + RIGID_MODES + 1)
+    missing = [(i, j) for i in modes for j in modes if (i, j) not in seen]
+    if missing:
+        rows = sorted({i for i, _ in missing if all((i, j) in missing for j in modes)})
+        whole = f" (no rows of mode(s) {', '.join(map(str, rows))})" if rows else ""
+        raise FileFormatError(path, None, f"{len(missing)} of the {RIGID_MODES ** 2} pairs I J of modes "
+                                          f"{offset + 1}-{offset + RIGID_MODES} missing, first {missing[0][0]} "
+                                          f"{missing[0][1]}{whole}: WAMIT writes every pair, zeros included (a cut "
+                                          "file?)")
+    return stiffness, [ignored_modes_note(path, ignored, offset)] if ignored else []
 
 
 def mass_matrix(frc_path: Path, frc: ForceControl, rho: float) -> tuple[np.ndarray, list[str]]:
-    """The body's 6 x 6 mass matrix (SI, about the body origin) and notes. Form 2 gives it; form 1 makes it
-    from the displaced mass ``rho V`` and centre of buoyancy of the ``.gdf`` beside, ``VCG`` and the radii of
-    gyration (:mod:`marinesim.vessel.wamit_frc`)."""
+    """The body's 6 x 6 mass matrix (SI, about the body origin) and notes (:func:`run_mass`); refused unless its
+    mass and inertia are positive (the RAOs are solved with it)."""
+    mass, notes = run_mass(frc_path, frc, rho)
+    diagonal = np.diag(mass)
+    if not np.all(np.isfinite(mass)) or np.any(diagonal <= 0.0):
+        raise FileFormatError(frc_path, None, "the mass matrix must have positive mass and inertia on its "
+                                              f"diagonal, got {', '.join(f'{v:.4g}' for v in diagonal)}")
+    return mass, notes
+
+
+def run_mass(frc_path: Path, frc: ForceControl, rho: float) -> tuple[np.ndarray, list[str]]:
+    """The 6 x 6 mass matrix of the ``.frc`` (SI, about the body origin; zero radii of gyration give zero inertia)
+    and notes. Form 2 gives it; form 1 makes it from the displaced mass ``rho V`` and centre of buoyancy of the
+    ``.gdf`` beside, ``VCG`` and the radii of gyration (:mod:`marinesim.vessel.wamit_frc`)."""
     if frc.form == 2:
         if frc.mass is None:
             raise FileFormatError(frc_path, None, "IMASS = 0: the .frc gives no mass matrix, and the RAOs need "
@@ -239,10 +293,6 @@ def mass_matrix(frc_path: Path, frc: ForceControl, rho: float) -> tuple[np.ndarr
                  f"{gdf.name} ({hydro.volume_m3:.6g} m^3), centre of gravity ({xb:.4g}, {yb:.4g}, {frc.vcg:.4g}) m, "
                  f"rho {rho:g} kg/m^3 assumed (the RAOs do not depend on it); no external damping or stiffness "
                  "in this form"]
-    diagonal = np.diag(mass)
-    if not np.all(np.isfinite(mass)) or np.any(diagonal <= 0.0):
-        raise FileFormatError(frc_path, None, "the mass matrix must have positive mass and inertia on its "
-                                              f"diagonal, got {', '.join(f'{v:.4g}' for v in diagonal)}")
     return mass, notes
 
 
@@ -282,24 +332,32 @@ def _run_gravity(path: Path, fs: ForceSet) -> tuple[np.ndarray | None, str]:
     gravity (the ``.frc``'s own mass where it gives one, which a free body's equals), or None with a note where
     no ``.frc`` says where that centre was; and the note saying what replaced them."""
     frc_path = path.with_suffix(".frc")
-    if not frc_path.is_file():
+    if not frc_path.is_file() or fs.frc.form == -1:
         return None, (f"the gravity terms of {path.with_suffix('.hst').name} are kept as WAMIT computed them: without "
                       f"{frc_path.name} the centre of gravity of its run is unknown, so the scenario's cog_m sets the "
                       "mass matrix only")
     if fs.frc.mass is not None or fs.frc.form == 1:
-        run_mass, _ = mass_matrix(frc_path, fs.frc, fs.rho)
+        mass, _ = run_mass(frc_path, fs.frc, fs.rho)  # its weight only: zero radii of gyration are no matter
     elif not any(fs.frc.cog):
-        run_mass = np.zeros((6, 6))
+        mass = np.zeros((6, 6))
     else:
         return None, (f"the gravity terms of {path.with_suffix('.hst').name} are kept as WAMIT computed them: "
                       f"{frc_path.name} gives its centre of gravity but no mass (IMASS = 0)")
-    return gravity_stiffness(run_mass, fs.settings.g), (
+    return gravity_stiffness(mass, fs.settings.g), (
         f"the gravity terms of {path.with_suffix('.hst').name} (WAMIT's, for the centre of gravity in "
         f"{frc_path.name}) replaced by the scenario's mass at its cog_m")
 
 
+def _rho_of(frc_path: Path, form: int | None) -> float | None:
+    """RHO of the ``.frc`` at ``frc_path`` where it reads as one (None in form 1, or in a layout not read here)."""
+    try:
+        return read_frc(frc_path, form).rho
+    except FileFormatError:
+        return None
+
+
 def _match_periods(path_3: Path, periods: np.ndarray, path_1: Path, per_1: np.ndarray) -> np.ndarray:
-    """Index into the ``.1`` periods of each ``.3`` period; a period the ``.1`` lacks is refused."""
+    """Index into the ``.1`` periods of each ``.3`` period; a period either file lacks is refused."""
     at = np.empty(periods.size, dtype=int)
     for k, per in enumerate(periods):
         close = np.flatnonzero(np.isclose(per_1, per, rtol=1e-6, atol=0.0))
@@ -307,6 +365,11 @@ def _match_periods(path_3: Path, periods: np.ndarray, path_1: Path, per_1: np.nd
             raise FileFormatError(path_3, None, f"PER {per:g} has no added mass and damping in {path_1.name} "
                                                 "(the files are of different runs?)")
         at[k] = close[0]
+    lacking = [per for per in per_1 if not np.isclose(periods, per, rtol=1e-6, atol=0.0).any()]
+    if lacking:
+        raise FileFormatError(path_3, None, f"{len(lacking)} of the {per_1.size} periods of {path_1.name} missing "
+                              f"(PER {', '.join(f'{p:g}' for p in lacking[:4])}{', ...' if len(lacking) > 4 else ''}"
+                              f"): it has {periods.size}; a cut file, or a file of another run?")
     return at
 
 

@@ -13,7 +13,8 @@ RAOs are solved from the report's forces with the scenario's mass
 (:class:`~marinesim.vessel.body.RigidBody`). WAMIT's restoring coefficients hold the gravity of a mass
 ``rho V`` at the report's centre of gravity; the scenario's mass at its own centre replaces it
 (:func:`~marinesim.vessel.body.gravity_stiffness`). Modes above 6 (other bodies, generalised modes) are
-left out with a note; the zero- and infinite-period blocks carry no RAO.
+left out with a note; the zero- and infinite-period blocks carry no RAO. WAMIT 7.2 prints no water density:
+its default, 1025 kg/m^3 (:data:`~marinesim.constants.RHO_SEAWATER`), is taken then, with a note.
 """
 
 from __future__ import annotations
@@ -24,6 +25,7 @@ from pathlib import Path
 
 import numpy as np
 
+from marinesim.constants import RHO_SEAWATER
 from marinesim.errors import FileFormatError
 from marinesim.tokens import parse_float, parse_int, read_text
 from marinesim.vessel.body import RigidBody, gravity_stiffness, rigid_body_mass
@@ -58,7 +60,8 @@ class Report:
     """What a WAMIT report holds, as read (nondimensional, file order): ``periods`` (s), ``headings``
     (deg), ``added``/``damping`` (periods, 6, 6), ``forces`` and ``motions`` (headings, periods, 6) complex
     (``motions`` None without them), ``restoring`` (6, 6), header values (``g``, ``ulen``, ``depth``,
-    ``rho``, ``volume``, ``cog``), ``bodies`` and ``ignored`` (modes above 6)."""
+    ``rho``, ``volume``, ``cog``; ``printed``: the header keys the report itself gives), ``bodies`` and
+    ``ignored`` (modes above 6)."""
 
     def __init__(self, path: Path) -> None:
         self.path = path
@@ -72,6 +75,7 @@ class Report:
         self.ignored: set[int] = set()
         self.run_periods: list[float] = []
         self.xbody: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.0)
+        self.printed: set[str] = set()
 
 
 def read_wamit_out(path: str | Path, *, ulen: float | None = None, rigid_body: RigidBody | None = None) -> RaoTable:
@@ -87,6 +91,9 @@ def read_wamit_out(path: str | Path, *, ulen: float | None = None, rigid_body: R
     omega = 2.0 * math.pi / periods
     headings = _headings(report)
     notes = [f"{path.name}: WAMIT report, {periods.size} periods, {headings.size} headings"]
+    if "rho" not in report.printed:
+        notes.append(f"the report prints no water density (WAMIT 7.2 does not): WAMIT's default {RHO_SEAWATER:g} "
+                     "kg/m^3 assumed (it scales the forces against the scenario's mass)")
     if report.ignored:
         notes.append(ignored_modes_note(path, report.ignored))
     missing = [p for p in report.run_periods if p > 0 and not np.isclose(periods, p, rtol=1e-4).any()]
@@ -266,6 +273,8 @@ def _data_line(report: Report, number: int, words: list[str], section: str, peri
 
 def _check(report: Report) -> None:
     """The header values are there and every period has its rows."""
+    report.printed = set(report.header)
+    report.header.setdefault("rho", RHO_SEAWATER)
     missing = [key for key, name in HEADER_KEYS.items() if name not in report.header]
     if missing:
         raise FileFormatError(report.path, None, f"the report's header lacks {', '.join(k[:-1] for k in missing)}")

@@ -16,11 +16,12 @@ COLUMNS = "PER BETA I MOD PHA RE IM"
 RIGID_MODES = 6
 
 
-def read_rows(path: Path, *, header_lines: int = 0, what: str = "mode") -> tuple[
+def read_rows(path: Path, *, header_lines: int = 0, what: str = "mode", offset: int = 0) -> tuple[
         np.ndarray, np.ndarray, np.ndarray, list[str]]:
     """Periods (file order, monotonic), headings (deg, increasing), values (heading, period, 6) and notes
     of a seven-column WAMIT file (``.4`` or ``.3``); ``header_lines`` (NUMHDR) first lines are skipped, as
-    is a first line that is text."""
+    is a first line that is text. The six modes read are ``offset + 1 .. offset + 6`` (one body of several:
+    ``offset = 6 (n - 1)`` for body n)."""
     periods: list[float] = []
     headings: list[float] = []
     cells: dict[tuple[int, int], dict[int, complex]] = {}
@@ -70,14 +71,15 @@ def read_rows(path: Path, *, header_lines: int = 0, what: str = "mode") -> tuple
                 raise FileFormatError(path, number, f"BETA {parts[1]} breaks the order of the headings "
                                                     "(must increase)")
             headings.append(beta)
-        if dof > RIGID_MODES:
+        if not offset < dof <= offset + RIGID_MODES:
             ignored.add(dof)
             continue
+        dof -= offset
         h = headings.index(beta)
         cell = cells.setdefault((p, h), {})
         first_line.setdefault((p, h), number)
         if dof in cell:
-            raise FileFormatError(path, number, f"mode {dof} given twice for PER {parts[0]}, BETA {parts[1]}")
+            raise FileFormatError(path, number, f"mode {dof + offset} given twice for PER {parts[0]}, BETA {parts[1]}")
         cell[dof] = complex(re, im)
     if not periods:
         raise FileFormatError(path, None, f"no data lines ({COLUMNS})")
@@ -86,23 +88,23 @@ def read_rows(path: Path, *, header_lines: int = 0, what: str = "mode") -> tuple
         for h in range(len(headings)):
             cell = cells.get((p, h))
             if cell is None:
-                raise FileFormatError(path, None, f"no lines of modes 1-6 for PER {periods[p]:g}, "
-                                                  f"BETA {headings[h]:g}")
-            missing = [m for m in range(1, RIGID_MODES + 1) if m not in cell]
+                raise FileFormatError(path, None, f"no lines of modes {offset + 1}-{offset + RIGID_MODES} for "
+                                                  f"PER {periods[p]:g}, BETA {headings[h]:g}")
+            missing = [m + offset for m in range(1, RIGID_MODES + 1) if m not in cell]
             if missing:
                 raise FileFormatError(path, first_line[(p, h)], f"modes {missing} missing for "
                                                                 f"PER {periods[p]:g}, BETA {headings[h]:g}")
             values[h, p] = [cell[m] for m in range(1, RIGID_MODES + 1)]
     if ignored:
-        notes.append(ignored_modes_note(path, ignored))
+        notes.append(ignored_modes_note(path, ignored, offset))
     return np.array(periods), np.array(headings), values, notes
 
 
-def ignored_modes_note(path: Path, modes: set[int]) -> str:
-    """The note for modes above 6 read and left out of ``path``."""
+def ignored_modes_note(path: Path, modes: set[int], offset: int = 0) -> str:
+    """The note for the modes read and left out of ``path``: all but ``offset + 1 .. offset + 6``."""
     listed = ", ".join(str(m) for m in sorted(modes)[:6]) + (", ..." if len(modes) > 6 else "")
-    return (f"{path.name}: modes {listed} (generalised modes or further bodies) ignored; "
-            "marinesim models the rigid-body modes 1-6 of one body")
+    return (f"{path.name}: modes {listed} (generalised modes or other bodies) ignored; marinesim models the "
+            f"rigid-body modes {offset + 1}-{offset + RIGID_MODES} of one body")
 
 
 def _is_number(text: str) -> bool:
