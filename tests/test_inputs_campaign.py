@@ -6,8 +6,9 @@ same ones.
 Each case is classified: clean (exit 0 with valid outputs, or exit 2/130/143 with exactly one line on
 stderr; a process killed by the signal before Python could handle it, with nothing on stderr, counts as
 clean too), traceback (a traceback, or an exit that is neither of those: several lines, another status),
-hang (no exit within :data:`HANG_S`), or data lost (an output that was there changed, a table whose sidecar
-names other bytes, a leftover ``.part`` or ``.lock`` file, a wrong result). The table is printed (``pytest
+hang (no exit within :data:`HANG_S`), silent (exit 0 where the input had to be refused or noted, or a wrong
+number with no word), or data lost (an output that was there changed, a table whose sidecar names other
+bytes, a leftover ``.part`` or ``.lock`` file, an input written over). The table is printed (``pytest
 -s``) and written as markdown to ``$MARINESIM_CAMPAIGN_REPORT`` when that is set.
 """
 
@@ -39,9 +40,13 @@ VOLATILE = {"seconds", "seconds_computing", "cached"}  # what a wake's JSON may 
 WORKERS = 3
 PER_CATEGORY = 6
 """Cases run per category: a seeded choice among those built (the fuzz tests try many more in one process)."""
-COLUMNS = ("clean", "traceback", "hang", "data lost")
+COLUMNS = ("clean", "traceback", "hang", "silent", "data lost")
 HOSTILE = ["nan", "inf", "-inf", "1e308", "-1e308", "0", "-1", "x", "", "99999999999", "1e-300", "[", "\""]
-ENV = dict(os.environ, PYTHONPATH=str(ROOT))
+
+
+def environment() -> dict[str, str]:
+    """The processes' environment: this one's as the tests set it (their cache and configuration folders)."""
+    return dict(os.environ, PYTHONPATH=str(ROOT))
 
 
 @dataclass(frozen=True)
@@ -57,7 +62,7 @@ def cli(args: list[str], cwd: Path, env: dict[str, str] | None = None) -> subpro
     """``python -m marinesim *args`` in ``cwd``; None if it did not end within :data:`HANG_S`."""
     try:
         return subprocess.run([sys.executable, "-m", "marinesim", *args], cwd=cwd, capture_output=True, text=True,
-                              env=env or ENV, timeout=HANG_S, stdin=subprocess.DEVNULL)
+                              env=env or environment(), timeout=HANG_S, stdin=subprocess.DEVNULL)
     except subprocess.TimeoutExpired:
         return None
 
@@ -293,7 +298,7 @@ def signal_cases() -> list[Case]:
                 (folder / "m.csv").write_bytes(OLD_TABLE)
                 (folder / "m.csv.json").write_bytes(OLD_SIDECAR)
                 process = subprocess.Popen([sys.executable, "-m", "marinesim", "export", str(scenario), "--out",
-                                            "m.csv", "--quiet"], cwd=folder, env=ENV, stdout=subprocess.PIPE,
+                                            "m.csv", "--quiet"], cwd=folder, env=environment(), stdout=subprocess.PIPE,
                                            stderr=subprocess.PIPE, stdin=subprocess.DEVNULL, text=True)
                 start = time.monotonic()
                 delay = float(label.split()[1]) if label.startswith("at ") else 0.0
@@ -330,8 +335,9 @@ def writer_cases() -> list[Case]:
                        "--seed"]
             processes = []
             for seed in ("1", "2"):
-                processes.append(subprocess.Popen([*command, seed], cwd=folder, env=ENV, stdout=subprocess.PIPE,
-                                                  stderr=subprocess.PIPE, stdin=subprocess.DEVNULL, text=True))
+                processes.append(subprocess.Popen([*command, seed], cwd=folder, env=environment(),
+                                                  stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                                  stdin=subprocess.DEVNULL, text=True))
                 time.sleep(delay)
             results = []
             for process in processes:
@@ -359,7 +365,7 @@ WAKE = ["wake", str(ROOT / "hulls" / "wigley.stl"), "--speed-kn", "10", "--nx", 
 def cache_cases(folder: Path) -> list[Case]:
     """A wake computed once into a cache; each case damages a copy of the entry and asks again."""
     cache = folder / "cache"
-    result = cli(WAKE, folder, dict(ENV, MARINESIM_CACHE_DIR=str(cache)))
+    result = cli(WAKE, folder, dict(environment(), MARINESIM_CACHE_DIR=str(cache)))
     assert result is not None and result.returncode == 0, result and result.stderr
     reference = json.loads(result.stdout)
     entry = next(cache.rglob("*.npz"))
@@ -396,7 +402,7 @@ def cache_cases(folder: Path) -> list[Case]:
             own = case_folder / "cache"
             shutil.copytree(cache, own)
             damage(how, own / entry.relative_to(cache), random.Random(f"cache-{how}-{case_folder.name}"))
-            answer = cli(WAKE, case_folder, dict(ENV, MARINESIM_CACHE_DIR=str(own)))
+            answer = cli(WAKE, case_folder, dict(environment(), MARINESIM_CACHE_DIR=str(own)))
 
             def same_wake() -> str:
                 if answer is None or answer.returncode != 0:
@@ -462,6 +468,330 @@ def output_cases() -> list[Case]:
     return cases
 
 
+def refusal(result: subprocess.CompletedProcess | None, folder: Path, before: dict[str, bytes]) -> tuple[str, str]:
+    """Classify a case that must be refused: exit 0 is silent; a file of ``before`` changed, or one more file in
+    ``folder`` (a temporary one, an output) is data lost."""
+    def changed() -> str:
+        after = snapshot(folder)
+        lost = sorted(name for name, data in before.items() if after.get(name) != data)
+        new = sorted(set(after) - set(before))
+        return "; ".join(f"{what}: {', '.join(names)}" for what, names in (("changed", lost), ("left", new)) if names)
+    outcome, detail = verdict(result, changed)
+    if outcome == "clean" and result.returncode == 0:
+        return "silent", "exit 0: accepted without a word"
+    return outcome, detail
+
+
+def snapshot(folder: Path) -> dict[str, bytes]:
+    """Every regular file under ``folder`` (not through links) and its bytes."""
+    return {str(p.relative_to(folder)): p.read_bytes() for p in sorted(folder.rglob("*"))
+            if p.is_file() and not p.is_symlink()}
+
+
+def tanker_scenario(folder: Path) -> Path:
+    """The WAMIT tanker set copied into ``folder``/tanker and a short scenario ``s.toml`` naming it."""
+    from test_inputs_overwrite import SCENARIO
+
+    shutil.copytree(ROOT / "rao" / "tanker", folder / "tanker")
+    path = folder / "s.toml"
+    path.write_text(SCENARIO.format(duration=4.0))
+    return path
+
+
+def session_log(folder: Path) -> Path:
+    """A real session log of :func:`tanker_scenario`: 20 s, the instructor's message at 10 s, the end; signed with
+    the tests' key, with its sidecar."""
+    from marinesim.scenario import load_scenario
+    from marinesim.session.exercise import Exercise
+    from marinesim.session.log import write_log
+    from marinesim.session.timeline import Simulation
+
+    folder.mkdir()
+    simulation = Simulation(load_scenario(tanker_scenario(folder)), wake=False)
+    try:
+        exercise = Exercise(simulation)
+        exercise.advance(10.0)
+        exercise.act("message", text="stand by the crane")
+        exercise.advance(10.0)
+        exercise.note("end")
+    finally:
+        simulation.close()
+    return write_log(folder / "l.jsonl", exercise)
+
+
+SELF_OVERWRITES = [
+    ["export", "s.toml", "--out", "s.toml", "--quiet"],
+    ["export", "s.toml", "--out", "tanker/tanker.1", "--quiet"],
+    ["export", "s.toml", "--out", "tanker/tanker.frc", "--quiet"],
+    ["export", "s.toml", "--out", "hard.toml", "--quiet"],
+    ["rao", "tanker/tanker.1", "--write", "tanker/tanker.3"],
+    ["rao", "tanker/tanker.1", "--plot", "tanker/tanker.hst"],
+    ["rao", "s175.re1", "--plot", "s175.re1"],
+    ["wake", "box.stl", "--speed-kn", "8", "--out", "box.stl", "--quiet"],
+    ["wake", "box.stl", "--speed-kn", "8", "--plot", "box.stl", "--quiet"],
+    ["report", "s.toml", "--out", "s.toml", "--quiet"],
+    ["report", "l.jsonl", "--out", "l.jsonl", "--quiet"],
+    ["replay", "l.jsonl", "--export", "l.jsonl", "--quiet"],
+    ["replay", "l.jsonl", "--export", "l.jsonl.json", "--quiet"],
+]
+"""Outputs given onto the command's own inputs (``hard.toml`` is a hard link to the scenario): each once
+written over its input with exit 0."""
+
+
+def self_overwrite_cases(sources: Path) -> list[Case]:
+    log = session_log(sources / "log")
+    cases = []
+    for args in SELF_OVERWRITES:
+        def run(folder: Path, args: list[str] = args) -> tuple[str, str]:
+            shutil.copytree(log.parent, folder, dirs_exist_ok=True)
+            os.link(folder / "s.toml", folder / "hard.toml")
+            shutil.copy(ROOT / "rao" / "s175" / "input.re1", folder / "s175.re1")
+            shutil.copy(ROOT / "hulls" / "box_barge.stl", folder / "box.stl")
+            before = snapshot(folder)
+            return refusal(cli(args, folder), folder, before)
+        cases.append(Case("self-overwrite", " ".join(args), run))
+    return cases
+
+
+def forge(log: Path, how: str) -> None:
+    """Edit the session log ``log`` (and its sidecar) as someone covering a trainee's record would."""
+    sidecar = log.with_name(log.name + ".json")
+    lines = log.read_text().splitlines()
+    head, entries = json.loads(lines[0]), [json.loads(line) for line in lines[1:]]
+    if how == "an entry's time moved":
+        entries[0]["t"] = round(entries[0]["t"] + 0.5, 3)
+    elif how == "the seed changed":
+        head["seed"] += 1
+    elif how == "its end cut off":
+        entries = entries[:-1]
+    elif how == "an entry at t = 1e308":
+        entries[0]["t"] = 1e308
+    elif how == "its sidecar deleted":
+        sidecar.unlink()
+        return
+    elif how == "moved and re-hashed":
+        entries[0]["t"] = round(entries[0]["t"] + 0.5, 3)
+    log.write_text("".join(json.dumps(e) + "\n" for e in [head, *entries]))
+    if how == "moved and re-hashed":
+        meta = json.loads(sidecar.read_text())
+        meta["data_sha256"] = hashlib.sha256(log.read_bytes()).hexdigest()
+        sidecar.write_text(json.dumps(meta, indent=2) + "\n")
+
+
+FORGERIES = ("an entry's time moved", "the seed changed", "its end cut off", "an entry at t = 1e308",
+             "its sidecar deleted", "moved and re-hashed")
+
+
+def forged_log_cases(sources: Path) -> list[Case]:
+    """A real session log edited; ``replay --export`` must refuse it, ``report`` must refuse it or write the
+    debrief marked UNVERIFIED LOG (a debrief of it that looks like any other is silent)."""
+    log = session_log(sources / "forged")
+    cases = []
+    for how in FORGERIES:
+        for command in ("replay", "report"):
+            def run(folder: Path, how: str = how, command: str = command) -> tuple[str, str]:
+                shutil.copytree(log.parent, folder, dirs_exist_ok=True)
+                forge(folder / "l.jsonl", how)
+                before = snapshot(folder)
+                if command == "replay":
+                    return refusal(cli(["replay", "l.jsonl", "--export", "m.csv", "--quiet"], folder), folder, before)
+                result = cli(["report", "l.jsonl", "--out", "r.html", "--quiet"], folder)
+                if result is not None and result.returncode == 0:
+                    marked = "UNVERIFIED LOG" in (folder / "r.html").read_text(encoding="utf-8")
+                    return ("clean", "marked UNVERIFIED LOG") if marked else ("silent", "a debrief with no mark")
+                return refusal(result, folder, before)
+            cases.append(Case("forged and truncated logs", f"{command}: {how}", run))
+    return cases
+
+
+def cut_wamit_cases() -> list[Case]:
+    """The tanker's WAMIT set with one file cut as a failed copy or a full disk leaves it: once read as zeros or as
+    fewer periods with no word, each must now be refused naming the file."""
+    def lines(path: Path) -> list[str]:
+        return path.read_text().splitlines()
+
+    def periods(path: Path) -> list[str]:
+        return list(dict.fromkeys(line.split()[0] for line in lines(path) if line.split()))
+
+    def cut(folder: Path, how: str) -> None:
+        hst, one, three = (folder / f"tanker.{s}" for s in ("hst", "1", "3"))
+        if how == ".hst after the heave rows":
+            hst.write_text("\n".join(lines(hst)[:18]) + "\n")
+        elif how == ".3 to half its periods":
+            kept = set(periods(three)[: len(periods(three)) // 2])
+            three.write_text("".join(line + "\n" for line in lines(three) if line.split()[0] in kept))
+        elif how == ".1 inside its last period":
+            text = lines(one)
+            last = text[-1].split()[0]
+            one.write_text("\n".join(text[: next(n for n, t in enumerate(text) if t.split()[0] == last) + 1]) + "\n")
+        elif how == ".3 to 0..90 deg of the .pot's 0..180":
+            listed = " ".join(p for p in periods(one) if float(p) > 0)
+            (folder / "tanker.cfg").write_text("IALTFRC=2\nIPERIO=1\n")
+            (folder / "tanker.pot").write_text(f"tanker\n-1\n1 1\n58\n{listed}\n-19\n0 10\n1\ntanker.gdf\n0 0 0 0\n"
+                                               "1 1 1 1 1 1\n")
+            three.write_text("".join(line + "\n" for line in lines(three) if float(line.split()[1]) <= 90.0))
+        elif how == ".1 to its first ten periods":
+            kept = set(periods(one)[:10])
+            one.write_text("".join(line + "\n" for line in lines(one) if line.split()[0] in kept))
+        elif how == ".hst emptied":
+            hst.write_text("")
+
+    cases = []
+    for how in (".hst after the heave rows", ".3 to half its periods", ".1 inside its last period",
+                ".3 to 0..90 deg of the .pot's 0..180", ".1 to its first ten periods", ".hst emptied"):
+        def run(folder: Path, how: str = how) -> tuple[str, str]:
+            for name in ("tanker.1", "tanker.3", "tanker.hst", "tanker.frc", "tanker.cfg", "tanker.gdf"):
+                shutil.copy(ROOT / "rao" / "tanker" / name, folder / name)
+            cut(folder, how)
+            before = snapshot(folder)
+            return refusal(cli(["rao", "tanker.3", "--json"], folder), folder, before)
+        cases.append(Case("cut WAMIT sets", how, run))
+    return cases
+
+
+def multi_body_cases() -> list[Case]:
+    """Two-body WAMIT runs: a body's .gdf placed by the run's .pot (read at its body-frame draft, its volume was
+    wrong with no note), two .pot placing it apart, and a .4 or .1/.3 set of two bodies read with no --body."""
+    from test_vessel_wamit_sets import two_body_pot
+
+    tanker = ROOT / "rao" / "tanker"
+    volume = None
+
+    def raised(folder: Path) -> None:
+        gdf = (tanker / "tanker.gdf").read_text().splitlines()
+        moved = [" ".join([*line.split()[:2], f"{float(line.split()[2]) + 2.0:.5f}"]) for line in gdf[4:]]
+        (folder / "barge.gdf").write_text("\n".join(gdf[:4] + moved) + "\n")
+
+    def placed(folder: Path) -> tuple[str, str]:
+        nonlocal volume
+        if volume is None:
+            from marinesim.hull import hydrostatics, load_hull
+            volume = hydrostatics(load_hull(tanker / "tanker.gdf")).volume_m3
+        raised(folder)
+        two_body_pot(folder, "run.pot", "barge.gdf", (50.0, 60.0, -2.0, 0.0))
+        result = cli(["hull", "barge.gdf", "--json"], folder)
+        if result is None or result.returncode != 0:
+            return verdict(result)
+        found = json.loads(result.stdout)["volume_m3"]
+        return ("clean", "") if abs(found / volume - 1.0) < 1e-4 else ("silent", f"volume {found:.0f} m^3")
+
+    def two_places(folder: Path) -> tuple[str, str]:
+        raised(folder)
+        two_body_pot(folder, "run.pot", "barge.gdf", (50.0, 60.0, -2.0, 0.0))
+        two_body_pot(folder, "old.pot", "barge.gdf", (50.0, 60.0, -3.0, 0.0))
+        return refusal(cli(["hull", "barge.gdf", "--json"], folder), folder, snapshot(folder))
+
+    def two_body_4(folder: Path, body: str | None) -> tuple[str, str]:
+        rows = [line.split() for line in (tanker / "tanker.4").read_text().splitlines() if line.split()]
+        merged = []
+        for start in range(0, len(rows), 6):
+            merged += [" ".join(r) for r in rows[start:start + 6]]
+            merged += [" ".join([r[0], r[1], str(int(r[2]) + 6), *r[3:]]) for r in rows[start:start + 6]]
+        (folder / "run.4").write_text("\n".join(merged) + "\n")
+        two_body_pot(folder, "run.pot", "barge.gdf", (0.0, 0.0, 0.0, 0.0))
+        if body is None:
+            return refusal(cli(["rao", "run.4", "--json"], folder), folder, snapshot(folder))
+        return verdict(cli(["rao", "run.4", "--body", body, "--json"], folder))
+
+    def two_body_set(folder: Path) -> tuple[str, str]:
+        for suffix, columns in ((".1", (1, 2)), (".3", (2,)), (".hst", (0, 1))):
+            rows = [line.split() for line in (tanker / f"tanker{suffix}").read_text().splitlines() if line.split()]
+            for row in rows:
+                for c in columns:
+                    row[c] = str(int(row[c]) + 6)
+            (folder / f"tanker{suffix}").write_text("\n".join(" ".join(row) for row in rows) + "\n")
+        shutil.copy(tanker / "tanker.frc", folder / "tanker.frc")
+        two_body_pot(folder, "tanker.pot", "tanker2.gdf", (0.0, 0.0, 0.0, 0.0))
+        return refusal(cli(["rao", "tanker.3", "--body", "2", "--json"], folder), folder, snapshot(folder))
+
+    return [Case("multi-body .pot", "a body placed by the run's .pot", placed),
+            Case("multi-body .pot", "two .pot placing one body apart", two_places),
+            Case("multi-body .pot", ".4 of two bodies, no --body", lambda folder: two_body_4(folder, None)),
+            Case("multi-body .pot", ".4 of two bodies, --body 2", lambda folder: two_body_4(folder, "2")),
+            Case("multi-body .pot", ".4 of two bodies, --body barge.gdf",
+                 lambda folder: two_body_4(folder, "barge.gdf")),
+            Case("multi-body .pot", ".1/.3 of body 2 without its mass", two_body_set)]
+
+
+def scenario_with(edit: Callable[[str], str]) -> Callable[[Path], list[str]]:
+    """A case's command: ``export`` of :func:`scenario_text` after ``edit``, written into the case's folder."""
+    def command(folder: Path) -> list[str]:
+        (folder / "s.toml").write_text(edit(scenario_text()))
+        return ["export", "s.toml", "--out", "m.csv", "--duration", "2", "--quiet"]
+    return command
+
+
+def scatter(rows: str) -> Callable[[Path], list[str]]:
+    """A case's command: an operability study of the crane lift over the scatter table ``rows`` (Hs, Tp, count)."""
+    def command(folder: Path) -> list[str]:
+        (folder / "site.csv").write_text("hs_m,tp_s,count\n" + rows)
+        return ["operability", str(ROOT / "configs" / "training" / "crane_lift.toml"), "--scatter", "site.csv",
+                "--out", "study", "--headings", "0,180"]
+    return command
+
+
+def points(n: int) -> str:
+    return "\n".join(f"p{i} = [{i % 100}.0, 0.0, 10.0]" for i in range(n))
+
+
+IMPOSSIBLE = {
+    "depth 1e-9 m": scenario_with(lambda t: t.replace("[ocean]", "[ocean]\ndepth_m = 1e-9").replace(
+        'hull = "', '# hull = "')),
+    "a point at 1e308 m": scenario_with(lambda t: t.replace("bow = [120.0, 0.0, 12.0]", "bow = [1e308, 0.0, 12.0]")),
+    "hull draft 1e308 m": scenario_with(lambda t: t.replace("speed_kn = 4.0", "hull_draft_m = 1e308\nspeed_kn = 4.0")),
+    "visual mesh offset 1e308 m": scenario_with(lambda t: t.replace(
+        "speed_kn = 4.0", "visual_mesh_offset_m = [1e308, 0.0, 0.0]\nspeed_kn = 4.0")),
+    "u10 1e-300 m/s": lambda folder: ["sea", "--u10", "1e-300", "--resolution", "32"],
+    "fetch 1e-300 km": lambda folder: ["sea", "--u10", "15", "--fetch-km", "1e-300", "--resolution", "32"],
+    "wake draft 1e308 m": lambda folder: ["wake", str(ROOT / "hulls" / "wigley.stl"), "--speed-kn", "10", "--draft",
+                                         "1e308", "--quiet"],
+    "trim 29.9 deg at draft 0.1 m": lambda folder: ["hull", str(ROOT / "hulls" / "supply_hull.stl"), "--trim-deg",
+                                                    "29.9", "--draft", "0.1"],
+    "rao speed 1e308 kn": lambda folder: ["rao", str(ROOT / "rao" / "s175" / "input.re1"), "--speed-kn", "1e308",
+                                          "--plot", "p.png"],
+    "rao headings 1e308 deg": lambda folder: ["rao", str(ROOT / "rao" / "tanker" / "tanker.4"), "--headings",
+                                              "1e308", "--plot", "p.png"],
+    "scatter in centimetres": scatter("150,8,10\n250,9,20\n"),
+    "scatter steeper than breaking": scatter("1,6,10\n20,3,20\n"),
+    "scatter Hs 1e308 m": scatter("1,6,10\n1e308,9,20\n"),
+}
+"""Inputs no sea or ship can have, each once accepted with exit 0 (NaN in the CSV, a 25 m draft, 0 % or 100 %
+operability) or ended in a traceback."""
+
+CAPS = {
+    "1,000 wave systems": scenario_with(lambda t: t + "".join(
+        f'\n[[sea]]\ntype = "jonswap"\nhs_m = 0.1\ntp_s = 8.0\nfrom_deg = {i % 360}.0\n' for i in range(1000))),
+    "12 wave systems in an event": scenario_with(lambda t: t + "\n[[events]]\nat_s = 1.0\n" + "".join(
+        '\n[[events.sea]]\ntype = "jonswap"\nhs_m = 0.1\ntp_s = 8.0\nfrom_deg = 0.0\n' for _ in range(12))),
+    "10,000 points": scenario_with(lambda t: t.replace("manifold = [0.0, -20.0, 14.0]", points(10000))),
+    "65 points": scenario_with(lambda t: t.replace("manifold = [0.0, -20.0, 14.0]", points(65))),
+    "41 wake speeds": lambda folder: ["wake", str(ROOT / "hulls" / "wigley.stl"), "--nx", "64", "--ny", "32",
+                                      "--speed-kn", ",".join(str(v) for v in range(1, 42)), "--quiet"],
+}
+"""Sizes that ran for minutes: each must be refused at once, naming its key or option."""
+
+
+def physics_cases() -> list[Case]:
+    cases = []
+    for category, table in (("impossible physics", IMPOSSIBLE), ("size caps", CAPS)):
+        for name, command in table.items():
+            def run(folder: Path, command: Callable[[Path], list[str]] = command) -> tuple[str, str]:
+                args = command(folder)
+                return refusal(cli(args, folder), folder, snapshot(folder))
+            cases.append(Case(category, name, run))
+
+    def repeated_speed(folder: Path) -> tuple[str, str]:
+        """1,000 copies of one speed in ``wake --speed-kn``: each was computed again, for minutes; now once."""
+        result = cli(["wake", str(ROOT / "hulls" / "wigley.stl"), "--nx", "64", "--ny", "32", "--speed-kn",
+                      ",".join(["12"] * 1000), "--json"], folder)
+        if result is None or result.returncode != 0:
+            return verdict(result)
+        answer = json.loads(result.stdout)
+        return ("clean", "") if isinstance(answer, dict) else ("silent", f"{len(answer)} wakes for one speed")
+    cases.append(Case("size caps", "1,000 copies of one wake speed", repeated_speed))
+    return cases
+
+
 # --- the campaign ------------------------------------------------------------------------------------------
 
 def table(results: list[tuple[Case, str, str]]) -> str:
@@ -490,7 +820,8 @@ def test_the_campaign_finds_no_traceback_hang_or_lost_data(tmp_path):
     sources = tmp_path / "sources"
     sources.mkdir()
     cases = sample(rao_cases(sources) + mesh_cases(sources) + scenario_cases() + option_cases() + signal_cases()
-                   + writer_cases() + cache_cases(sources) + output_cases())
+                   + writer_cases() + cache_cases(sources) + output_cases() + self_overwrite_cases(sources)
+                   + forged_log_cases(sources) + cut_wamit_cases() + multi_body_cases() + physics_cases())
 
     def attempt(numbered: tuple[int, Case]) -> tuple[Case, str, str]:
         number, case = numbered
@@ -545,7 +876,7 @@ def test_a_signal_while_trimesh_imports_is_not_lost():
     """Regression (found by the campaign): a SIGTERM or Ctrl-C while trimesh loaded was swallowed by its
     ``except BaseException`` around optional imports, and the export ran on for minutes."""
     result = subprocess.run([sys.executable, "-c", SIGNAL_DURING_TRIMESH_IMPORT.format(module="marinesim.hull")],
-                            capture_output=True, text=True, env=ENV, timeout=HANG_S)
+                            capture_output=True, text=True, env=environment(), timeout=HANG_S)
     assert result.returncode == 143, result.stdout + result.stderr
 
 

@@ -5,8 +5,8 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from marinesim.cli.common import json_text, number_list
-from marinesim.errors import require_finite
+from marinesim.cli.common import json_text, number_list, refuse_overwriting
+from marinesim.errors import require_finite, require_within
 from marinesim.formats import formats
 
 
@@ -33,24 +33,37 @@ def add(commands: argparse._SubParsersAction) -> None:
     p.add_argument("--ulen", type=float, help="WAMIT length scale ULEN, m (default: from the .gdf beside)")
     p.add_argument("--roll-damping-pct", type=float, default=0.0,
                    help="Capytaine: extra linear roll damping, %% of critical (default 0)")
-    p.add_argument("--body", help="Capytaine: the body whose motions to read from a dataset of several bodies")
+    p.add_argument("--body", help="Capytaine, WAMIT: the body whose motions to read from a dataset or run of several "
+                                  "bodies (WAMIT: its number, or its .gdf file's name in the .pot)")
+    p.add_argument("--accept-resonance", action="store_true",
+                   help="accept a lightly damped resonance beyond the plausibility limits (a moored body's surge, "
+                        "a flap's roll) as real")
     p.set_defaults(handler=handle)
 
 
 def handle(args: argparse.Namespace) -> int:
     from marinesim.atomic import atomic_path
     from marinesim.constants import KNOT
+    from marinesim.scenario.model import MAX_SPEED_KN
     from marinesim.vessel import read_rao
     from marinesim.vessel.plot import plot_rao
     from marinesim.vessel.summary import format_rao_summary, rao_summary
     from marinesim.vessel.write import check_extension, write_rao
 
-    headings = number_list("--headings", args.headings, "degrees")
-    speed = None if args.speed_kn is None else require_finite("speed", args.speed_kn) * KNOT
+    headings = [require_within("--headings", h, -360.0, 360.0, "deg") % 360.0  # -90 is 270
+                for h in number_list("--headings", args.headings, "degrees")]
     if args.write:
         check_extension(args.write)  # before reading a large file
     roll_damping = require_finite("roll damping", args.roll_damping_pct) / 100
-    table = read_rao(args.file, ulen=args.ulen, roll_damping=roll_damping, body=args.body)
+    table = read_rao(args.file, ulen=args.ulen, roll_damping=roll_damping, body=args.body,
+                     accept_resonance=args.accept_resonance)
+    several = table.speed.size > 1
+    low, high = (v / KNOT for v in table.speed_range) if several else (0.0, MAX_SPEED_KN)
+    what = "the RAO table's speeds" if several else "a ship's speeds"
+    speed = None if args.speed_kn is None else require_within(f"--speed-kn ({what})", args.speed_kn, low, high,
+                                                              "kn") * KNOT
+    refuse_overwriting(args.write, "--write")
+    refuse_overwriting(args.plot, "--plot")
     notes = write_rao(table, args.write, speed=speed) if args.write else ()  # refused before anything is printed
     report = rao_summary(table)
     if args.write:

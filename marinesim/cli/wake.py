@@ -5,10 +5,9 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from marinesim.cli.common import add_hull_options, bars, hull_from_args, json_text, number_list
+from marinesim.cli.common import add_hull_options, bars, hull_from_args, json_text, number_list, refuse_overwriting
 from marinesim.errors import ParameterError
 from marinesim.formats import extensions
-
 
 NEEDS = ("marinesim.wake.cache", "marinesim.wake.compute", "marinesim.wake.plot")
 """The modules the command loads before it starts (Ctrl-C is held until they are in)."""
@@ -45,10 +44,13 @@ def handle(args: argparse.Namespace) -> int:
     from marinesim.hull import hydrostatics
     from marinesim.progress import reporting
     from marinesim.wake.cache import cached_wake
-    from marinesim.wake.compute import WakeGrid, compute_wake, thin_ship_note
+    from marinesim.wake.compute import MAX_SPEEDS, WakeGrid, compute_wake, thin_ship_note
     from marinesim.wake.plot import plot_wake
 
-    speeds = number_list("--speed-kn", args.speed_kn, "knots")
+    speeds = list(dict.fromkeys(number_list("--speed-kn", args.speed_kn, "knots")))  # a repeated speed: once
+    if len(speeds) > MAX_SPEEDS:
+        raise ParameterError(f"--speed-kn gives {len(speeds)} different speeds, more than {MAX_SPEEDS} (one a knot up "
+                             "to 40 kn): give fewer")
     if any(v <= 0 for v in speeds):
         raise ParameterError(f"--speed-kn must be > 0 (a hull at rest makes no wake), got {args.speed_kn}")
     for path in (args.out, args.plot):
@@ -56,6 +58,9 @@ def handle(args: argparse.Namespace) -> int:
             raise ParameterError(f"cannot write {path}: folder {path.resolve().parent} does not exist")
     grid = WakeGrid(args.nx, args.ny, args.spacing)
     hull = hull_from_args(args)
+    for flag, option, suffix in ((args.out, "--out", ".npz"), (args.plot, "--plot", ".png")):
+        for speed_kn in speeds if flag else ():
+            refuse_overwriting(_named(flag, speed_kn, len(speeds) > 1, suffix), option)
     thin = thin_ship_note(hydrostatics(hull))  # from the hull, not the wake: a cached wake may predate the note
     reports = []
     for speed_kn in speeds:
@@ -75,7 +80,7 @@ def handle(args: argparse.Namespace) -> int:
                    "seconds_computing": sum(wake.timings.values())}  # 0 from the cache; never in a file
         for flag, suffix in ((args.out, ".npz"), (args.plot, ".png")):
             if flag:
-                path = flag if len(speeds) == 1 else flag.with_name(f"{flag.stem}_{speed_kn:g}kn{flag.suffix or suffix}")
+                path = _named(flag, speed_kn, len(speeds) > 1, suffix)
                 if suffix == ".npz":
                     wake.save(path)
                 else:
@@ -88,6 +93,11 @@ def handle(args: argparse.Namespace) -> int:
     if args.json:
         print(json_text(reports[0] if len(reports) == 1 else reports))
     return 0
+
+
+def _named(flag: Path, speed_kn: float, many: bool, suffix: str) -> Path:
+    """The file ``flag`` names for the wake at ``speed_kn``: itself, or with several speeds ``NAME_<speed>kn``."""
+    return flag.with_name(f"{flag.stem}_{speed_kn:g}kn{flag.suffix or suffix}") if many else flag
 
 
 def _format_wake(r: dict, notes: tuple[str, ...]) -> str:

@@ -85,14 +85,22 @@ def load_hull(path: str | Path, *, units: str = "m", scale: float = 1.0, axes: s
     reader_notes = tuple(mesh.metadata.get("notes", ()))
     vertices, faces = np.asarray(mesh.vertices, float), np.asarray(mesh.faces, np.int64)
     vertices, faces = to_body_frame(vertices, faces, path, units=units, scale=scale, axes=axes, what="hull")
+    height = float(np.ptp(vertices[:, 2]))  # keel to the top of the mesh
     if draft is not None:
         draft = require_positive("draft", draft)
+        if draft > height:
+            raise ParameterError(f"draft must be at most the hull's height, keel to top ({height:.4g} m): deeper, "
+                                 f"the whole hull is under water; got {draft!r}")
         vertices = vertices - [0.0, 0.0, vertices[:, 2].min() + draft]
     trim = math.radians(require_finite("trim", trim_deg))
     if abs(trim) >= math.radians(30.0):
         raise ParameterError(f"trim must be within +-30 deg, got {trim_deg!r}")
     if trim:
         vertices = vertices @ rotation_y(trim).T
+        deepest = -float(vertices[:, 2].min())
+        if deepest > height:
+            raise ParameterError(f"trim {trim_deg:g} deg puts the keel {deepest:.4g} m deep, deeper than the hull is "
+                                 f"high ({height:.4g} m, keel to top): that end's deck would be under water")
     return make_hull(vertices, faces, str(path), reader_notes)
 
 

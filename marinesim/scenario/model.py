@@ -26,9 +26,11 @@ from marinesim.errors import ParameterError, ScenarioError
 from marinesim.formats import extensions, formats
 from marinesim.hull.mesh import UNITS
 from marinesim.manoeuvring.actuators import TELEGRAPH
-from marinesim.sea.kinds import (CHOPPINESS_RANGE, MAX_DEPTH_M, MAX_FETCH_KM, MAX_HS_M, MAX_RESOLUTION, MAX_U10_M_S,
-                                 MAX_WAVE_HEIGHT_M, PERIOD_RANGE_S, SPECTRUM_TYPES, SPREADING_TYPES, misplaced)
+from marinesim.sea.kinds import (CHOPPINESS_RANGE, FETCH_LIMITED, MAX_DEPTH_M, MAX_FETCH_KM, MAX_HS_M, MAX_RESOLUTION,
+                                 MAX_U10_M_S, MAX_WAVE_HEIGHT_M, MAX_WAVE_SYSTEMS, PERIOD_RANGE_S, SPECTRUM_TYPES,
+                                 SPREADING_TYPES, misplaced, wind_sea_refusal)
 from marinesim.vessel.wamit import ULEN_RANGE_M
+from marinesim.wake.compute import MAX_SPEEDS
 
 MAX_SPEED_KN = 40.0
 """The fastest a vessel goes in a scenario or in the viewer (kn)."""
@@ -43,6 +45,11 @@ CHANGE_RAMP_S = 10.0
 MAX_RAMP_S = 3600.0
 """The longest blend of a change (s)."""
 MAX_EVENTS = 1000
+MAX_POINTS = 64
+"""The most named points on board (each adds its columns to every row of an export)."""
+MAX_ON_BOARD_M = 1000.0
+"""The farthest a point of the vessel (a named point, the centre of gravity, the visual mesh's origin) lies from the
+body frame's origin along any axis (m): twice the longest ship ever built (458 m)."""
 MAX_CRITERIA = 64
 MAX_MESSAGE = 500
 """The most characters in an event's message."""
@@ -136,8 +143,10 @@ def _refuse(key: str, message: str) -> PydanticCustomError:
     return PydanticCustomError("rule", message, {"key": key})
 
 
-Point = Annotated[list[float], Quantity("m"), Field(min_length=3, max_length=3),
-                  _expecting("[x, y, z] in metres (body frame)")]
+Point = Annotated[list[float], Quantity("m", ge=-MAX_ON_BOARD_M, le=MAX_ON_BOARD_M, what="coordinates on board"),
+                  Field(min_length=3, max_length=3),
+                  _expecting(f"[x, y, z] in metres (body frame), each in -{MAX_ON_BOARD_M:g}..{MAX_ON_BOARD_M:g} m "
+                             "(twice the longest ship)")]
 def _finite_rows(rows: list[list[float]]) -> list[list[float]]:
     if not all(math.isfinite(v) for row in rows for v in row):
         raise PydanticCustomError("finite", "a matrix of finite numbers (SI)")
@@ -186,7 +195,8 @@ class SeaOptions(Section):
     gamma: Annotated[float | None, Quantity(ge=1.0, le=20.0)] = Field(
         None, description="JONSWAP peak enhancement (jonswap, tma); absent: DNV's from hs_m, tp_s")
     u10_m_s: Annotated[float | None, Quantity("m/s", gt=0.0, le=MAX_U10_M_S)] = Field(
-        None, description="wind speed at 10 m: a JONSWAP from wind and fetch instead of hs_m, tp_s")
+        None, description="wind speed at 10 m: a JONSWAP from wind and fetch instead of hs_m, tp_s (g fetch / u10^2 "
+                          f"at least {FETCH_LIMITED[0]:g}; beyond {FETCH_LIMITED[1]:g} the sea is fully developed)")
     fetch_km: Annotated[float | None, Quantity("km", gt=0.0, le=MAX_FETCH_KM)] = Field(
         None, description="fetch, with u10_m_s")
     spreading: Literal[SPREADING_TYPES] | None = Field(
@@ -205,6 +215,10 @@ class SeaOptions(Section):
         wrong = misplaced(self.type, given)
         if wrong is not None:
             raise _refuse(given[wrong[0]], wrong[1].replace("u10", "u10_m_s"))
+        if self.u10_m_s is not None and self.fetch_km is not None:
+            why = wind_sea_refusal(self.u10_m_s, self.fetch_km, ("u10_m_s", "fetch_km"))
+            if why is not None:
+                raise _refuse("u10_m_s", why)
         return self
 
 
@@ -228,7 +242,10 @@ class VesselOptions(Section):
     roll_damping_pct: Annotated[float, Quantity("% of critical", ge=0.0, lt=100.0)] = Field(
         0.0, description="extra linear roll damping (Capytaine datasets)")
     rao_body: str | None = Field(None, description="the body whose motions to read from a Capytaine dataset of "
-                                                   "several (solved coupled, every body free)")
+                                                   "several (solved coupled, every body free) or a WAMIT run of "
+                                                   "several (its number, or its .gdf file's name in the .pot)")
+    accept_resonance: bool = Field(False, description="accept a lightly damped resonance of the RAO table beyond "
+                                                      "the plausibility limits (a moored body's surge) as real")
     mass_kg: Annotated[float | None, Quantity("kg", gt=0.0, le=1e10)] = Field(
         None, description="the vessel's mass, with cog_m and radii_of_gyration_m: replaces the file's for RAOs "
                           "solved here (WAMIT .1/.3/.hst and .out, Capytaine)")
@@ -245,8 +262,10 @@ class VesselOptions(Section):
     hull_draft_m: Annotated[float | None, Quantity("m", gt=0.0)] = Field(
         None, description="draft: keel at z = -draft; absent: the mesh's z = 0 is the waterline")
     hull_trim_deg: Annotated[float, Quantity("deg", gt=-30.0, lt=30.0)] = Field(0.0, description="trim, bow down")
-    wake_speeds_kn: Annotated[list[float], Quantity("kn", gt=0.0, le=MAX_SPEED_KN, what="speeds")] = Field(
-        default_factory=list, description="more speeds to precompute the Kelvin wake for (needs hull)")
+    wake_speeds_kn: Annotated[list[float], Quantity("kn", gt=0.0, le=MAX_SPEED_KN, what="speeds"),
+                              Field(max_length=MAX_SPEEDS)] = Field(
+        default_factory=list, description=f"more speeds to precompute the Kelvin wake for (needs hull; at most "
+                                          f"{MAX_SPEEDS})")
     manoeuvring: str | None = Field(
         None, description='her manoeuvring model, steering gear, engine and autopilot: a shipped vessel by name '
                           '("kvlcc2", "s175", "supply", "tanker": configs/vessels), a manoeuvring file (.toml), or '
@@ -266,11 +285,12 @@ class VesselOptions(Section):
     visual_mesh_units: Literal[tuple(UNITS)] = Field("m", description="the visual mesh's length units")
     visual_mesh_scale: Annotated[float, Quantity(gt=0.0)] = Field(1.0, description="its geometric scale")
     visual_mesh_axes: str = Field("x,y,z", description="its axes that become body x, y, z")
-    visual_mesh_offset_m: Annotated[list[float], Quantity("m")] = Field(
+    visual_mesh_offset_m: Annotated[list[float], Quantity("m", ge=-MAX_ON_BOARD_M, le=MAX_ON_BOARD_M,
+                                                          what="coordinates on board")] = Field(
         default_factory=lambda: [0.0, 0.0, 0.0], description="its origin in the body frame, [x, y, z]")
-    points: dict[Annotated[str, AfterValidator(_identifier)], Point] = Field(
-        default_factory=dict, description="named points on board, [x, y, z] in the body frame "
-                                          "(x forward, y port, z up)")
+    points: Annotated[dict[Annotated[str, AfterValidator(_identifier)], Point], Field(max_length=MAX_POINTS)] = Field(
+        default_factory=dict, description=f"named points on board (at most {MAX_POINTS}), [x, y, z] in the body "
+                                          "frame (x forward, y port, z up)")
 
     @model_validator(mode="after")
     def _mass_comes_whole(self) -> VesselOptions:
@@ -401,7 +421,8 @@ class EventOptions(Section):
                           '"[point.]quantity") meets a comparison, e.g. "bridge.vertical_acc_rms_m_s2 > 1.0"')
     ramp_s: Annotated[float, Quantity("s", ge=0.0, le=MAX_RAMP_S)] = Field(
         CHANGE_RAMP_S, description="how long the change blends in, weather too (> 0 for a sea change)")
-    sea: list[SeaOptions] | None = Field(None, description="wave systems that replace the sea (as [[sea]])")
+    sea: Annotated[list[SeaOptions] | None, Field(max_length=MAX_WAVE_SYSTEMS)] = Field(
+        None, description=f"1 to {MAX_WAVE_SYSTEMS} wave systems that replace the sea (as [[sea]])")
     speed_kn: Annotated[float | None, Quantity("kn", ge=0.0, le=MAX_SPEED_KN)] = Field(
         None, description="the engine set for this speed (the rpm that holds it in calm water)")
     heading_deg: Annotated[float | None, Quantity("deg", ge=0.0, le=360.0, what="a compass heading")] = Field(
@@ -492,8 +513,8 @@ class ScenarioFile(Section):
     """A whole scenario file."""
 
     ocean: OceanOptions = Field(default_factory=OceanOptions, description="the FFT cascades")
-    sea: Annotated[list[SeaOptions], AfterValidator(_at_least_one)] = Field(
-        default_factory=list, validate_default=True, description="one or more wave systems")
+    sea: Annotated[list[SeaOptions], Field(max_length=MAX_WAVE_SYSTEMS), AfterValidator(_at_least_one)] = Field(
+        default_factory=list, validate_default=True, description=f"1 to {MAX_WAVE_SYSTEMS} wave systems")
     vessel: VesselOptions | None = Field(None, description="the vessel; absent: a sea only")
     run: RunOptions = Field(default_factory=RunOptions, description="the run")
     environment: EnvironmentOptions = Field(default_factory=EnvironmentOptions, description="light and air")
@@ -585,6 +606,9 @@ def _message(model: type[BaseModel], error: dict, where: str) -> str:
         text = f"expected {_TYPES[kind]}, got {got!r}"
     elif kind == "literal_error":
         text = f"expected {error['ctx']['expected']}, got {got!r}"
+    elif kind == "too_long":
+        count = error["ctx"].get("actual_length")
+        text = f"at most {error['ctx']['max_length']} entries, got {count if count is not None else 'more'}"
     else:
         text = error["msg"]
     return f"{_path([where, *loc] if where else loc)}: {text}"

@@ -167,15 +167,16 @@ def with_run(scenario: Scenario, duration: float | None = None, dt: float | None
 
 def _build(path: Path, file: ScenarioFile) -> Scenario:
     depth = math.inf if file.ocean.depth_m is None else file.ocean.depth_m
-    sea = _sea("sea", file.sea, depth, "ocean.depth_m")
     vessel = None if file.vessel is None else _vessel(path, file.vessel)
+    if vessel is not None:
+        draft, named = ((-float(vessel.hull.vertices[:, 2].min()), "vessel.hull") if vessel.hull is not None
+                        else (vessel.rao.draft, "vessel.rao"))
+        if draft is not None and depth <= draft:
+            raise ScenarioError(f"ocean.depth_m: {depth:g} m is not deeper than the vessel's draft ({draft:.4g} m, "
+                                f"{named}): the keel would be on the sea bed")
+    sea = _sea("sea", file.sea, depth, "ocean.depth_m")
     events = tuple(_event(f"events[{i}]", e, depth, vessel) for i, e in enumerate(file.events))
     criteria = tuple(_criterion(c) for c in file.criteria)
-    if vessel is not None and vessel.hull is not None:
-        draft = -float(vessel.hull.vertices[:, 2].min())
-        if depth <= draft:
-            raise ScenarioError(f"ocean.depth_m: {depth:g} m is not deeper than the hull's draft ({draft:.4g} m, "
-                                "vessel.hull): the keel would be on the sea bed")
     briefing = None if file.briefing is None else Briefing(
         file.briefing.text.strip(), tuple((o.text, tuple(o.criteria)) for o in file.briefing.objectives))
     return Scenario(path.resolve(), sea, file.ocean, file.run, vessel, events, criteria, briefing, file.environment)
@@ -236,7 +237,8 @@ def _vessel(path: Path, options: VesselOptions) -> Vessel:
     rao_path = _checked("vessel.rao", lambda: _file(path, options.rao))
     rao = _checked("vessel.rao", lambda: read_rao(rao_path, ulen=options.ulen_m,
                                                    roll_damping=options.roll_damping_pct / 100.0,
-                                                   body=options.rao_body, rigid_body=_rigid_body(options)))
+                                                   body=options.rao_body, rigid_body=_rigid_body(options),
+                                                   accept_resonance=options.accept_resonance))
     _check_speed("vessel.speed_kn", rao, options.speed_kn)
     speed = options.speed_kn * KNOT
     hull_path, hull = _mesh(path, options, "hull", HULL_OPTIONS, load_hull)

@@ -11,7 +11,7 @@ import math
 from marinesim.angles import wave_beta_from_compass
 from marinesim.constants import G
 from marinesim.errors import ParameterError, require_finite, require_positive, require_within
-from marinesim.sea.kinds import RANGES, SPECTRUM_TYPES, SPREADING_TYPES, misplaced
+from marinesim.sea.kinds import RANGES, SPECTRUM_TYPES, SPREADING_TYPES, misplaced, wind_sea_refusal
 from marinesim.sea.seastate import RegularWave, WaveSystem
 from marinesim.sea.spectra import Jonswap, JonswapFetch, PiersonMoskowitz, Tma
 from marinesim.sea.spreading import Cos2s, HalfPlaneCos2n, LongCrested, Mitsuyasu, Spreading
@@ -51,6 +51,8 @@ def wave_system(
     for name, value in given.items():
         if name in RANGES:
             require_within(name, value, *RANGES[name])
+    if u10 is not None and fetch_km is not None and (why := wind_sea_refusal(u10, fetch_km)) is not None:
+        raise ParameterError(why)
     beta = wave_beta_from_compass(require_finite("from_deg", from_deg))
     if kind == "regular":
         return RegularWave(_given("height", height), _given("period", period), beta,

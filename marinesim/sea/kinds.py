@@ -8,7 +8,10 @@ ranges are the one source of the scenario model's bounds and of :func:`marinesim
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterable
+
+from marinesim.constants import G
 
 SPECTRUM_TYPES = ("jonswap", "pm", "tma", "regular")
 SPREADING_TYPES = ("cos2s", "mitsuyasu", "cos2n-halfplane", "long-crested")
@@ -28,6 +31,18 @@ CHOPPINESS_RANGE = (0.0, 2.0)
 """Horizontal displacement factor: 1 is Gerstner's; beyond 2 every wave folds over itself."""
 MAX_DEPTH_M = 11000.0
 """Water depth (m): the deepest ocean trench."""
+BREAKING_DEPTH_RATIO = 0.78
+"""The highest wave water of depth h holds, H / h (McCowan's solitary wave; in the surf zone irregular seas saturate
+lower, near Hs / h = 0.6): a sea's Hs above it in that depth has broken."""
+FETCH_LIMITED = (1.0, 2.2e4)
+"""Dimensionless fetch g F / U10^2 over which JONSWAP's fetch-limited growth (Hasselmann et al. 1973) holds: below
+1 the fetch is a few wave lengths; beyond 2.2e4 the sea is fully developed and grows no more, so a longer fetch
+counts as 2.2e4 (:func:`fetch_limited`)."""
+MAX_WAVE_SYSTEMS = 10
+"""Wave systems in one sea: a wind sea and its swells (partitioned buoy spectra hold a handful)."""
+BREAKING_STEEPNESS = 1.0 / 7.0
+"""The steepest a sea can be, Hs / Lp with Lp = g Tp^2 / (2 pi) the deep-water length of its peak: a single wave
+breaks at H / L = 1/7 (Michell 1893), and a sea's significant steepness stays well below it."""
 MAX_RESOLUTION = 4096
 """Samples per tile side: 4096^2 cells already take gigabytes per tile."""
 MAX_TIME_S = 1e6
@@ -42,6 +57,29 @@ APPLIES_TO = {"hs": SPECTRA, "tp": SPECTRA, "gamma": ("jonswap", "tma"), "u10": 
 """Wave-system parameter -> the kinds of wave system that take it."""
 FROM_WIND = ("hs", "tp", "gamma")
 """Parameters a JONSWAP from wind (u10 and fetch_km) sets itself."""
+
+
+def fetch_limited(u10: float, fetch_m: float, g: float = G) -> tuple[float, float]:
+    """(dimensionless fetch x = g F / U10^2, at most :data:`FETCH_LIMITED`'s fully developed end; the JONSWAP peak
+    frequency wp = 22 (g / U10) x^(-1/3), rad/s) of a wind ``u10`` (m/s) over ``fetch_m`` (m)."""
+    x = FETCH_LIMITED[1] if g * fetch_m >= FETCH_LIMITED[1] * u10**2 else g * fetch_m / u10**2
+    return x, 22.0 * g / u10 * x ** (-1.0 / 3.0)
+
+
+def wind_sea_refusal(u10: float, fetch_km: float, names: tuple[str, str] = ("u10", "fetch_km")) -> str | None:
+    """Why a JONSWAP from wind ``u10`` (m/s, > 0) over ``fetch_km`` (km, > 0) has no meaning (a fetch of a few
+    wave lengths, below :data:`FETCH_LIMITED`, or a peak period outside :data:`PERIOD_RANGE_S`); None if it has.
+    ``names`` are the two keys as the caller's user gives them."""
+    fetch = 1000.0 * fetch_km
+    if G * fetch < FETCH_LIMITED[0] * u10**2:
+        return (f"{names[0]} {u10:g} m/s over {names[1]} {fetch_km:g} km is a fetch of a few wave lengths, where "
+                f"JONSWAP's fetch-limited growth does not hold (g F / U10^2 at least {FETCH_LIMITED[0]:g}: "
+                f"{names[0]} at most {math.sqrt(G * fetch / FETCH_LIMITED[0]):.3g} m/s at that fetch)")
+    tp = 2.0 * math.pi / fetch_limited(u10, fetch)[1]
+    if not PERIOD_RANGE_S[0] <= tp <= PERIOD_RANGE_S[1]:
+        return (f"{names[0]} {u10:g} m/s over {names[1]} {fetch_km:g} km gives a peak period of {tp:.3g} s, "
+                f"outside {PERIOD_RANGE_S[0]:g}..{PERIOD_RANGE_S[1]:g} s")
+    return None
 
 
 def refusal(kind: str, name: str, given: Iterable[str]) -> str | None:

@@ -17,7 +17,7 @@ from scipy import optimize
 from marinesim.constants import G
 from marinesim.errors import ParameterError, require_finite, require_positive
 from marinesim.sea.dispersion import k_from_omega
-from marinesim.sea.kinds import MAX_DEPTH_M
+from marinesim.sea.kinds import BREAKING_DEPTH_RATIO, MAX_DEPTH_M
 from marinesim.sea.spectra import Jonswap, JonswapFetch, Spectrum, spectral_moment
 from marinesim.sea.spreading import LongCrested, Spreading
 
@@ -80,6 +80,12 @@ class SeaState:
             raise ParameterError("a sea state needs at least one wave system")
         if require_positive("depth", self.depth, allow_infinite=True) > MAX_DEPTH_M and not math.isinf(self.depth):
             raise ParameterError(f"depth must be <= {MAX_DEPTH_M:g} m (or infinite: deep water), got {self.depth!r}")
+        height = math.sqrt(sum(s.spectrum.hs**2 for s in self.spectral_systems)
+                           + sum(r.height**2 for r in self.regular_waves))  # Hs, or a regular wave's H
+        if height > BREAKING_DEPTH_RATIO * self.depth:
+            raise ParameterError(f"depth {self.depth:g} m is too shallow for a sea of {height:.3g} m: waves break "
+                                 f"where H > {BREAKING_DEPTH_RATIO:g} x depth, so it needs at least "
+                                 f"{height / BREAKING_DEPTH_RATIO:.3g} m")
         for system in self.spectral_systems:
             spectrum_depth = getattr(system.spectrum, "depth", math.inf)
             if spectrum_depth != self.depth and not math.isinf(spectrum_depth):

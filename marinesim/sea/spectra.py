@@ -18,6 +18,7 @@ from scipy import integrate
 from marinesim.constants import G
 from marinesim.errors import ParameterError, require_at_least, require_positive
 from marinesim.sea.dispersion import k_from_omega
+from marinesim.sea.kinds import fetch_limited
 
 
 class Spectrum(Protocol):
@@ -155,8 +156,9 @@ def _jonswap_shape_m0(tp: float, gamma: float, depth: float, g: float) -> float:
 class JonswapFetch:
     """JONSWAP from wind speed U10 (m/s) and fetch (m), Hasselmann et al. 1973, gamma = 3.3.
 
-    ``alpha = 0.076 (g F / U10^2)^-0.22``, ``wp = 22 (g^2 / (U10 F))^(1/3)``. Hs follows
-    from the spectrum (it is an output here, not an input).
+    ``alpha = 0.076 x^-0.22``, ``wp = 22 (g / U10) x^(-1/3)`` with ``x = g F / U10^2``, the fetch counting up to a
+    fully developed sea's (:func:`~marinesim.sea.kinds.fetch_limited`). Hs follows from the spectrum (it is an
+    output here, not an input).
     """
 
     u10: float
@@ -173,11 +175,11 @@ class JonswapFetch:
 
     @property
     def alpha(self) -> float:
-        return 0.076 * (self.g * self.fetch / self.u10**2) ** -0.22
+        return 0.076 * fetch_limited(self.u10, self.fetch, self.g)[0] ** -0.22
 
     @property
     def omega_peak(self) -> float:
-        return 22.0 * (self.g**2 / (self.u10 * self.fetch)) ** (1.0 / 3.0)
+        return fetch_limited(self.u10, self.fetch, self.g)[1]
 
     @property
     def tp(self) -> float:

@@ -22,6 +22,7 @@ from pathlib import Path
 import numpy as np
 
 from marinesim import progress
+from marinesim.atomic import signals_held
 from marinesim.errors import MarinesimError, ParameterError
 
 FLUSH_S = 2.0
@@ -127,10 +128,11 @@ def _run_on_dask(function, missing: np.ndarray, scheduler: str | None, workers: 
     with ExitStack() as stack:
         if scheduler is None:
             count = workers or len(os.sched_getaffinity(0))
-            cluster = stack.enter_context(distributed.LocalCluster(
-                n_workers=count, threads_per_worker=1, processes=True, dashboard_address=None,
-                env=ONE_THREAD, silence_logs=40))
-            client = stack.enter_context(distributed.Client(cluster))
+            with signals_held():  # a Ctrl-C inside Dask's start-up is swallowed there and the study then hangs
+                cluster = stack.enter_context(distributed.LocalCluster(
+                    n_workers=count, threads_per_worker=1, processes=True, dashboard_address=None,
+                    env=ONE_THREAD, silence_logs=40))
+                client = stack.enter_context(distributed.Client(cluster))
         else:
             try:
                 client = stack.enter_context(distributed.Client(scheduler, timeout=30))

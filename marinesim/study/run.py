@@ -19,13 +19,14 @@ from marinesim import __version__
 from marinesim.criteria import spectral
 from marinesim.errors import ParameterError, ScenarioError
 from marinesim.scenario import Scenario
+from marinesim.sea.kinds import BREAKING_DEPTH_RATIO, BREAKING_STEEPNESS
 from marinesim.sea.seastate import SeaState, WaveSystem
 from marinesim.sea.spreading import LongCrested
 from marinesim.session.sidecar import sha256
 from marinesim.study import results
 from marinesim.study.alpha import AlphaTable
 from marinesim.study.operability import Operability, operability
-from marinesim.study.scatter import Scatter, read_scatter
+from marinesim.study.scatter import Scatter, read_scatter, steepness
 from marinesim.vessel.response import OUTSIDE_HEADINGS_SHARE
 
 MAX_TASKS = 1_000_000
@@ -84,9 +85,28 @@ def prepare(scenario: Scenario, scatter_path: Path, headings_deg: np.ndarray, du
     scatter = read_scatter(scatter_path)
     system = systems[0]
     cell_tp = scatter.period if scatter.period_kind == "tp" else scatter.period / tz_over_tp(system, scenario.sea.depth)
+    _check_steepness(scatter, cell_tp)
+    deepest_sea = float(scatter.hs.max())
+    if deepest_sea > BREAKING_DEPTH_RATIO * scenario.sea.depth:  # refused now, not in the middle of the study
+        raise ParameterError(f"{scatter_path}: Hs {deepest_sea:g} m breaks in the scenario's {scenario.sea.depth:g} m "
+                             f"of water (H > {BREAKING_DEPTH_RATIO:g} x depth): leave out the cells above "
+                             f"{BREAKING_DEPTH_RATIO * scenario.sea.depth:.3g} m")
     tp = np.unique(cell_tp)
     _check_covered(scenario, system, np.sort(headings), float(np.median(tp)))
     return Study(scenario, scatter, system, scenario.sea.depth, cell_tp, tp, np.sort(headings), duration)
+
+
+def _check_steepness(scatter: Scatter, cell_tp: np.ndarray) -> None:
+    """Refuse a scatter cell steeper than breaking (:data:`~marinesim.sea.kinds.BREAKING_STEEPNESS`) at its peak
+    period ``cell_tp`` (s): no sea state is, and counting it would make the study's percentages meaningless."""
+    steep = np.flatnonzero(steepness(scatter.hs, cell_tp) > BREAKING_STEEPNESS)
+    if steep.size:
+        i = int(steep[0])
+        period = (f"Tp {cell_tp[i]:g} s" if scatter.period_kind == "tp"
+                  else f"Tz {scatter.period[i]:g} s (Tp {cell_tp[i]:.3g} s in the scenario's spectrum)")
+        raise ParameterError(f"{scatter.source}: the cell Hs {scatter.hs[i]:g} m, {period} is steeper than breaking: "
+                             f"Hs / Lp = {steepness(scatter.hs[i], cell_tp[i]):.3g} > 1/7 (Lp = g Tp^2 / 2 pi, "
+                             f"deep water); {steep.size} such cell(s)")
 
 
 def _check_covered(scenario: Scenario, system: WaveSystem, headings_deg: np.ndarray, tp: float) -> None:

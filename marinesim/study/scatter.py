@@ -22,7 +22,9 @@ from pathlib import Path
 import numpy as np
 from scipy import stats
 
+from marinesim.constants import G
 from marinesim.errors import FileFormatError
+from marinesim.sea.kinds import BREAKING_STEEPNESS, MAX_HS_M, PERIOD_RANGE_S
 from marinesim.tokens import read_text
 
 MAX_CELLS = 10_000
@@ -30,6 +32,8 @@ MAX_CELLS = 10_000
 PERIODS = {"tp_s": "tp", "tz_s": "tz"}
 """Period column -> the period it is."""
 WEIGHTS = ("probability", "count")
+REAL_SEA = ((0.0, MAX_HS_M, "m"), (*PERIOD_RANGE_S, "s"))
+"""The Hs and the period (either kind) of a real sea state: (low, high, unit)."""
 
 
 @dataclass(frozen=True)
@@ -74,6 +78,10 @@ def read_scatter(path: Path) -> Scatter:
                 raise FileFormatError(path, number, f"expected {what}, got {cells[column].strip()!r}") from None
             if not math.isfinite(value) or value < 0 or (j < 2 and value == 0):
                 raise FileFormatError(path, number, f"expected {what}, got {cells[column].strip()!r}")
+            if j < 2 and not (REAL_SEA[j][0] <= value <= REAL_SEA[j][1]):
+                low, high, unit = REAL_SEA[j]
+                raise FileFormatError(path, number, f"{header[column]} {value:g} is outside a real sea's "
+                                                    f"{low:g}..{high:g} {unit} (is the table in other units?)")
             values[i, j] = value
         cell = (values[i, 0], values[i, 1])
         if cell in seen:
@@ -84,6 +92,11 @@ def read_scatter(path: Path) -> Scatter:
     if not total > 0:
         raise FileFormatError(path, header_line, f"the {weight_names[0]} column sums to 0: no sea state occurs")
     return Scatter(values[:, 0], values[:, 1], values[:, 2] / total, PERIODS[period_names[0]], str(path))
+
+
+def steepness(hs: np.ndarray | float, tp: np.ndarray | float) -> np.ndarray | float:
+    """Hs / Lp of sea states (m, s), Lp = g Tp^2 / (2 pi) the deep-water length of the peak."""
+    return hs / (G * np.square(tp) / (2.0 * math.pi))
 
 
 @dataclass(frozen=True)
@@ -161,7 +174,7 @@ def discretise(model: JointModel, hs_edges: np.ndarray, period_edges: np.ndarray
 def scatter_csv(key: str, hs_edges: np.ndarray, period_edges: np.ndarray) -> str:
     """The scatter file of :data:`JOINT_MODELS` [``key``] over the given cell edges (m, s): cells at the
     edges' midpoints, probabilities normalised over the table and written to 6 decimals (cells that round
-    to 0 left out), the source in the comment lines."""
+    to 0, and of a Tp table those steeper than breaking, left out), the source in the comment lines."""
     model = JOINT_MODELS[key]
     probability = discretise(model, hs_edges, period_edges)
     covered = probability.sum()
@@ -175,5 +188,5 @@ def scatter_csv(key: str, hs_edges: np.ndarray, period_edges: np.ndarray) -> str
              f"marinesim.study.scatter.discretise; the table holds {covered:.2%} of the model's probability",
              f"hs_m,{column},probability"]
     lines += [f"{h:g},{t:g},{p:.6f}" for (i, h) in enumerate(hs) for (j, t) in enumerate(period)
-              if (p := probability[i, j]) >= 5e-7]
+              if (p := probability[i, j]) >= 5e-7 and (model.period != "tp" or steepness(h, t) <= BREAKING_STEEPNESS)]
     return "\n".join(lines) + "\n"

@@ -32,6 +32,8 @@ from marinesim.wake.field import wake_spectrum
 from marinesim.wake.local import local_flow
 from marinesim.wake.measure import kelvin_half_angle_deg, transverse_wavelength
 
+MAX_SPEEDS = 40
+"""The most different speeds one call or scenario precomputes: one a knot up to a fast ship's 40 kn."""
 CELLS_PER_WAVELENGTH = 16
 AHEAD_CELLS = 8
 MIN_FROUDE = 0.03  # below: waves of a few cm, costly (nodes grow as 1 / Fn^2) and outside thin-ship theory
