@@ -4,10 +4,12 @@ key or option and the physical bound, exit status 2, no traceback, the inputs un
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import re
 import signal
+import socket
 import subprocess
 import sys
 import time
@@ -250,8 +252,14 @@ def _worker_started(pid: int) -> bool:
 @pytest.mark.skipif(not Path("/proc/self/task").is_dir(), reason="needs Linux's /proc to see the worker start")
 def test_ctrl_c_while_dask_starts_is_one_line_and_130(tmp_path, follower):
     """Without holding Ctrl-C through the LocalCluster's start-up, a SIGINT there is swallowed by Dask: the study
-    then hangs, or ends with Dask's CommClosedError tracebacks (a worker's heartbeat to the closed scheduler)."""
+    then hangs, or ends with Dask's CommClosedError tracebacks (a worker's heartbeat to the closed scheduler).
+    Port 8787 is held here, as another study (or CI's other worker) holds it: the scheduler's HTTP server took it
+    by default and warned on stderr when it was taken."""
     pytest.importorskip("distributed")
+    taken = socket.socket()
+    with contextlib.suppress(OSError):  # already taken by something else: the same condition
+        taken.bind(("127.0.0.1", 8787))
+        taken.listen(1)
     path, text = follower
     path.write_text(text)
     (tmp_path / "site.csv").write_text(HAND_SCATTER)
@@ -269,6 +277,7 @@ def test_ctrl_c_while_dask_starts_is_one_line_and_130(tmp_path, follower):
         process.send_signal(signal.SIGINT)
         _, stderr = process.communicate(timeout=120)
     finally:
+        taken.close()
         if process.poll() is None:
             process.kill()
             process.wait()

@@ -131,7 +131,8 @@ def _run_on_dask(function, missing: np.ndarray, scheduler: str | None, workers: 
             with signals_held():  # a Ctrl-C inside Dask's start-up is swallowed there and the study then hangs
                 cluster = stack.enter_context(distributed.LocalCluster(
                     n_workers=count, threads_per_worker=1, processes=True, dashboard_address=None,
-                    env=ONE_THREAD, silence_logs=40))
+                    scheduler_kwargs={"dashboard_address": "127.0.0.1:0"},  # its health/metrics HTTP server:
+                    env=ONE_THREAD, silence_logs=40))  # the loopback, any free port (8787 taken: a warning)
                 client = stack.enter_context(distributed.Client(cluster))
         else:
             try:
