@@ -160,6 +160,14 @@ def walkthrough(tmp_path: Path) -> None:
         assert sim.environment.visibility_m == clear.visibility_m / 4 and sim.environment.cloud_cover_oktas == 1
         assert sim.environment.rain_mm_h == 2.5
         assert "only a time_utc moves it" in controls.message
+        press(key.NUM_ADD)                                # the keypad's + and - scale time as + and - do
+        assert controls.time_scale == 2.0
+        press(key.NUM_SUBTRACT)
+        assert controls.time_scale == 1.0
+        viewer.tick(0.1)
+        assert any("only a time_utc" in line for line in viewer.scene.status)
+        viewer.tick(9.0)                                  # 9 s of wall time later the message has gone
+        assert not any("only a time_utc" in line for line in viewer.scene.status)
 
         press(key.M, "m")                                 # the instructor types a message
         type_text("Fog ahead")

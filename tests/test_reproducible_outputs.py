@@ -82,6 +82,19 @@ def test_headless_hud_has_no_clock_time_and_the_window_keeps_it(gl_context):
         assert any("frame  16.7 ms" in line for line in view.scene.strip_lines(1280))
 
 
+def test_the_real_time_factor_of_slow_frames_is_what_the_run_did():
+    """Frames 1.5 s apart, each step of the run (0.1 s, the longest a frame may take) drawn twice: the run goes at
+    x0.067. Measured over the last two draws alone, a step's two draws, the line read x0.00, as if it had stopped."""
+    from marinesim.render.clock import FrameClock
+
+    clock = FrameClock()
+    for step in range(8):
+        for repeat in range(2):
+            clock.draw(1.5 * step + 0.01 * repeat, 0.1 * step)
+    assert clock.real_time_factor == pytest.approx(0.1 / 1.5, rel=0.05)
+    assert "real time x0.07" in clock.line()
+
+
 @pytest.mark.parametrize("backend", ["pyfftw", "numpy"])
 def test_reproducible_fields_equal_the_frames_to_float32_rounding(north_sea, backend):
     """If this fails, the fields reports are measured on (numpy.fft) are not the fields the viewer draws

@@ -2,7 +2,8 @@
 
 Both are measured, not asked for: the frame time is the wall time between successive draws and the
 real-time factor is the simulated time that passed over the wall time it took, each over the last
-:data:`WINDOW_S` of wall time. A frame advances the run by at most ``controls.MAX_FRAME_S``, so a window
+:data:`WINDOW_S` of wall time and at least :data:`MIN_DRAWS` draws (a window may draw twice between two steps of
+the run: over those two alone the run would seem stopped). A frame advances the run by at most ``controls.MAX_FRAME_S``, so a window
 drawing 3 frames/s runs at a quarter of real time whatever the ``time x1`` asked for; this is the line
 that says so. Headless renders keep no clock: nothing measured goes into their pictures.
 """
@@ -12,7 +13,9 @@ from __future__ import annotations
 from collections import deque
 
 WINDOW_S = 1.0
-"""The figures are averages over this much wall time (s)."""
+"""The figures are averages over this much wall time (s)..."""
+MIN_DRAWS = 6
+"""... and over this many draws at least (slow frames: over a second each)."""
 
 
 class FrameClock:
@@ -25,7 +28,7 @@ class FrameClock:
     def draw(self, wall_s: float, sim_s: float) -> None:
         """Note a frame drawn at ``wall_s`` showing the simulation at ``sim_s``."""
         self._draws.append((wall_s, sim_s))
-        while len(self._draws) > 2 and wall_s - self._draws[1][0] >= self.window_s:
+        while len(self._draws) > MIN_DRAWS and wall_s - self._draws[1][0] >= self.window_s:
             self._draws.popleft()
 
     def restart(self) -> None:

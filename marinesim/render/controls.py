@@ -39,6 +39,8 @@ RAIN_STEPS_MM_H = (0.0, 2.5, 10.0, 50.0)
 SEEK_STEP_S = 30.0
 """A replay's LEFT / RIGHT: back / forward this long (s)."""
 FREE_SPEED_M_S = 40.0
+MESSAGE_S = 8.0
+"""A status message stays up this long (s of wall time), then goes."""
 MAX_FRAME_S = 0.1
 """A frame never advances the simulation by more than this (s of wall time): after a stall or a
 paused debugger the ship does not jump, and the solver is not asked to catch up minutes."""
@@ -56,6 +58,8 @@ class Controls:
     show_help: bool = False
     recorder: Recorder | None = None
     message: str = ""
+    """The last status message (:meth:`say`); shown for :data:`MESSAGE_S` of wall time."""
+    message_age_s: float = 0.0
     typing: str | None = None
     """The instructor's message being typed (None: not typing)."""
     restart: Callable[[float], None] | None = None
@@ -70,8 +74,13 @@ class Controls:
     def time_scale(self) -> float:
         return TIME_SCALES[self.time_scale_index]
 
+    def say(self, text: str) -> None:
+        """Show ``text`` on the status lines for :data:`MESSAGE_S` of wall time."""
+        self.message, self.message_age_s = text, 0.0
+
     def frame(self, wall_dt: float, held: set[str] = frozenset()) -> None:
         """One frame of ``wall_dt`` seconds: move the free camera for held keys, advance the run."""
+        self.message_age_s += max(wall_dt, 0.0)
         wall_dt = min(max(wall_dt, 0.0), MAX_FRAME_S)
         if self.scene.camera_name == "free" and self.typing is None:
             step = FREE_SPEED_M_S * wall_dt
@@ -97,7 +106,7 @@ class Controls:
             try:
                 action()
             except MarinesimError as error:  # e.g. a period change the ocean's tiles cannot carry
-                self.message = str(error)
+                self.say(str(error))
 
     def text(self, text: str) -> None:
         """Characters typed (pyglet's ``on_text``): they go into a message being typed."""
@@ -136,7 +145,8 @@ class Controls:
             "H": self.toggle_help, "TAB": self.toggle_panels, "SPACE": self.toggle_pause, "R": self.toggle_recording,
             "_1": camera("orbit"), "_2": camera("bridge"), "_3": camera("free"), "B": self.toggle_binoculars,
             "PLUS": lambda: self._scale_time(1), "EQUAL": lambda: self._scale_time(1),
-            "MINUS": lambda: self._scale_time(-1),
+            "NUM_ADD": lambda: self._scale_time(1), "MINUS": lambda: self._scale_time(-1),
+            "NUM_SUBTRACT": lambda: self._scale_time(-1),
         }
         if self.scene.replay is not None:
             return actions | {"LEFT": lambda: self.seek(sim.time - SEEK_STEP_S),
@@ -194,7 +204,7 @@ class Controls:
         """The instructor brings the next scripted event forward to now."""
         pending = self.exercise.pending_events()
         if not pending:
-            self.message = "no scripted event left to trigger"
+            self.say("no scripted event left to trigger")
             return
         self._act("trigger", index=pending[0])
 
@@ -204,7 +214,7 @@ class Controls:
     def toggle_binoculars(self) -> None:
         """On the bridge: raise the binoculars to the eye, or lower them."""
         if self.scene.camera_name != "bridge":
-            self.message = "binoculars: on the bridge (key 2)"
+            self.say("binoculars: on the bridge (key 2)")
             return
         self.scene.cameras["bridge"].binoculars = not self.scene.cameras["bridge"].binoculars
 
@@ -244,19 +254,19 @@ class Controls:
             try:
                 self.recorder = Recorder(self.exercise, self.recordings / name)
             except MarinesimError as error:
-                self.message = str(error)
+                self.say(str(error))
                 return
             self.exercise.note("recording", file=str(self.recorder.path))
-            self.message = f"recording to {self.recorder.path}"
+            self.say(f"recording to {self.recorder.path}")
         else:
             recorder, self.recorder = self.recorder, None
             try:
                 path = recorder.stop()
                 self.exercise.note("recorded", file=str(path), rows=recorder.rows)
-                self.message = f"recorded {recorder.rows} rows to {path}"
+                self.say(f"recorded {recorder.rows} rows to {path}")
             except (OSError, MarinesimError) as error:  # a full disk must not end the session
                 recorder.abandon()
-                self.message = f"the recording could not be written: {error}"
+                self.say(f"the recording could not be written: {error}")
 
     def status(self) -> list[str]:
         state = "PAUSED" if self.paused else f"time x{self.time_scale:g}"
@@ -265,7 +275,7 @@ class Controls:
         lines = [f"{state}{recording}{mode}   H: help"]
         if self.typing is not None:
             lines.append(f"message: {self.typing}_   (ENTER send, ESC cancel)")
-        return lines + ([self.message] if self.message else [])
+        return lines + ([self.message] if self.message and self.message_age_s < MESSAGE_S else [])
 
     def slider(self) -> Slider | None:
         """A replay's time slider: where the clock is in the session, its events and alarms marked."""
