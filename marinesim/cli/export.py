@@ -46,4 +46,6 @@ def handle(args: argparse.Namespace) -> int:
         for note in scenario.vessel.rao.notes:
             if note.startswith("implausible"):
                 print(f"note: {note}")
+    for note in scenario.notes:
+        print(f"note: {note}")
     return 0

@@ -26,7 +26,8 @@ def add(commands: argparse._SubParsersAction) -> None:
                    help="relative headings to plot, deg, waves towards (180 = head seas; default 180,135,90,45,0)")
     p.add_argument("--speed-kn", type=float,
                    help="speed, kn: for the plot (default 0), and the one speed --write puts in a .4 (a .4 has no "
-                        "speed column: a table of several speeds needs it)")
+                        "speed column: a table of several speeds needs it); a table of one speed used far from it "
+                        "is noted")
     p.add_argument("--write", type=Path, metavar="PATH",
                    help="write the table as PATH: .4 (WAMIT numeric output: periods, ULEN 1, phase lead) or .csv "
                         "(marinesim's native table, every speed), for another program to read")
@@ -47,6 +48,7 @@ def handle(args: argparse.Namespace) -> int:
     from marinesim.scenario.model import MAX_SPEED_KN
     from marinesim.vessel import read_rao
     from marinesim.vessel.plot import plot_rao
+    from marinesim.vessel.rao import one_speed_note
     from marinesim.vessel.summary import format_rao_summary, rao_summary
     from marinesim.vessel.write import check_extension, write_rao
 
@@ -66,6 +68,9 @@ def handle(args: argparse.Namespace) -> int:
     refuse_overwriting(args.plot, "--plot")
     notes = write_rao(table, args.write, speed=speed) if args.write else ()  # refused before anything is printed
     report = rao_summary(table)
+    note = None if speed is None else one_speed_note(table, speed, table.length, "the RAO file's")
+    if note is not None:
+        report["notes"].append(f"--speed-kn: {note}")
     if args.write:
         report["written"] = {"path": str(args.write), "notes": list(notes)}
     print(json_text(report) if args.json else format_rao_summary(report))

@@ -56,6 +56,8 @@ def handle(args: argparse.Namespace) -> int:
         print(f"vessel: {vessel.rao_path.name} ({vessel.rao.source_format}), {vessel.speed_kn:.3g} kn, "
               f"heading {vessel.heading_deg:g} deg, points: {', '.join(vessel.points) or 'none'}")
         print(f"manoeuvring: {vessel.ship.name}, {vessel.ship.describe()}")
+    for note in scenario.notes:
+        print(f"note: {note}")
     if not args.headless:
         from marinesim.render.viewer import NoDisplay, Viewer
 

@@ -19,7 +19,7 @@ from marinesim.criteria.interruptions import DEFAULT_TIPPING_COEFFICIENT
 from marinesim.criteria.monitor import Condition, Criterion, parse_condition
 from marinesim.criteria.quantities import Options
 from marinesim.errors import FileFormatError, MarinesimError, ScenarioError
-from marinesim.hull import Hull, VisualMesh, load_hull, load_visual_mesh
+from marinesim.hull import Hull, VisualMesh, hydrostatics, load_hull, load_visual_mesh
 from marinesim.manoeuvring.ship import Ship
 from marinesim.manoeuvring.station import StationKeeping
 from marinesim.resources import resource_dir
@@ -30,7 +30,7 @@ from marinesim.scenario.model import (HULL_OPTIONS, VISUAL_MESH_OPTIONS, WAVE_PA
 from marinesim.sea.build import wave_system
 from marinesim.sea.seastate import SeaState
 from marinesim.vessel.body import RigidBody
-from marinesim.vessel.rao import RaoTable
+from marinesim.vessel.rao import RaoTable, one_speed_note
 from marinesim.vessel.read import read_rao
 
 
@@ -122,7 +122,8 @@ class Briefing:
 @dataclass(frozen=True)
 class Scenario:
     """A validated scenario: the sea state, the ocean's options, the vessel (if any), the run, the
-    exercise's events (in file order) and criteria."""
+    exercise's events (in file order) and criteria; ``notes``: lines for the user on what it asks of its files (a
+    table of one speed used far from it, :func:`_speed_notes`)."""
 
     path: Path
     sea: SeaState
@@ -133,6 +134,7 @@ class Scenario:
     criteria: tuple[Criterion, ...] = ()
     briefing: Briefing | None = None
     environment: EnvironmentOptions = EnvironmentOptions()
+    notes: tuple[str, ...] = ()
 
     @property
     def name(self) -> str:
@@ -179,7 +181,9 @@ def _build(path: Path, file: ScenarioFile) -> Scenario:
     criteria = tuple(_criterion(c) for c in file.criteria)
     briefing = None if file.briefing is None else Briefing(
         file.briefing.text.strip(), tuple((o.text, tuple(o.criteria)) for o in file.briefing.objectives))
-    return Scenario(path.resolve(), sea, file.ocean, file.run, vessel, events, criteria, briefing, file.environment)
+    notes = () if vessel is None else _speed_notes(vessel, events)
+    return Scenario(path.resolve(), sea, file.ocean, file.run, vessel, events, criteria, briefing, file.environment,
+                    notes)
 
 
 def _sea(where: str, options: list[SeaOptions], depth: float, whole: str) -> SeaState:
@@ -216,12 +220,39 @@ def _criterion(options: CriterionOptions) -> Criterion:
 
 
 def _check_speed(where: str, rao: RaoTable, speed_kn: float) -> None:
-    """Refuse a speed outside the RAO table's speeds (a table of one speed serves any)."""
+    """Refuse a speed outside the RAO table's speeds; a table of one speed serves any (:func:`_speed_notes`
+    notes one used far from its speed)."""
     low, high = rao.speed_range
     speed = speed_kn * KNOT
     if rao.speed.size > 1 and not low - 1e-6 <= speed <= high + 1e-6:
         raise ScenarioError(f"{where}: {speed_kn:g} kn is outside the RAO table's speeds "
                             f"{low / KNOT:.3g}..{high / KNOT:.3g} kn")
+
+
+def _speed_notes(vessel: Vessel, events: tuple[Event, ...]) -> tuple[str, ...]:
+    """Where the vessel's RAO table has one speed: a note for the vessel's speed and each event's speed order far
+    from it (:func:`~marinesim.vessel.rao.one_speed_note`), each led by its key, on the ship's length
+    (:func:`_length`)."""
+    if vessel.rao.speed.size > 1:
+        return ()
+    asked = [("vessel.speed_kn", vessel.speed_m_s)] + [(f"events[{i}].speed_kn", event.speed_m_s)
+                                                       for i, event in enumerate(events) if event.speed_m_s is not None]
+    length, length_from = _length(vessel)
+    notes = [(where, one_speed_note(vessel.rao, speed, length, length_from)) for where, speed in asked]
+    return tuple(f"{where}: {note}" for where, note in notes if note is not None)
+
+
+def _length(vessel: Vessel) -> tuple[float | None, str]:
+    """The ship's length for Froude numbers (m) and whose it is: the hull's (at the waterline, else overall,
+    :attr:`~marinesim.hull.Hydrostatics.froude_length_m`), else the one the RAO file states, else her manoeuvring
+    model's; (None, "") where none of them gives one."""
+    if vessel.hull is not None:
+        return hydrostatics(vessel.hull).froude_length_m, "the hull's"
+    if vessel.rao.length is not None:
+        return vessel.rao.length, "the RAO file's"
+    if isinstance(vessel.ship, Ship):
+        return vessel.ship.length_m, "the manoeuvring model's"
+    return None, ""
 
 
 def _rigid_body(options: VesselOptions) -> RigidBody:

@@ -16,7 +16,9 @@ Outside the tabulated frequencies:
 
 A table of one frequency (a regular-wave result) is extended the same way from that frequency.
 
-Speeds outside a multi-speed table are clamped to its ends (scenarios refuse them up front).
+Speeds outside a multi-speed table are clamped to its ends (scenarios refuse them up front). A table of one
+speed serves every speed with the encounter frequency shifted but its own values unchanged; far from its speed
+that misses the forward-speed effects on the RAO itself, and :func:`one_speed_note` says so.
 """
 
 from __future__ import annotations
@@ -59,6 +61,13 @@ MAX_ROTATION_SLOPES = 50.0
 RESONANCE_DAMPING = 0.1
 """Largest damping (fraction of critical) of a peak that may be a real resonance beyond the limits above (a moored
 spar's surge, a flap's roll): such a peak is described and left to the reader's caller to refuse or accept."""
+ONE_SPEED_FROUDE = 0.1
+"""A table of one speed used at a Froude number ``U / sqrt(g L)`` more than this from its own is noted (not
+refused): at 15 kn (Fn 0.19) the S175's zero-speed table misses the head-sea pitch peak by tens of percent
+(``tests/test_vessel_one_speed.py``), while below Fn 0.1 forward speed changes a ship's RAOs little."""
+ONE_SPEED_KN = 5.0
+"""With no length known, a table of one speed used more than this many knots from its own speed is noted
+instead: Fn 0.1 for a 67 m ship, so a longer ship is noted no later than on her Froude number."""
 
 
 @dataclass(frozen=True)
@@ -120,6 +129,7 @@ class RaoTable:
     covered: tuple[tuple[float, float], ...] | None = None
     resonances: tuple[Resonance, ...] = ()
     draft: float | None = None              # the vessel's draft (m) as her file gives it; None if it gives none
+    length: float | None = None             # the ship's length (m) as her file states it (VERES: Lpp); else None
 
     def __call__(self, omega: np.ndarray, beta: np.ndarray, speed: float = 0.0) -> np.ndarray:
         """Interpolated RAOs, shape (n, 6), at wave frequencies ``omega`` (rad/s, > 0) and
@@ -200,6 +210,29 @@ class RaoTable:
         return float(self.speed[0]), float(self.speed[-1])
 
 
+def one_speed_note(table: RaoTable, speed: float, length: float | None, length_from: str = "") -> str | None:
+    """A line for the user where ``table`` has one speed and serves ``speed`` (m/s) far from it: Froude numbers
+    ``U / sqrt(g L)`` on the ship's ``length`` (m; ``length_from`` says whose) more than :data:`ONE_SPEED_FROUDE`
+    apart, or, ``length`` None, speeds more than :data:`ONE_SPEED_KN` apart; None otherwise, and for a table of
+    several speeds (interpolated within them)."""
+    if table.speed.size > 1:
+        return None
+    own = float(table.speed[0])
+    if length is None:
+        if abs(speed - own) <= ONE_SPEED_KN * KNOT + 1e-9:
+            return None
+        how = f"length unknown, so no Froude number: noted more than {ONE_SPEED_KN:g} kn from the table's speed"
+    else:
+        froude, own_froude = (u / math.sqrt(G * length) for u in (speed, own))
+        if abs(froude - own_froude) <= ONE_SPEED_FROUDE:
+            return None
+        ship = f"L {length:.4g} m" + (f", {length_from}" if length_from else "")
+        how = f"Fn {froude:.3f}" + (f", the table's {own_froude:.3f}" if own > 0.0 else "") + f"; {ship}"
+    return (f"the RAO table has one speed ({own / KNOT:.3g} kn) and is used at {speed / KNOT:.3g} kn ({how}): "
+            "the forward-speed effects are missing (the encounter frequency shift is applied, but the RAO's own "
+            "dependence on speed is not)")
+
+
 def _bilinear(omega_grid: np.ndarray, beta_grid: np.ndarray, table: np.ndarray,
               omega: np.ndarray, beta: np.ndarray) -> np.ndarray:
     """Linear on Re/Im in frequency and heading; ``table`` is (len(beta_grid), len(omega_grid), 6).
@@ -237,17 +270,18 @@ def refer_phases(values: np.ndarray, omega: np.ndarray, headings_deg: np.ndarray
 def make_table(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: np.ndarray, *,
                reference_point=(0.0, 0.0, 0.0), rho: float = 1025.0, g: float = G, source: str = "",
                source_format: str = "", notes: tuple[str, ...] = (), depth: float = math.inf,
-               draft: float | None = None) -> RaoTable:
+               draft: float | None = None, length: float | None = None) -> RaoTable:
     """Validate and complete an RAO table already in the internal convention.
 
     ``values`` has shape (speeds, headings, frequencies, 6). Headings (rad) spanning exactly
     0..pi are completed by the port/starboard mirror (:data:`MIRROR_SIGN`); headings that leave a
     gap wider than :data:`MAX_HEADING_GAP` make a partial table (:attr:`RaoTable.covered`).
-    ``depth``: water depth (m, > 0; inf = deep); ``draft``: the vessel's (m, > 0) if the file gives it. Raises
-    :class:`ParameterError` on anything else.
+    ``depth``: water depth (m, > 0; inf = deep); ``draft`` and ``length``: the vessel's (m, > 0) if the file
+    gives them. Raises :class:`ParameterError` on anything else.
     """
     depth = require_positive("water depth", depth, allow_infinite=True)
     draft = None if draft is None else require_positive("draft", draft)
+    length = None if length is None else require_positive("length", length)
     omega = np.asarray(omega, dtype=float)
     beta = np.asarray(beta, dtype=float)
     speed = np.atleast_1d(np.asarray(speed, dtype=float))
@@ -288,7 +322,7 @@ def make_table(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: n
     implausible, orbit_resonances = _implausible(omega, beta, speed, values, g, depth, {r.dof for r in resonances})
     return RaoTable(omega, beta, speed, values, tuple(float(v) for v in reference_point), float(rho),
                     float(g), str(source), source_format, tuple(notes) + implausible, mirrored, depth, covered,
-                    resonances + orbit_resonances, draft)
+                    resonances + orbit_resonances, draft, length)
 
 
 def _where(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, index: tuple) -> str:

@@ -20,7 +20,8 @@ repeats each check on the S175 and the supply vessel):
 * Rotations are in rad/m (pitch / k -> 1; in deg/m it would be 57).
 
 So the only conversion is degrees -> radians for ``HEAD``. The reference point is the motion
-reference ``(XMTN, 0, ZMTN)`` in VERES's frame (x from midships, z above the baseline).
+reference ``(XMTN, 0, ZMTN)`` in VERES's frame (x from midships, z above the baseline). ``LPP`` and ``T`` are kept
+as the table's ``length`` and ``draft``.
 """
 
 from __future__ import annotations
@@ -119,6 +120,7 @@ def read_veres(path: str | Path) -> RaoTable:
              f"LCG {lcg:g} m, VCG {vcg:g} m; reference point (XMTN, 0, ZMTN)",)
     try:
         return make_table(np.array(freqs), np.radians(heads), np.array(speeds), values, reference_point=reference,
-                          rho=rho, g=g, source=str(path), source_format="veres", notes=notes, draft=draught)
+                          rho=rho, g=g, source=str(path), source_format="veres", notes=notes, draft=draught,
+                          length=lpp)
     except ParameterError as error:
         raise FileFormatError(path, None, str(error)) from None
