@@ -50,14 +50,20 @@ def handle(args: argparse.Namespace) -> int:
 
 
 def table(result: dict) -> list[str]:
-    """The assessment as text lines: one per criterion, then the verdict."""
+    """The assessment as text lines: one per criterion, then the verdict; a run stopped early says how much of it
+    ran, and the level of each criterion it could not judge is marked so."""
+    from marinesim.session.exercise import ran_words
+
     rows = [("criterion", "worst", "limit", "unit", "level", "above limit", "first above")]
     for c in result["criteria"]:
         worst = "settling" if c["value"] is None else f"{c['value']:.3g}"
         first = "-" if c["first_exceeded_s"] is None else f"{c['first_exceeded_s']:.0f} s"
-        rows.append((c["name"], worst, f"{c['limit']:.3g}", c["unit"] or "-", c["level"],
+        level = c["level"] if c["judged"] else f"{c['level']} (not judged)"
+        rows.append((c["name"], worst, f"{c['limit']:.3g}", c["unit"] or "-", level,
                      f"{c['time_exceeded_s']:.0f} s", first))
     widths = [max(len(row[i]) for row in rows) for i in range(len(rows[0]))]
     lines = [f"{result['scenario']}: {result['duration_s']:g} s at dt {result['dt_s']:g} s, seed {result['seed']}"]
+    if not result["complete"]:
+        lines.append(f"stopped early: ran {ran_words(result['duration_s'], result['planned_s'])}")
     lines += ["  ".join(cell.ljust(width) for cell, width in zip(row, widths)).rstrip() for row in rows]
     return lines + [f"verdict: {result['verdict']}"]

@@ -34,7 +34,7 @@ def handle(args: argparse.Namespace) -> int:
     from marinesim.report.debrief import debrief, sickness_criteria
     from marinesim.report.html import write_report
     from marinesim.scenario import load_scenario, with_run
-    from marinesim.session.exercise import Exercise
+    from marinesim.session.exercise import Exercise, ran_words
     from marinesim.session.log import read_log
     from marinesim.session.replay import replay_session, session_scenario
     from marinesim.session.timeline import Simulation
@@ -60,7 +60,9 @@ def handle(args: argparse.Namespace) -> int:
             finally:
                 simulation.close()
     out = write_report(debrief(exercise, session), args.out)
-    print(f"verdict: {exercise.assessment()['verdict']}")
+    result = exercise.assessment()
+    ran = "" if result["complete"] else f" (stopped early: ran {ran_words(result['duration_s'], result['planned_s'])})"
+    print(f"verdict: {result['verdict']}{ran}")
     marked = " (marked UNVERIFIED LOG)" if session is not None and not session.verification.verified else ""
     print(f"wrote the after-action report: {out}{marked}")
     return 0

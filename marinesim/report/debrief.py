@@ -5,7 +5,8 @@ dictionary :mod:`marinesim.report.html` lays out: the briefing and a verdict per
 criterion's running value at every evaluation, the events, alarms with their acknowledgements, the
 messages and actions, motion sickness (MSI, MSDV) at the vessel's points, the ship's track and handling
 (heading, speed, rudder, propeller), and the conditions; from a session log, whether the log is verified
-(:class:`~marinesim.session.log.Verification`), for the report's header to say.
+(:class:`~marinesim.session.log.Verification`), for the report's header to say; of a run stopped before its
+planned duration, how much of it ran, and which objectives it could not judge.
 """
 
 from __future__ import annotations
@@ -20,12 +21,14 @@ from marinesim.criteria.monitor import Criterion
 from marinesim.criteria.sickness import MAX_WF_DT_S
 from marinesim.scenario import Scenario
 from marinesim.sea.seastate import SeaState
-from marinesim.session.exercise import Exercise
+from marinesim.session.exercise import Exercise, ran_words
 from marinesim.session.log import SessionLog
 from marinesim.session.sidecar import sha256
 
 VERDICTS = {"ok": "met", "caution": "met with caution", "exceeded": "not met", "settling": "no value"}
-"""An objective's verdict from the worst level of the criteria that judge it."""
+"""An objective's verdict from the worst level of the criteria that judge it, in a run that went through its
+planned duration; in one stopped early an objective is "not met" if one of its criteria went above its limit,
+else "not judged" (:meth:`~marinesim.session.exercise.Exercise.assessment`)."""
 ORDER = ("settling", "ok", "caution", "exceeded")
 
 
@@ -51,7 +54,8 @@ def debrief(exercise: Exercise, log: SessionLog | None = None) -> dict:
         objectives = []
         for text, names in scenario.briefing.objectives:
             worst = max((levels[name] for name in names), key=ORDER.index, default="settling")
-            objectives.append({"text": text, "criteria": list(names), "verdict": VERDICTS[worst]})
+            verdict = VERDICTS[worst] if result["complete"] or worst == "exceeded" else "not judged"
+            objectives.append({"text": text, "criteria": list(names), "verdict": verdict})
         briefing = {"text": scenario.briefing.text, "objectives": objectives}
     messages = [{"time_s": h.time_s, "text": h.event.message, "source": "event"}
                 for h in exercise.happened if h.event.message]
@@ -72,6 +76,7 @@ def debrief(exercise: Exercise, log: SessionLog | None = None) -> dict:
                                                "problems": [words for _, words in log.verification.problems]},
         "briefing": briefing,
         "verdict": result["verdict"],
+        "stopped_early": None if result["complete"] else ran_words(result["duration_s"], result["planned_s"]),
         "conditions": _conditions(exercise, log),
         "criteria": criteria,
         "events": result["events"],
@@ -147,7 +152,7 @@ def _conditions(exercise: Exercise, log: SessionLog | None) -> dict:
                      "gamma": getattr(getattr(system, "spectrum", None), "gamma", None),
                      "spreading_s": getattr(getattr(system, "spreading", None), "s", None)})
     out = {"scenario": str(scenario.path), "scenario_sha256": sha256(scenario.path), "seed": scenario.run.seed,
-           "duration_s": exercise.sim.time, "dt_s": scenario.run.dt_s,
+           "duration_s": exercise.sim.time, "planned_s": exercise.duration_s, "dt_s": scenario.run.dt_s,
            "log": str(log.path) if log is not None else None,
            "log_sha256": log.verification.sha256 if log is not None else None,
            "marinesim": __version__, "sea": seas}

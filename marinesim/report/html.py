@@ -6,7 +6,9 @@ the overall verdict, the briefing with a verdict per objective, each criterion o
 statistics, the ship's track and handling (with a vessel), the timeline and the alarms with their
 acknowledgement delays, motion sickness, the log of events, messages and actions, and the conditions. A
 debrief of a session log says at the top whether the log is verified; one that is not gets a red
-"UNVERIFIED LOG" banner above everything else, saying why, and the page's title says so too. A
+"UNVERIFIED LOG" banner above everything else, saying why, and the page's title says so too. A run stopped
+before its planned duration says so under the title, with the share that ran; its verdict reads INCOMPLETE
+unless a criterion went above its limit, and each objective and criterion it could not judge NOT JUDGED. A
 part the data leave out (or give empty) is left out of the page. Every text from the data is HTML-escaped.
 The same data give the same bytes: no dates, and the PNGs carry no metadata (:mod:`marinesim.report.plots`).
 The one script counts the plots the browser decoded into ``body[data-plots-loaded]``, for a test to read the
@@ -26,7 +28,8 @@ from marinesim.report.plots import (CAUTION, EXCEEDED, NM, NONE, OK, STATION_M, 
                                     handling_png, number, timeline_png, track_png, with_unit)
 
 LEVELS = {"within limits": "ok", "met": "ok", "ok": "ok", "caution": "caution", "met with caution": "caution",
-          "exceeded": "exceeded", "not met": "exceeded", "settling": "none", "no value": "none"}
+          "exceeded": "exceeded", "not met": "exceeded", "settling": "none", "no value": "none", "incomplete": "none",
+          "not judged": "none"}
 """A verdict, objective verdict or criterion level -> its badge's colour class."""
 SHOWN = {"settling": "no value yet", "ok": "within limits"}
 """A criterion's level in the words a badge shows."""
@@ -80,6 +83,8 @@ figcaption{{font-size:13.5px;margin-top:5px;display:flex;gap:10px;align-items:ba
 .unverified strong{{display:block;font-size:24px;letter-spacing:.08em}}
 .unverified p{{margin:4px 0;max-width:none}} .unverified ul{{margin:4px 0 6px;padding-left:22px}}
 .logcheck{{margin:4px 0 0;max-width:none;font-size:13px;font-weight:bold;color:var(--ok)}}
+.stopped{{margin:6px 0 0;max-width:none;font-size:14px;border-left:4px solid var(--none);padding:4px 10px;
+background:var(--band)}} .facts div.none{{border-left-color:var(--none)}}
 footer{{margin-top:36px;padding-top:8px;border-top:1px solid var(--rule);color:var(--muted);font-size:12px}}
 @page{{size:A4;margin:14mm 12mm}}
 @media print{{body{{font-size:10pt}} main{{max-width:none;padding:0}} h1{{font-size:20pt}} h2{{font-size:14pt;
@@ -146,14 +151,17 @@ class _Page:
     def header_section(self) -> str:
         verdict = self.data.get("verdict") or "no value"
         source = self.data.get("source")
+        stopped = self.data.get("stopped_early")
+        ran = stopped or (f"{self.duration:g} s" if self.duration else "")
         facts = [self._fact("Run", self.clock(self.duration) if self.duration else "—",
-                            " · ".join(x for x in (f"{self.duration:g} s" if self.duration else "",
-                                                   _seed(self.conditions.get("seed"))) if x))]
+                            " · ".join(x for x in (ran, _seed(self.conditions.get("seed"))) if x),
+                            "none" if stopped else "")]
         if self.criteria:
-            levels = [c.get("level") for c in self.criteria]
-            worst = next((lv for lv in ("exceeded", "caution", "ok") if lv in levels), "")
+            levels = [_reading(c) for c in self.criteria]
+            worst = next((lv for lv in ("exceeded", "caution", "ok") if lv in levels), "none" if stopped else "")
             counts = ", ".join(f"{levels.count(lv)} {SHOWN.get(lv, lv)}" for lv in ("exceeded", "caution", "ok",
-                                                                                     "settling") if lv in levels)
+                                                                                     "settling", "not judged")
+                               if lv in levels)
             facts.append(self._fact("Criteria", str(len(self.criteria)), counts, worst))
         alarms = [a for _, a in self.alarms]
         acked = [a["acknowledged_s"] - a["raised_s"] for a in alarms if a.get("acknowledged_s") is not None]
@@ -165,17 +173,19 @@ class _Page:
         objectives = (self.data.get("briefing") or {}).get("objectives") or []
         if objectives:
             met = sum(o.get("verdict") in ("met", "met with caution") for o in objectives)
-            worst = next((LEVELS[v] for v in ("not met", "met with caution") if any(o.get("verdict") == v
-                                                                                      for o in objectives)), "ok")
+            verdicts = [o.get("verdict") for o in objectives]
+            worst = next((LEVELS[v] for v in ("not met", "not judged", "met with caution") if v in verdicts), "ok")
             facts.append(self._fact("Objectives", f"{met} of {len(objectives)} met",
-                                    _count([o.get("verdict") for o in objectives], "not met", "met with caution"),
-                                    worst))
+                                    _count(verdicts, "not met", "not judged", "met with caution"), worst))
         check = self.data.get("log_check")
         return ("<header class='top'>\n" + (self._unverified(check) if check and not check.get("verified") else "")
                 + "<div class='kicker'>After-action report · debrief</div>\n"
                 f"<div class='titlerow'><h1>{_e(self.data.get('title') or 'exercise')}</h1>"
                 f"{_badge(verdict, extra='verdict')}</div>\n"
                 + (f"<p class='source'>{_e(source)}</p>\n" if source else "")
+                + (f"<p class='stopped'><b>Stopped early:</b> {_e(stopped)} of the exercise ran. An objective is "
+                   "judged only over the whole run, unless one of its criteria went above its limit before the "
+                   "stop: the others are NOT JUDGED.</p>\n" if stopped else "")
                 + ("<p class='logcheck'>Session log verified: it is the log the session wrote on this installation, "
                    "unchanged and complete.</p>\n" if check and check.get("verified") else "")
                 + f"<dl class='facts'>{''.join(facts)}</dl>\n</header>")
@@ -241,7 +251,7 @@ class _Page:
                 bits.append(f"{criterion['time_exceeded_s']:.0f} s above the limit")
             if mine:
                 bits.append(f"{len(mine)} alarm{'s' if len(mine) > 1 else ''}")
-            caption = (f"{_level_badge(criterion.get('level'))} <b>{_e(criterion.get('name', ''))}</b>"
+            caption = (f"{_level_badge(_reading(criterion))} <b>{_e(criterion.get('name', ''))}</b>"
                        f"<span>{_e(' · '.join(bits))}</span>")
             out.append(f"<figure>{_img(png, alt)}<figcaption>{caption}</figcaption></figure>")
         return "\n".join(out) + "\n</section>"
@@ -256,7 +266,7 @@ class _Page:
             above = c.get("time_exceeded_s")
             share = "—" if above is None or not self.duration else f"{100 * above / self.duration:.1f} %"
             point = f"<br><span class='muted'>{_e(c['point'])}</span>" if c.get("point") else ""
-            rows.append((_td(f"<b>{_e(c.get('name', ''))}</b>{point}"), _td(_level_badge(c.get("level"))),
+            rows.append((_td(f"<b>{_e(c.get('name', ''))}</b>{point}"), _td(_level_badge(_reading(c))),
                          _td("—" if c.get("value") is None else _e(with_unit(c["value"], unit)), "num"),
                          _td(self.clock(c.get("value_at_s")) if c.get("value") is not None else "—", "num"),
                          _td("—" if limit is None else _e(with_unit(limit, unit)), "num"),
@@ -404,7 +414,9 @@ class _Page:
             rows.append(("random seed", _e(str(c["seed"]))))
         if c.get("duration_s") is not None:
             step = f", time step {c['dt_s']:g} s" if c.get("dt_s") is not None else ""
-            rows.append(("run", f"{c['duration_s']:g} s ({self.clock(c['duration_s'])}){step}"))
+            early = self.data.get("stopped_early")
+            ran = f", stopped early: ran {_e(early)}" if early else ""
+            rows.append(("run", f"{c['duration_s']:g} s ({self.clock(c['duration_s'])}){ran}{step}"))
         if c.get("marinesim"):
             rows.append(("marinesim", _e(str(c["marinesim"]))))
         vessel = c.get("vessel") or {}
@@ -490,8 +502,13 @@ def _badge(verdict: str, extra: str = "") -> str:
     return f"<span class='badge {kind}{' ' + extra if extra else ''}'>{_e(verdict)}</span>"
 
 
+def _reading(criterion: dict) -> str | None:
+    """A criterion's level, or "not judged" where the run stopped before it could be judged."""
+    return criterion.get("level") if criterion.get("judged", True) else "not judged"
+
+
 def _level_badge(level: str | None) -> str:
-    """A criterion's level on its colour, in words (ok: within limits, settling: no value yet)."""
+    """A criterion's level on its colour, in words (ok: within limits, settling: no value yet, not judged)."""
     kind = LEVELS.get(level or "settling", "none")
     return f"<span class='badge {kind}'>{_e(SHOWN.get(level or 'settling', level))}</span>"
 

@@ -18,6 +18,11 @@ of sea, the trainee's helm, telegraph and autopilot orders, an event triggered e
 acknowledgement) go through
 :meth:`Exercise.act`; everything that happens is kept in :attr:`Exercise.journal` with its simulation
 time, the session log (:mod:`marinesim.session.log`) that a replay runs again.
+
+A run stopped before its planned duration (:meth:`Exercise.complete` false: the session closed early) is
+judged only as far as it went: a criterion that went above its limit did so, and stays exceeded, but one
+still within it may yet have gone above later, so it is not judged; the verdict of such a run with nothing
+exceeded is ``incomplete``, never ``within limits``.
 """
 
 from __future__ import annotations
@@ -98,6 +103,13 @@ def quiet(line: str) -> None:
 def last_row(t: float, dt: float) -> int:
     """The last row of the run's time grid ``k dt`` at or before ``t`` (s)."""
     return math.floor(t / dt + 1e-9)
+
+
+def ran_words(ran_s: float, planned_s: float) -> str:
+    """How much of a run of ``planned_s`` (s) ran, ``ran_s`` (s), in words: '386 s of 1,800 s (21 %)' (the time and
+    the share rounded down, so a run short of its end never reads as all of it)."""
+    share = math.floor(100.0 * min(ran_s / planned_s, 1.0) + 1e-9) if planned_s > 0 else 100
+    return f"{math.floor(ran_s + 1e-9):,d} s of {planned_s:,g} s ({share} %)"
 
 
 class Exercise:
@@ -370,18 +382,29 @@ class Exercise:
         return [(c, tally.value, c.level(tally.value))
                 for c, tally in zip(self.criteria, self.monitor.tallies)]
 
+    def complete(self) -> bool:
+        """Whether the run has gone through its planned duration: recorded the last row of its time grid."""
+        return last_row(self.sim.time, self.dt) >= last_row(self.duration_s, self.dt)
+
     def assessment(self) -> dict:
-        """The criteria and events of the run so far, as ``marinesim assess`` prints them."""
+        """The criteria and events of the run so far, as ``marinesim assess`` prints them: ``duration_s`` the time
+        run (s), ``planned_s`` the run's planned duration (s), ``complete`` whether it ran through it. A criterion
+        is ``judged`` if the run is complete or it went above its limit (an exceedance is a fact however early the
+        run stopped; a value within the limit so far is not a pass). The verdict is ``exceeded`` if a criterion
+        went above its limit, else ``incomplete`` for a run stopped early, else ``caution``, ``within limits``, or
+        ``no value`` while every criterion is settling."""
+        complete = self.complete()
         criteria = []
         tallies = self.monitor.tallies if self.monitor is not None else []
         for criterion, tally in zip(self.criteria, tallies):
+            level = criterion.level(tally.worst)
             criteria.append({
                 "name": criterion.label, "point": criterion.point, "quantity": criterion.quantity,
                 "unit": criterion.measure.unit, "window_s": criterion.window, "value": tally.worst,
                 "value_at_s": tally.worst_s, "limit": criterion.limit, "caution": criterion.caution,
                 "exceeded": tally.first_exceeded_s is not None, "time_exceeded_s": tally.time_exceeded_s,
                 "first_exceeded_s": tally.first_exceeded_s,
-                "level": criterion.level(tally.worst)})
+                "level": level, "judged": complete or level == "exceeded"})
         happened = {h.index: h.time_s for h in self.happened}
         events = [{"index": i, "trigger": (f"at {e.at_s:g} s" if e.at_s is not None else f"when {e.condition}"),
                    "happened_s": happened.get(i), "what": e.describe().partition(": ")[2], "message": e.message}
@@ -389,8 +412,8 @@ class Exercise:
         alarms = [{"criterion": a.name, "raised_s": a.raised_s, "value": a.value, "limit": a.limit,
                    "acknowledged_s": a.acknowledged_s, "cleared_s": a.cleared_s} for a in self.alarms]
         levels = {c["level"] for c in criteria}
-        verdict = ("exceeded" if "exceeded" in levels else "caution" if "caution" in levels
-                   else "no value" if levels == {"settling"} else "within limits")
+        verdict = ("exceeded" if "exceeded" in levels else "incomplete" if not complete
+                   else "caution" if "caution" in levels else "no value" if levels == {"settling"} else "within limits")
         return {"scenario": str(self.scenario.path), "seed": self.scenario.run.seed,
-                "duration_s": self.sim.time, "dt_s": self.dt, "criteria": criteria, "events": events,
-                "alarms": alarms, "verdict": verdict}
+                "duration_s": self.sim.time, "planned_s": self.duration_s, "complete": complete, "dt_s": self.dt,
+                "criteria": criteria, "events": events, "alarms": alarms, "verdict": verdict}
