@@ -2,10 +2,10 @@
 
 Both are measured, not asked for: the frame time is the wall time between successive draws and the
 real-time factor is the simulated time that passed over the wall time it took, each over the last
-:data:`WINDOW_S` of wall time and at least :data:`MIN_DRAWS` draws (a window may draw twice between two steps of
-the run: over those two alone the run would seem stopped). A frame advances the run by at most ``controls.MAX_FRAME_S``, so a window
-drawing 3 frames/s runs at a quarter of real time whatever the ``time x1`` asked for; this is the line
-that says so. Headless renders keep no clock: nothing measured goes into their pictures.
+:data:`WINDOW_S` of wall time and at least :data:`MIN_DRAWS` draws (a window may draw twice between two steps
+of the run: over those two alone the run would seem stopped). A frame advances the run by at most
+``controls.MAX_FRAME_S``, so a window drawing 3 frames/s runs at a quarter of real time whatever the ``time x1``
+asked for; this is the line that says so. Headless renders keep no clock: nothing measured goes into their pictures.
 """
 
 from __future__ import annotations
