@@ -187,7 +187,7 @@ class _Page:
                    "judged only over the whole run, unless one of its criteria went above its limit before the "
                    "stop: the others are NOT JUDGED.</p>\n" if stopped else "")
                 + ("<p class='logcheck'>Session log verified: it is the log the session wrote on this installation, "
-                   "unchanged and complete.</p>\n" if check and check.get("verified") else "")
+                   "unchanged and whole (it ends with its end entry).</p>\n" if check and check.get("verified") else "")
                 + f"<dl class='facts'>{''.join(facts)}</dl>\n</header>")
 
     @staticmethod
