@@ -62,7 +62,7 @@ def read_wamit(path: str | Path, *, ulen: float | None = None, period_kind: int 
         return read_hams_wamit(path)
     settings = Settings.beside(path, ulen=ulen, period_kind=period_kind, body=body)
     notes = list(settings.notes)
-    rho = _frc_rho(path.with_suffix(".frc"))
+    rho = frc_rho(path.with_suffix(".frc"))
     if rho is None:
         rho = RHO_SEAWATER
         notes.append(f"rho not found (no .frc beside the file): assumed {RHO_SEAWATER:g} kg/m^3")
@@ -306,7 +306,7 @@ def _gdf_settings(gdf: Path) -> tuple[float, float | None]:
     return header.g, header.ulen
 
 
-def _frc_rho(frc: Path) -> float | None:
+def frc_rho(frc: Path) -> float | None:
     """RHO of the ``.frc`` beside the file (IALTFRC 2), or None without one or in form 1 (no RHO there)."""
     if not frc.is_file():
         return None

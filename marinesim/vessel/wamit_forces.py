@@ -38,7 +38,7 @@ from marinesim.errors import FileFormatError
 from marinesim.tokens import parse_float, parse_int, read_text
 from marinesim.vessel.body import RigidBody, gravity_stiffness, rigid_body_mass
 from marinesim.vessel.rao import DOFS, RaoTable
-from marinesim.vessel.wamit import Settings, frc_form, sniff_forces, table_from
+from marinesim.vessel.wamit import Settings, frc_form, frc_rho, sniff_forces, table_from
 from marinesim.vessel.wamit_rows import RIGID_MODES, ignored_modes_note, read_rows
 from marinesim.vessel.wamit_frc import ForceControl, read_frc
 
@@ -47,6 +47,9 @@ SET = (".1", ".3", ".hst", ".frc")
 NO_FRC = ForceControl(form=0, rho=None, vcg=0.0, cog=None, radii=None, mass=None, damping=np.zeros((6, 6)),
                       stiffness=np.zeros((6, 6)))
 """What a force set without a ``.frc`` has (its mass then comes from the scenario)."""
+ONLY_RHO = -1
+"""The ``form`` of a ``.frc`` read for its rho only (body n of a run of several: its mass, centre of gravity and
+external matrices are the scenario's)."""
 ROTATION = np.arange(RIGID_MODES) >= 3
 PAIR_POWER = ROTATION[:, None].astype(int) + ROTATION[None, :].astype(int)
 """0, 1, 2: how many of the mode pair (i, j) are rotations; WAMIT's length exponents build on it."""
@@ -130,7 +133,11 @@ def read_force_set(path: str | Path, *, ulen: float | None = None, rigid_body: R
                                           "and radii_of_gyration_m in the scenario's [vessel], or read the run's .4")
     notes = list(settings.notes)
     if settings.bodies > 1 and ".frc" in files:  # not this body's mass, centre of gravity or external matrices
-        frc = replace(NO_FRC, form=-1, rho=_rho_of(files[".frc"], frc_form(path.with_suffix(".cfg"))))
+        try:
+            rho = frc_rho(files[".frc"])
+        except FileFormatError:  # a layout of several bodies: not read here
+            rho = None
+        frc = replace(NO_FRC, form=ONLY_RHO, rho=rho)
         notes.append(f"{files['.frc'].name} read for rho only: body {settings.body}'s mass, centre of gravity and "
                      "external matrices are the scenario's")
     else:
@@ -332,7 +339,7 @@ def _run_gravity(path: Path, fs: ForceSet) -> tuple[np.ndarray | None, str]:
     gravity (the ``.frc``'s own mass where it gives one, which a free body's equals), or None with a note where
     no ``.frc`` says where that centre was; and the note saying what replaced them."""
     frc_path = path.with_suffix(".frc")
-    if not frc_path.is_file() or fs.frc.form == -1:
+    if not frc_path.is_file() or fs.frc.form == ONLY_RHO:
         return None, (f"the gravity terms of {path.with_suffix('.hst').name} are kept as WAMIT computed them: without "
                       f"{frc_path.name} the centre of gravity of its run is unknown, so the scenario's cog_m sets the "
                       "mass matrix only")
@@ -346,14 +353,6 @@ def _run_gravity(path: Path, fs: ForceSet) -> tuple[np.ndarray | None, str]:
     return gravity_stiffness(mass, fs.settings.g), (
         f"the gravity terms of {path.with_suffix('.hst').name} (WAMIT's, for the centre of gravity in "
         f"{frc_path.name}) replaced by the scenario's mass at its cog_m")
-
-
-def _rho_of(frc_path: Path, form: int | None) -> float | None:
-    """RHO of the ``.frc`` at ``frc_path`` where it reads as one (None in form 1, or in a layout not read here)."""
-    try:
-        return read_frc(frc_path, form).rho
-    except FileFormatError:
-        return None
 
 
 def _match_periods(path_3: Path, periods: np.ndarray, path_1: Path, per_1: np.ndarray) -> np.ndarray:
