@@ -33,8 +33,8 @@ def add(commands: argparse._SubParsersAction) -> None:
 
 def handle(args: argparse.Namespace) -> int:
     from marinesim.cli.assess import table
-    from marinesim.progress import reporting
     from marinesim.errors import MarinesimError
+    from marinesim.progress import reporting
     from marinesim.session.log import describe, read_log
     from marinesim.session.replay import replay_session, session_scenario
 

@@ -122,7 +122,8 @@ def write_log(path: Path, exercise: Exercise) -> Path:
     key, as one unit; returns ``path``. Without a key (one that cannot be made or read) the log is written
     unsigned, with a warning: the session's record is kept, and its readers say it is unverified."""
     scenario = exercise.scenario
-    lines = [json.dumps(header(scenario, exercise.duration_s, exercise.sim.time))]
+    head = header(scenario, exercise.duration_s, exercise.sim.time)
+    lines = [json.dumps(head)]
     lines += [json.dumps(entry, allow_nan=False) for entry in exercise.journal]
     data = ("\n".join(lines) + "\n").encode("utf-8")
     try:
@@ -131,10 +132,11 @@ def write_log(path: Path, exercise: Exercise) -> Path:
         logger.warning("marinesim: warning: %s; the session log is written unsigned", error)
         signed = {}
 
-    def describe() -> dict:
-        files = {"scenario": scenario.path} | vessel_files(scenario)
+    def describe() -> dict:  # the files' hashes as the header gives them: each file read once
+        paths = {"scenario": scenario.path} | vessel_files(scenario)
+        hashes = {"scenario": head["scenario_sha256"]} | head["vessel_sha256"]
         return {"format": FORMAT, "entries": len(exercise.journal), "end_s": exercise.sim.time,
-                "files": {key: {"path": str(p), "sha256": sha256(p)} for key, p in files.items()}} | signed
+                "files": {key: {"path": str(p), "sha256": hashes[key]} for key, p in paths.items()}} | signed
 
     Path(path).parent.mkdir(parents=True, exist_ok=True)
     write_table(Path(path), lambda temp: temp.write_bytes(data), describe)
