@@ -66,8 +66,9 @@ class Ship:
     def length_m(self) -> float:
         return self.model.length_m
 
-    def step(self, s: ShipState, orders: Orders, h: float = STEP_S) -> tuple[ShipState, tuple[float, ...]]:
-        """The state ``h`` s after ``s`` under ``orders``, and the time derivatives of (north, east, psi, u, v, r,
+    def step(self, s: ShipState, orders: Orders, h: float = STEP_S, t: float = 0.0
+             ) -> tuple[ShipState, tuple[float, ...]]:
+        """The state ``h`` s after ``s`` (at ``t`` s: calm water, so no matter) under ``orders``, and the time derivatives of (north, east, psi, u, v, r,
         p, phi) at ``s`` (the step's first stage: the rudder and the propeller as they stood)."""
         if orders.autopilot and self.autopilot is not None:
             rudder, r_ref = self.autopilot.command(s.psi, s.r, orders.course, math.hypot(s.u, s.v))

@@ -18,8 +18,9 @@ from dataclasses import dataclass
 
 @dataclass(frozen=True)
 class ShipState:
-    """Where the ship is and how she moves (see the module's axes), her rudder and its order, her propeller, and
-    the rate of turn the autopilot asks for, ``r_ref`` (rad/s; on station: the heading's reference rate)."""
+    """Where the ship is and how she moves (see the module's axes), her rudder and its order, her propeller, the
+    rate of turn the autopilot asks for, ``r_ref`` (rad/s; on station: the heading's reference rate), and the
+    further states her model keeps."""
 
     north: float = 0.0
     east: float = 0.0
@@ -33,6 +34,8 @@ class ShipState:
     n: float = 0.0
     rudder_order: float = 0.0
     r_ref: float = 0.0
+    extra: tuple[float, ...] = ()
+    """A ship's own further states, in her own order (a DP computer's estimates, her thrusters' forces)."""
 
     @property
     def speed(self) -> float:
@@ -44,10 +47,15 @@ class ShipState:
 class Orders:
     """What the bridge asks for: a rudder angle by hand (rad, positive to starboard) or a course by the
     autopilot (rad, clockwise from north), and a propeller rate (rev/s, negative astern). ``engine`` names the
-    telegraph order that set the rate (e.g. ``"half ahead"``), or the speed it was set for (``"12.0 kn"``)."""
+    telegraph order that set the rate (e.g. ``"half ahead"``), or the speed it was set for (``"12.0 kn"``). On
+    station: the set point ``north``, ``east`` (m) with the heading ``course``, and the ``faults`` the instructor
+    has given (:mod:`marinesim.station.vessel`)."""
 
     rudder: float = 0.0
     rps: float = 0.0
     autopilot: bool = False
     course: float = 0.0
     engine: str = "stop"
+    north: float = 0.0
+    east: float = 0.0
+    faults: frozenset[str] = frozenset()

@@ -59,7 +59,7 @@ class StationKeeping:
             return orders
         return replace(orders, course=math.radians(require_within("course", course_deg, 0.0, 360.0, "deg") % 360.0))
 
-    def step(self, s: ShipState, orders: Orders, h: float) -> tuple[ShipState, tuple[float, ...]]:
+    def step(self, s: ShipState, orders: Orders, h: float, t: float = 0.0) -> tuple[ShipState, tuple[float, ...]]:
         """The state ``h`` s after ``s`` (heading towards ``orders.course``, or straight on at her speed) and the
         derivatives of (north, east, psi, u, v, r, p, phi) at ``s``."""
         if self.speed > 0.0:

@@ -39,7 +39,8 @@ CHUNK_STEPS = 50
 BLOCKS_KEPT = 8
 """Blocks held in memory (40 minutes of manoeuvring, some 4 MB); older ones are stepped again when asked for."""
 FIELDS = ("north", "east", "psi", "u", "v", "r", "p", "phi", "delta", "n", "rudder_order", "r_ref")
-"""A step's state as a row, followed by the derivatives of the first eight (north ... phi)."""
+"""A step's state as a row, followed by the derivatives of the first eight (north ... phi) and the state's ``extra``
+(a ship's own states: a DP computer's, her thrusters')."""
 HERMITE = 8
 """The first fields, interpolated with their derivatives."""
 SAMPLED = (*FIELDS, "north_dot", "east_dot", "psi_dot", "psi_ddot", "north_ddot", "east_ddot", "phi_dot", "phi_ddot")
@@ -53,7 +54,7 @@ class Stepper(Protocol):
     """A ship (:class:`~marinesim.manoeuvring.ship.Ship`) or a vessel without a model
     (:class:`~marinesim.manoeuvring.station.StationKeeping`)."""
 
-    def step(self, s: ShipState, orders: Orders, h: float) -> tuple[ShipState, tuple[float, ...]]: ...
+    def step(self, s: ShipState, orders: Orders, h: float, t: float = 0.0) -> tuple[ShipState, tuple[float, ...]]: ...
 
     def settled(self, s: ShipState, orders: Orders, rates: tuple[float, ...]) -> bool: ...
 
@@ -109,6 +110,14 @@ class Voyage:
         self.ship.order(self.orders_at(k * self.h), self.state(k * self.h), **request)
         entry = (k, len(self._requests), dict(request))
         self._requests.insert(bisect.bisect_right(self._requests, (k, math.inf)), entry)
+        self._orders = [(step, o) for step, o in self._orders if step < k]
+        self._truncate(k)
+        self._epoch += 1
+
+    def changed(self, t: float) -> None:
+        """The world the ship steps in (the wind, the sea) changes from ``t`` (s): what was computed past the step
+        from which the change acts is forgotten, and stepped again in the new world when asked for."""
+        k = self.step_of(t)
         self._orders = [(step, o) for step, o in self._orders if step < k]
         self._truncate(k)
         self._epoch += 1
@@ -181,7 +190,7 @@ class Voyage:
             self._apply_requests(k, state)
             orders = self._orders_from(k)
             following = self._next_request(k)
-            after, rates = self.ship.step(state, orders, self.h)
+            after, rates = self.ship.step(state, orders, self.h, k * self.h)
             if self.ship.settled(state, orders, rates):
                 self._pieces.append(_Piece(k, following, _straightened(state), True))
                 continue
@@ -198,8 +207,8 @@ class Voyage:
         state = piece.following
         rows = []
         k = piece.last
-        while k < min(k_target, piece.end):
-            following, rates = self.ship.step(state, orders, self.h)
+        while k < min(k_target, piece.end):  # ``state`` is step k + 1's
+            following, rates = self.ship.step(state, orders, self.h, (k + 1) * self.h)
             rows.append(_row(state, rates))
             settled = self.ship.settled(state, orders, rates)
             k += 1
@@ -218,7 +227,7 @@ class Voyage:
         them: to the same bits)."""
         state, orders, rows = piece.start, self._orders_from(piece.first), []
         for k in range(piece.first, piece.last + 1):
-            following, rates = self.ship.step(state, orders, self.h)
+            following, rates = self.ship.step(state, orders, self.h, k * self.h)
             rows.append(_row(state, rates))
             state = following
         return np.array(rows)
@@ -243,7 +252,8 @@ class Voyage:
         """The state at step ``k`` of ``piece``."""
         if piece.straight:
             return _moved(piece.start, (k - piece.first) * self.h)
-        return ShipState(*self._rows(piece)[k - piece.first, :len(FIELDS)].tolist())
+        row = self._rows(piece)[k - piece.first]
+        return ShipState(*row[:len(FIELDS)].tolist(), extra=tuple(row[len(FIELDS) + HERMITE:].tolist()))
 
     def state(self, t: float) -> ShipState:
         """The state at the step at or before ``t`` (s)."""
@@ -411,7 +421,7 @@ class Voyage:
 
 
 def _row(state: ShipState, rates: tuple[float, ...]) -> tuple[float, ...]:
-    return tuple(getattr(state, name) for name in FIELDS) + tuple(rates)
+    return tuple(getattr(state, name) for name in FIELDS) + tuple(rates) + state.extra
 
 
 def _straightened(state: ShipState) -> ShipState:
