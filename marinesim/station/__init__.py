@@ -1,0 +1,1 @@
+"""Station keeping: environmental loads (wind, current, wave drift), dynamic positioning and moorings."""

@@ -1,0 +1,123 @@
+"""The dynamic positioning computer: an observer, a reference model and a PID controller with wind feed-forward.
+
+All in the horizontal plane, axes as :mod:`marinesim.manoeuvring.state`: positions ``eta`` = (north, east, psi)
+(m, m, rad clockwise from north), velocities ``nu`` = (u, v, r) in body axes (m/s, m/s, rad/s), forces ``tau`` =
+(X, Y, N) (N, N, N m); ``R(psi)`` turns body into earth axes. ``M`` and ``D`` (3, 3) are the vessel's
+low-frequency mass (with added mass) and linear damping.
+
+- **Observer** (Fossen & Strand 1999, the nonlinear passive observer; Fossen 2021, sec. 13.4): the measured
+  position ``y`` is the low-frequency position plus the wave-frequency motion; a second-order wave model per
+  degree of freedom (``xi``, peak ``omega_0``, damping ``zeta``) takes the wave-frequency part out, a bias ``b``
+  (earth axes) takes the slowly varying environment, and the estimates ``eta_hat``, ``nu_hat`` follow the vessel's
+  own equations::
+
+      y~ = y - eta_hat - xi_2
+      xi_1' = xi_2 + K1a y~,  xi_2' = -omega_0^2 xi_1 - 2 zeta omega_0 xi_2 + K1b y~
+      eta_hat' = R nu_hat + K2 y~,  b' = -b / T_b + K3 y~,  M nu_hat' = -D nu_hat + R^T b + tau + R^T K4 y~
+
+  with ``K1a = -2 (zeta_n - zeta) omega_c / omega_0``, ``K1b = 2 omega_0 (zeta_n - zeta)``, ``K2 = omega_c`` (the
+  notch of depth ``zeta / zeta_n`` at ``omega_0``, cut-off ``omega_c`` above it) and ``K4``, ``K3 = K4 / 10``
+  from the low-frequency loop's own bandwidth. Stepped by forward Euler at the DP computer's cycle.
+- **Reference model**: the set point moves to an ordered position at no more than ``speed_limit`` and to an
+  ordered heading at no more than ``rate_limit`` (DP operators move a vessel at 0.1 to 0.5 m/s, 10 deg/min).
+- **Controller** (Fossen 2021, sec. 12.2.6): ``tau = -R^T (Kp e + Ki z) - Kd nu_hat - tau_wind``, ``e`` the
+  estimated position less the set point (heading wrapped), ``z' = e`` (held while the thrusters saturate), by pole
+  placement per degree of freedom: ``Kp = M w_n^2``, ``Kd = 2 zeta w_n M - D``, ``Ki = w_n / 10 Kp``; ``tau_wind``
+  the wind's load from the measured wind and the vessel's own coefficients (feed-forward).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from marinesim.manoeuvring.autopilot import wrap
+
+OBSERVER_ZETA = 0.1
+OBSERVER_ZETA_N = 1.0
+"""The wave model's relative damping and the notch's (Fossen & Strand 1999)."""
+
+
+def rotation(psi: float) -> np.ndarray:
+    """``R(psi)`` (3, 3): body (u, v, r) to earth (north, east, psi) rates."""
+    c, s = math.cos(psi), math.sin(psi)
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+
+
+@dataclass(frozen=True)
+class Tuning:
+    """The DP's tuning: the closed loop's natural periods (s) in surge, sway, yaw, its relative damping, the
+    observer's wave peak frequency (rad/s), the bias time constant (s), and the reference model's limits (m/s,
+    rad/s)."""
+
+    periods_s: tuple[float, float, float] = (100.0, 100.0, 80.0)
+    zeta: float = 0.9
+    wave_omega: float = 2.0 * math.pi / 9.0
+    bias_time_s: float = 1000.0
+    speed_limit: float = 0.3
+    rate_limit: float = math.radians(10.0 / 60.0)
+
+
+class Dp:
+    """The DP computer for a vessel of low-frequency mass ``m`` and damping ``d`` (3, 3) with ``tuning``."""
+
+    def __init__(self, m: np.ndarray, d: np.ndarray, tuning: Tuning) -> None:
+        self.m, self.d, self.tuning = np.asarray(m, float), np.asarray(d, float), tuning
+        self.m_inv = np.linalg.inv(self.m)
+        wn = np.array([2.0 * math.pi / p for p in tuning.periods_s])
+        mdiag = np.diag(self.m)
+        self.kp = mdiag * wn**2
+        self.kd = np.maximum(2.0 * tuning.zeta * wn * mdiag - np.diag(self.d), 0.0)
+        self.ki = wn / 10.0 * self.kp
+        w0 = tuning.wave_omega
+        wc = 1.1 * w0
+        self.k1a = np.full(3, -2.0 * (OBSERVER_ZETA_N - OBSERVER_ZETA) * wc / w0)
+        self.k1b = np.full(3, 2.0 * w0 * (OBSERVER_ZETA_N - OBSERVER_ZETA))
+        self.k2 = np.full(3, wc)
+        band = 4.0 * wn  # the observer's low-frequency loop: some times faster than the controller's
+        self.k4 = mdiag * band**2
+        self.k3 = self.k4 / 10.0
+
+    def observe(self, est: np.ndarray, y: np.ndarray, tau: np.ndarray, h: float) -> np.ndarray:
+        """The observer's state (15,: xi_1 (3), xi_2 (3), eta_hat (3), nu_hat (3), b (3)) ``h`` s after ``est``,
+        given the measured position ``y`` (north m, east m, psi rad) and the thrust ``tau`` (3,) acting."""
+        xi1, xi2, eta, nu, b = est[0:3], est[3:6], est[6:9], est[9:12], est[12:15]
+        w0, z = self.tuning.wave_omega, OBSERVER_ZETA
+        miss = y - eta - xi2
+        miss[2] = wrap(miss[2])
+        r = rotation(eta[2])
+        d_xi1 = xi2 + self.k1a * miss
+        d_xi2 = -w0 * w0 * xi1 - 2.0 * z * w0 * xi2 + self.k1b * miss
+        d_eta = r @ nu + self.k2 * miss
+        d_b = -b / self.tuning.bias_time_s + self.k3 * miss
+        d_nu = self.m_inv @ (-self.d @ nu + r.T @ b + tau + r.T @ (self.k4 * miss))
+        return est + h * np.concatenate([d_xi1, d_xi2, d_eta, d_nu, d_b])
+
+    def reference(self, ref: np.ndarray, target: tuple[float, float, float], h: float) -> np.ndarray:
+        """The set point (north, east, psi) ``h`` s after ``ref``, moving towards ``target`` within the limits."""
+        out = ref.copy()
+        gap = np.array([target[0] - ref[0], target[1] - ref[1]])
+        distance = math.hypot(*gap)
+        step = self.tuning.speed_limit * h
+        out[:2] = target[:2] if distance <= step else ref[:2] + gap * step / distance
+        turn = wrap(target[2] - ref[2])
+        out[2] = ref[2] + max(min(turn, self.tuning.rate_limit * h), -self.tuning.rate_limit * h)
+        return out
+
+    def command(self, est: np.ndarray, ref: np.ndarray, integral: np.ndarray, wind: np.ndarray
+                ) -> np.ndarray:
+        """The thrust demanded (X, Y, N) from the estimate ``est`` (observer state), the set point ``ref``, the
+        integral of the error ``integral`` (earth axes) and the wind's load ``wind`` (body, (3,))."""
+        eta, nu = est[6:9], est[9:12]
+        error = self.error(est, ref)
+        r = rotation(eta[2])
+        return -r.T @ (self.kp * error + self.ki * integral) - self.kd * nu - wind
+
+    @staticmethod
+    def error(est: np.ndarray, ref: np.ndarray) -> np.ndarray:
+        """The estimated position less the set point (north m, east m, psi rad wrapped)."""
+        e = est[6:9] - ref
+        e[2] = wrap(e[2])
+        return e

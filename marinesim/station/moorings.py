@@ -1,0 +1,360 @@
+"""Catenary mooring lines holding a vessel on station: each line's fairlead tension from MoorPy's catenary.
+
+Axes as :mod:`marinesim.manoeuvring.state`: the vessel's low-frequency position ``north``, ``east`` (m, from the
+set point) and heading ``psi`` (rad, clockwise from north); body axes x forward, y to starboard. A line runs from
+its anchor on the seabed, given in the earth frame as (north m, east m) from the set point, to its fairlead on the
+vessel, given in the body frame as (x m forward, y m to starboard, z m up from the waterline). The fairleads stay
+at their depth: the vessel's wave-frequency motion (heave, roll, pitch) is not felt by the lines. The line's
+wet weight acts over its whole length (a fairlead above the waterline: its few metres in air counted wet).
+
+Line physics is MoorPy's (``moorpy.Catenary.catenary``: an elastic catenary with seabed contact, no seabed
+friction) and its line-property library (``moorpy.helpers.getLineProps``: mass, wet weight, axial stiffness EA
+and minimum breaking load from the material's name and nominal diameter). A catenary solve per line and per
+Runge-Kutta stage would be far too slow for the simulator, so :class:`Moorings` tabulates each line's horizontal
+and vertical fairlead tension ``H``, ``V`` against the horizontal anchor-fairlead span once, on a grid of
+:data:`GRID_INTERVALS` or more intervals (0.5 m or finer) over the set point's span +- :data:`REACH_FRACTION` of
+it or +- :data:`REACH_MAX_M`, whichever is smaller (taut side: cut where the tension passes :data:`TAUT_LIMIT`
+times the breaking load), and interpolates it with a cubic spline. Beyond the grid, ``H`` and ``V`` carry on
+linearly at the grid end's slope (the taut side's elastic stiffness; on the slack side down to zero): the vessel
+has then left the range the mooring was laid for.
+
+MoorPy (which imports matplotlib) is imported on first use, not with this module.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.interpolate import CubicSpline
+
+from marinesim.constants import RHO_SEAWATER, G
+from marinesim.errors import ParameterError, require_finite
+
+REACH_FRACTION = 0.15
+REACH_MAX_M = 60.0
+"""The span grid covers the set point's horizontal anchor-fairlead span +- the smaller of this fraction of it and
+this distance (m): a moored vessel's offset and her fairleads' swing in yaw stay well inside it."""
+GRID_INTERVALS = 240
+"""The fewest grid intervals over the span range; the step is 0.5 m or a power-of-two fraction of it, so that lines
+alike share one table (cubic interpolation error at 0.5 m: some 4e-5 of the tension, for 100 mm chain)."""
+TAUT_LIMIT = 3.0
+"""The taut side of the grid ends where the fairlead tension passes this many times the line's breaking load."""
+DIAMETER_RANGE_M = (0.01, 0.35)
+"""Nominal diameters accepted (m): MoorPy's chain fits hold to about 0.36 m."""
+ANCHOR_DEPTH_TOLERANCE_M = 0.1
+"""An anchor depth stated within this of the water depth is on the seabed (m)."""
+MIN_SPAN_M = 1.0
+"""The least horizontal anchor-fairlead span at the set point (m): a catenary line runs out from the vessel."""
+
+
+@dataclass(frozen=True)
+class LineType:
+    """A line's properties per unit length from MoorPy's library: ``mass_kg_m`` (kg/m), ``weight_n_m`` (wet
+    weight in sea water, N/m), ``ea_n`` (axial stiffness, N), ``mbl_n`` (minimum breaking load, N)."""
+
+    material: str
+    diameter_m: float
+    mass_kg_m: float
+    weight_n_m: float
+    ea_n: float
+    mbl_n: float
+
+
+@functools.lru_cache(maxsize=1)
+def _library() -> dict:
+    from moorpy.helpers import loadLineProps
+
+    return loadLineProps(None)
+
+
+def materials() -> tuple[str, ...]:
+    """The line materials of MoorPy's default library (``chain``, ``chain_studlink``, ``wire``, ``polyester``...)."""
+    return tuple(_library())
+
+
+@functools.lru_cache(maxsize=64)
+def line_type(material: str, diameter_m: float) -> LineType:
+    """``material`` of nominal diameter ``diameter_m`` (m) from MoorPy's library, wet weight in sea water of
+    :data:`~marinesim.constants.RHO_SEAWATER` under :data:`~marinesim.constants.G`; unknown materials are
+    refused."""
+    from moorpy.helpers import getLineProps
+
+    if material not in _library():
+        raise ParameterError(f"line type {material!r} is not in MoorPy's library (known: {', '.join(materials())})")
+    low, high = DIAMETER_RANGE_M
+    if not low <= diameter_m <= high:
+        raise ParameterError(f"line type {material!r}: diameter must be in {low:g}..{high:g} m, got {diameter_m!r}")
+    props = getLineProps(diameter_m * 1000.0, material, lineProps=_library(), rho=RHO_SEAWATER, g=G)
+    return LineType(material, diameter_m, float(props["m"]), float(props["w"]), float(props["EA"]),
+                    float(props["MBL"]))
+
+
+@dataclass(frozen=True)
+class Line:
+    """One mooring line: ``anchor`` (north m, east m) in the earth frame from the set point, on the seabed (or at
+    ``anchor_depth_m`` below the surface, which must then be the water depth); ``fairlead`` (x m forward, y m to
+    starboard, z m up from the waterline) in the body frame from the vessel's origin; unstretched ``length_m``;
+    MoorPy's ``material`` of nominal ``diameter_m`` (m)."""
+
+    name: str
+    anchor: tuple[float, float]
+    fairlead: tuple[float, float, float]
+    length_m: float
+    material: str = "chain"
+    diameter_m: float = 0.1
+    anchor_depth_m: float | None = None
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.name, str) or not self.name.strip():
+            raise ParameterError(f"a mooring line's name must be a non-empty string, got {self.name!r}")
+        where = f"line {self.name}"
+        if np.shape(self.anchor) != (2,):
+            raise ParameterError(f"{where}: anchor must be (north m, east m), got {self.anchor!r}")
+        if np.shape(self.fairlead) != (3,):
+            raise ParameterError(f"{where}: fairlead must be (x m forward, y m to starboard, z m up), "
+                                 f"got {self.fairlead!r}")
+        object.__setattr__(self, "anchor", tuple(require_finite(f"{where}: anchor", v) for v in self.anchor))
+        object.__setattr__(self, "fairlead", tuple(require_finite(f"{where}: fairlead", v) for v in self.fairlead))
+        if require_finite(f"{where}: length_m", self.length_m) <= 0.0:
+            raise ParameterError(f"{where}: length_m must be > 0, got {self.length_m!r}")
+        if self.anchor_depth_m is not None:
+            require_finite(f"{where}: anchor_depth_m", self.anchor_depth_m)
+        require_finite(f"{where}: diameter_m", self.diameter_m)
+        try:
+            kind = line_type(self.material, float(self.diameter_m))
+        except ParameterError as error:
+            raise ParameterError(f"{where}: {error}") from None
+        if kind.weight_n_m <= 0.0:
+            raise ParameterError(f"{where}: {self.material} of {self.diameter_m:g} m floats (wet weight "
+                                 f"{kind.weight_n_m:.0f} N/m): a catenary line must sink")
+
+    @property
+    def type(self) -> LineType:
+        """Its properties from MoorPy's library."""
+        return line_type(self.material, float(self.diameter_m))
+
+
+class Moorings:
+    """``lines`` in water ``depth`` (m) holding a vessel whose set point is (0, 0) heading ``heading`` (rad,
+    clockwise from north), the lines named in ``failed`` parted. Immutable: :meth:`with_failed` gives a copy.
+
+    Refused (:class:`ParameterError`, one line naming the line and the numbers): no lines, two lines of one name,
+    an anchor off the seabed, a fairlead under the seabed, an anchor under its fairlead, a line too short to reach
+    its fairlead without breaking, and one whose tension at the set point is above its breaking load."""
+
+    def __init__(self, lines: Sequence[Line], depth: float, heading: float = 0.0,
+                 failed: Iterable[str] = ()) -> None:
+        depth = require_finite("depth_m", depth)
+        if depth <= 0.0:
+            raise ParameterError(f"depth_m must be > 0, got {depth!r}")
+        self.depth, self.heading = depth, require_finite("heading", heading)
+        self.lines = tuple(lines)
+        if not self.lines:
+            raise ParameterError("moorings need at least one line")
+        names = [line.name for line in self.lines]
+        twice = sorted({name for name in names if names.count(name) > 1})
+        if twice:
+            raise ParameterError(f"line {twice[0]}: two lines of that name (line names must be unique)")
+        self.names = tuple(names)
+        self._anchor = np.array([line.anchor for line in self.lines])  # (n, 2) north, east
+        self._fairlead = np.array([line.fairlead[:2] for line in self.lines])  # (n, 2) x, y
+        self.mbl = np.array([line.type.mbl_n for line in self.lines])
+        """Each line's minimum breaking load (N), (n_lines,)."""
+        self.mbl.flags.writeable = False
+        spans = self._spans(0.0, 0.0, self.heading)[2]
+        tables = [self._check_and_tabulate(line, float(span)) for line, span in zip(self.lines, spans)]
+        self._tabulate(tables)
+        self.failed: frozenset[str] = frozenset()
+        self._intact = np.ones(len(self.lines))
+        self._variants: dict[frozenset[str], Moorings] = {}
+        if failed:
+            self._fail(frozenset(failed))
+        self.pretensions = self._pretensions()
+        """Each line's fairlead tension at the set point (N), (n_lines,); 0 for a parted line."""
+
+    # -- construction -------------------------------------------------------------------------------------------
+
+    def _check_and_tabulate(self, line: Line, span: float) -> tuple[np.ndarray, np.ndarray]:
+        where, depth = f"line {line.name}", self.depth
+        if line.anchor_depth_m is not None and abs(line.anchor_depth_m - depth) > ANCHOR_DEPTH_TOLERANCE_M:
+            off = depth - line.anchor_depth_m
+            raise ParameterError(f"{where}: anchor {abs(off):.1f} m {'above' if off > 0 else 'below'} the seabed "
+                                 f"(depth {depth:g} m)")
+        height = depth + line.fairlead[2]
+        if height <= 0.0:
+            raise ParameterError(f"{where}: fairlead {-line.fairlead[2]:.1f} m below the waterline, under the seabed "
+                                 f"(depth {depth:g} m)")
+        if span < MIN_SPAN_M:
+            raise ParameterError(f"{where}: anchor {span:.2f} m from under its fairlead at the set point: a catenary "
+                                 f"line runs out from the vessel (at least {MIN_SPAN_M:g} m)")
+        kind = line.type
+        reach_length = line.length_m * (1.0 + kind.mbl_n / kind.ea_n)
+        straight = math.hypot(span, height)
+        if reach_length <= straight:
+            raise ParameterError(f"{where}: {line.length_m:.1f} m long, too short to reach its fairlead {straight:.1f} "
+                                 f"m from the anchor (stretched to its breaking load: {reach_length:.1f} m)")
+        from moorpy.helpers import CatenaryError
+
+        try:
+            pretension = math.hypot(*_catenary(line.length_m, kind.ea_n, kind.weight_n_m, height, depth, span))
+        except CatenaryError:
+            raise ParameterError(f"{where}: MoorPy's catenary fails at the set point ({line.length_m:g} m of line, "
+                                 f"{height:g} m high over {span:.1f} m)") from None
+        if pretension >= kind.mbl_n:
+            raise ParameterError(f"{where}: tension {pretension / 1e6:.2f} MN at the set point is above its breaking "
+                                 f"load {kind.mbl_n / 1e6:.2f} MN: the line is too short for an anchor {span:.1f} m "
+                                 f"out")
+        reach = min(REACH_FRACTION * span, REACH_MAX_M)
+        step = 0.5 / 2.0 ** max(0, math.ceil(math.log2(GRID_INTERVALS * 0.5 / (2.0 * reach))))
+        first, last = math.floor((span - reach) / step), math.ceil((span + reach) / step)
+        try:
+            return _table(line.length_m, kind.ea_n, kind.weight_n_m, height, depth, first * step, step,
+                          last - first + 1, TAUT_LIMIT * kind.mbl_n)
+        except ParameterError as error:
+            raise ParameterError(f"{where}: {error}") from None
+
+    def _tabulate(self, tables: list[tuple[np.ndarray, np.ndarray]]) -> None:
+        """Cubic coefficients of every line's (H, V) against span, padded to one shape: (n, 4, segments, 2)."""
+        n, most = len(tables), max(len(spans) for spans, _ in tables) - 1
+        self._lo = np.array([spans[0] for spans, _ in tables])
+        self._hi = np.array([spans[-1] for spans, _ in tables])
+        self._step = np.array([spans[1] - spans[0] for spans, _ in tables])
+        self._segments = np.array([len(spans) - 1 for spans, _ in tables])
+        self._coef = np.zeros((n, 4, most, 2))
+        self._ends = np.zeros((n, 2, 2, 2))  # line, (low, high), (value, slope), (H, V)
+        for i, (spans, hv) in enumerate(tables):
+            spline = CubicSpline(spans, hv)
+            self._coef[i, :, : len(spans) - 1] = spline.c
+            slope = spline.derivative()
+            self._ends[i, 0] = spline(spans[0]), slope(spans[0])
+            self._ends[i, 1] = spline(spans[-1]), slope(spans[-1])
+
+    @property
+    def span_range(self) -> np.ndarray:
+        """Each line's tabulated horizontal span (m), (n_lines, 2): beyond it the tension is extrapolated."""
+        return np.stack([self._lo, self._hi], axis=1)
+
+    # -- failures -----------------------------------------------------------------------------------------------
+
+    def with_failed(self, *names: str) -> Moorings:
+        """These moorings with the lines ``names`` parted as well (an instructor's fault); cheap, the tables
+        shared. An unknown name is refused."""
+        failed = self.failed | frozenset(names)
+        if failed == self.failed:
+            return self
+        if failed not in self._variants:
+            if len(self._variants) >= 64:
+                self._variants.pop(next(iter(self._variants)))
+            variant = object.__new__(Moorings)
+            variant.__dict__.update(self.__dict__)
+            variant._variants = {}
+            variant._fail(failed)
+            variant.pretensions = variant._pretensions()
+            self._variants[failed] = variant
+        return self._variants[failed]
+
+    def _fail(self, failed: frozenset[str]) -> None:
+        unknown = sorted(failed - set(self.names))
+        if unknown:
+            raise ParameterError(f"line {unknown[0]}: no such mooring line (lines: {', '.join(self.names)})")
+        self.failed = failed
+        self._intact = np.array([0.0 if name in failed else 1.0 for name in self.names])
+
+    def _pretensions(self) -> np.ndarray:
+        tensions = self.tensions(0.0, 0.0, self.heading)
+        tensions.flags.writeable = False
+        return tensions
+
+    # -- loads --------------------------------------------------------------------------------------------------
+
+    def _spans(self, north: float, east: float, psi: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """From each fairlead to its anchor: north and east (m) and the horizontal span (m), each (n_lines,)."""
+        c, s = math.cos(psi), math.sin(psi)
+        x, y = self._fairlead[:, 0], self._fairlead[:, 1]
+        d_north = self._anchor[:, 0] - (north + x * c - y * s)
+        d_east = self._anchor[:, 1] - (east + x * s + y * c)
+        return d_north, d_east, np.hypot(d_north, d_east)
+
+    def _hv(self, span: np.ndarray) -> np.ndarray:
+        """Horizontal and vertical fairlead tension (N) of every line at horizontal ``span`` (m, (n,)): (n, 2)."""
+        rows = np.arange(len(span))
+        index = np.clip(np.floor((span - self._lo) / self._step).astype(int), 0, self._segments - 1)
+        t = (span - (self._lo + index * self._step))[:, None]
+        c = self._coef[rows, :, index]  # (n, 4, 2)
+        inside = ((c[:, 0] * t + c[:, 1]) * t + c[:, 2]) * t + c[:, 3]
+        below = self._ends[:, 0, 0] + self._ends[:, 0, 1] * (span - self._lo)[:, None]
+        above = self._ends[:, 1, 0] + self._ends[:, 1, 1] * (span - self._hi)[:, None]
+        hv = np.where((span < self._lo)[:, None], below, np.where((span > self._hi)[:, None], above, inside))
+        return np.maximum(hv, 0.0) * self._intact[:, None]
+
+    def force(self, north: float, east: float, psi: float) -> np.ndarray:
+        """The intact lines' pull on the vessel at (``north``, ``east``, ``psi``): (X N forward, Y N to starboard,
+        N N m bow to starboard) in body axes about her origin, (3,)."""
+        d_north, d_east, span = self._spans(north, east, psi)
+        h = self._hv(span)[:, 0] / np.maximum(span, 1e-9)
+        f_north, f_east = h * d_north, h * d_east
+        c, s = math.cos(psi), math.sin(psi)
+        x_force, y_force = f_north * c + f_east * s, -f_north * s + f_east * c
+        moment = self._fairlead[:, 0] * y_force - self._fairlead[:, 1] * x_force
+        return np.array([x_force.sum(), y_force.sum(), moment.sum()])
+
+    def tensions(self, north: float, east: float, psi: float) -> np.ndarray:
+        """Each line's tension at its fairlead, ``hypot(H, V)`` (N), (n_lines,); 0 for a parted line."""
+        hv = self._hv(self._spans(north, east, psi)[2])
+        return np.hypot(hv[:, 0], hv[:, 1])
+
+    def stiffness(self, north: float = 0.0, east: float = 0.0, psi: float | None = None) -> np.ndarray:
+        """The restoring stiffness ``K = -d(X, Y, N) / d(x, y, psi)`` (3, 3; N/m, N/rad, N m/m, N m/rad) at
+        (``north``, ``east``, ``psi``; ``psi`` None: the set point's heading) for small displacements x forward, y
+        to starboard (body axes) and in yaw, by central differences of :meth:`force`."""
+        psi = self.heading if psi is None else psi
+        c, s = math.cos(psi), math.sin(psi)
+        steps = (0.01, 0.01, 1e-5)
+        moves = (np.array([c, s, 0.0]), np.array([-s, c, 0.0]), np.array([0.0, 0.0, 1.0]))
+        k = np.empty((3, 3))
+        for j, (h, move) in enumerate(zip(steps, moves)):
+            plus = self.force(*(np.array([north, east, psi]) + h * move))
+            minus = self.force(*(np.array([north, east, psi]) - h * move))
+            k[:, j] = -(plus - minus) / (2.0 * h)
+        return k
+
+
+def _catenary(length: float, ea: float, weight: float, height: float, depth: float, span: float,
+              guess: tuple[float, float] = (0.0, 0.0)) -> tuple[float, float]:
+    """MoorPy's catenary from an anchor on the seabed to a fairlead ``height`` (m) above it and ``span`` (m) away:
+    the fairlead's horizontal and vertical tension (N)."""
+    from moorpy.Catenary import catenary
+
+    info = catenary(span, height, length, ea, weight, CB=0.0, HF0=guess[0], VF0=guess[1], depth=depth)[4]
+    return float(info["HF"]), float(info["VF"])
+
+
+@functools.lru_cache(maxsize=256)
+def _table(length: float, ea: float, weight: float, height: float, depth: float, start: float, step: float,
+           count: int, limit: float) -> tuple[np.ndarray, np.ndarray]:
+    """Spans ``start + i step`` (m, i < ``count``) and the fairlead's (H, V) there (N), (m,) and (m, 2); cut after
+    the first span whose tension passes ``limit`` (N) or where the catenary fails on the taut side."""
+    from moorpy.helpers import CatenaryError
+
+    spans = start + step * np.arange(count)
+    rows, guess = [], (0.0, 0.0)
+    for span in spans:
+        try:
+            guess = _catenary(length, ea, weight, height, depth, float(span), guess)
+        except CatenaryError:
+            if len(rows) < 4:
+                raise ParameterError(f"MoorPy's catenary fails for a {length:g} m line {height:g} m high over "
+                                     f"{span:g} m") from None
+            break
+        rows.append(guess)
+        if math.hypot(*guess) > limit and len(rows) >= 4:
+            break
+    hv = np.array(rows)
+    hv.flags.writeable = False
+    spans = spans[: len(rows)].copy()
+    spans.flags.writeable = False
+    return spans, hv

@@ -1,0 +1,183 @@
+"""A dynamically positioned vessel's thrusters and the allocation of a demanded force over them.
+
+Axes as :mod:`marinesim.manoeuvring.state`: body x forward, y to starboard; a force (Fx, Fy) at (x, y) gives the
+yaw moment ``N = x Fy - y Fx`` (positive turning the bow to starboard). Each thruster is one or two *virtual*
+forces: a tunnel thruster pushes along y, a main propeller along x (less astern than ahead), an azimuth thruster in
+any direction (Fx and Fy, its resultant no more than its rating). The configuration matrix ``B`` (3, m) maps the
+virtual forces ``f`` (N) to (X, Y, N).
+
+Allocation (Fossen 2021, ch. 11.3): the least-norm ``f = B^T (B B^T)^-1 tau`` when it is within every thruster's
+limits; otherwise the bounded least squares over the limits (:func:`scipy.optimize.lsq_linear`), the yaw
+moment weighted by one over the vessel's length so that a metre of force and a ship length of moment count alike,
+and a small penalty on ``f`` keeping the answer unique. An azimuth's box is then pulled in to its circle. A lost
+thruster has both bounds zero; a thruster stuck at full thrust (a drive-off) is held there and the others answer
+the rest.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.optimize import lsq_linear
+
+from marinesim.errors import ParameterError
+
+KINDS = ("tunnel", "main", "azimuth")
+PENALTY = 1e-6
+"""Weight of ``|f|^2`` against the residual in the bounded problem (both scaled by the largest rating)."""
+
+
+@dataclass(frozen=True)
+class Thruster:
+    """``name``; ``kind`` (:data:`KINDS`); at ``x``, ``y`` (m, body: forward, to starboard); ``max_thrust`` (N);
+    ``astern`` the fraction of it a main propeller gives astern; ``time_constant_s`` of its thrust following its
+    order (first order)."""
+
+    name: str
+    kind: str
+    x: float
+    y: float
+    max_thrust: float
+    astern: float = 0.7
+    time_constant_s: float = 2.0
+
+    @property
+    def width(self) -> int:
+        """Its virtual forces: 2 for an azimuth, else 1."""
+        return 2 if self.kind == "azimuth" else 1
+
+
+@dataclass(frozen=True)
+class Thrusters:
+    """The vessel's thrusters; ``length`` (m) weighs the yaw moment in the allocation."""
+
+    units: tuple[Thruster, ...]
+    length: float
+    b: np.ndarray = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        if not self.units:
+            raise ParameterError("a vessel on DP needs at least one thruster")
+        columns = []
+        for t in self.units:
+            if t.kind not in KINDS:
+                raise ParameterError(f"thruster {t.name}: kind {t.kind!r}, expected one of {', '.join(KINDS)}")
+            if t.kind in ("main", "azimuth"):
+                columns.append((1.0, 0.0, -t.y))
+            if t.kind in ("tunnel", "azimuth"):
+                columns.append((0.0, 1.0, t.x))
+        object.__setattr__(self, "b", np.array(columns, dtype=float).T)
+
+    @property
+    def width(self) -> int:
+        """The number of virtual forces m."""
+        return self.b.shape[1]
+
+    def slices(self) -> list[slice]:
+        """Each thruster's virtual forces in ``f``."""
+        out, at = [], 0
+        for t in self.units:
+            out.append(slice(at, at + t.width))
+            at += t.width
+        return out
+
+    def index(self, name: str) -> int:
+        """The thruster named ``name``; :class:`ParameterError` naming those there are."""
+        for i, t in enumerate(self.units):
+            if t.name == name:
+                return i
+        raise ParameterError(f"no thruster {name!r}: the vessel has {', '.join(t.name for t in self.units)}")
+
+    def bounds(self, lost: frozenset[str] = frozenset()) -> tuple[np.ndarray, np.ndarray]:
+        """(lower, upper) bounds of ``f`` (N, (m,) each), a lost thruster's zero."""
+        lo, hi = [], []
+        for t in self.units:
+            top = 0.0 if t.name in lost else t.max_thrust
+            low = -t.astern * top if t.kind == "main" else -top
+            lo += [low] * t.width
+            hi += [top] * t.width
+        return np.array(lo), np.array(hi)
+
+    def stuck(self, name: str, direction: float) -> np.ndarray:
+        """The virtual forces (m,) of thruster ``name`` stuck at full thrust towards ``direction`` (rad, body: 0
+        ahead, pi/2 to starboard; a tunnel or main propeller takes the sign of its own axis), the others zero."""
+        f = np.zeros(self.width)
+        i = self.index(name)
+        t, part = self.units[i], self.slices()[i]
+        if t.kind == "azimuth":
+            f[part] = t.max_thrust * math.cos(direction), t.max_thrust * math.sin(direction)
+        elif t.kind == "main":
+            f[part] = t.max_thrust if math.cos(direction) >= 0.0 else -t.astern * t.max_thrust
+        else:
+            f[part] = math.copysign(t.max_thrust, math.sin(direction))
+        return f
+
+    def allocate(self, tau: np.ndarray, lost: frozenset[str] = frozenset(),
+                 fixed: dict[str, np.ndarray] | None = None) -> np.ndarray:
+        """The virtual forces ``f`` (N, (m,)) that give ``tau`` (X N, Y N, N N m) as nearly as the thrusters can:
+        ``lost`` thrusters give nothing, ``fixed`` ones (name -> their virtual forces) give what they are stuck at."""
+        tau = np.asarray(tau, dtype=float)
+        lo, hi = self.bounds(lost)
+        free = np.ones(self.width, dtype=bool)
+        f = np.zeros(self.width)
+        slices = self.slices()
+        for name, value in (fixed or {}).items():
+            part = slices[self.index(name)]
+            f[part], free[part] = value, False
+        for name in lost:
+            free[slices[self.index(name)]] = False
+        rest = tau - self.b @ f
+        b = self.b[:, free]
+        if b.shape[1] == 0:
+            return f
+        scale = np.array([1.0, 1.0, 1.0 / self.length])
+        bw = b * scale[:, None]
+        try:
+            least = b.T @ np.linalg.solve(b @ b.T, rest) if np.linalg.matrix_rank(bw) == 3 else None
+        except np.linalg.LinAlgError:
+            least = None
+        if least is not None and np.all(least >= lo[free] - 1e-9) and np.all(least <= hi[free] + 1e-9) \
+                and self._within_circles(f, free, least):
+            f[free] = least
+            return f
+        top = max(float(np.max(hi[free])), 1.0)
+        a = np.vstack([bw / top, math.sqrt(PENALTY) * np.eye(b.shape[1]) / top])
+        target = np.concatenate([rest * scale / top, np.zeros(b.shape[1])])
+        f[free] = lsq_linear(a, target, bounds=(lo[free], np.maximum(hi[free], lo[free] + 1e-12)),
+                             method="bvls").x
+        return self._onto_circles(f)
+
+    def _within_circles(self, f: np.ndarray, free: np.ndarray, values: np.ndarray) -> bool:
+        trial = f.copy()
+        trial[free] = values
+        return np.allclose(self._onto_circles(trial.copy()), trial)
+
+    def _onto_circles(self, f: np.ndarray) -> np.ndarray:
+        """``f`` with each azimuth's resultant pulled in to its rating."""
+        for t, part in zip(self.units, self.slices()):
+            if t.kind == "azimuth":
+                size = math.hypot(*f[part])
+                if size > t.max_thrust:
+                    f[part] *= t.max_thrust / size
+        return f
+
+    def use(self, f: np.ndarray) -> np.ndarray:
+        """Each thruster's thrust as a fraction of its rating (0..1, (n,)); a lost or stopped one 0."""
+        out = []
+        for t, part in zip(self.units, self.slices()):
+            out.append(math.hypot(*f[part]) / t.max_thrust)
+        return np.array(out)
+
+    def lag(self) -> np.ndarray:
+        """Each virtual force's time constant (s, (m,))."""
+        return np.concatenate([[t.time_constant_s] * t.width for t in self.units])
+
+    def can_hold(self, tau: np.ndarray, lost: frozenset[str] = frozenset(), tolerance: float = 1e-3) -> bool:
+        """Whether the thrusters (less ``lost``) give ``tau`` to within ``tolerance`` of each component's size
+        (forces against the largest rating, the moment against it times the vessel's length)."""
+        f = self.allocate(tau, lost)
+        miss = (self.b @ f - np.asarray(tau, float)) * np.array([1.0, 1.0, 1.0 / self.length])
+        top = max(t.max_thrust for t in self.units)
+        return bool(np.all(np.abs(miss) <= tolerance * top))

@@ -1,0 +1,269 @@
+"""A vessel keeping station under the weather: her low-frequency motion in the horizontal plane, on dynamic
+positioning or moorings.
+
+Axes as :mod:`marinesim.manoeuvring.state` (north, east, psi clockwise from north; body x forward, y to
+starboard). The low-frequency equations (Fossen 2021, ch. 6 and 10)::
+
+    eta' = R(psi) nu,    M nu' + D (nu - nu_c) = tau_thrusters + tau_environment + tau_moorings
+
+``M`` the mass with the low-frequency added mass, ``D`` the linear damping (3, 3), ``nu_c`` the current in body
+axes (the hull feels the water's velocity relative to her: the current's load is ``D nu_c``), ``tau_environment``
+the wind's and the waves' second-order loads (:class:`Environment`). The wave-frequency motion is the RAO
+response's, added on top by the session: it reaches the DP only through the measured position.
+
+Stepped like any ship by :class:`~marinesim.manoeuvring.voyage.Voyage`: the vessel's states by the classical
+Runge-Kutta step, the thrusters' forces (first-order lags) exact over it, the DP computer (:mod:`.dp`) once per
+step with its demand held over the step (zero-order hold, as a DP computer's cycle). Her ``extra`` states:
+:data:`EXTRA` then one per virtual thruster force.
+
+Instructor faults (``Orders.faults``): ``thruster:NAME`` lost; ``drive-off:NAME`` stuck at full thrust along its
+own axis (ahead for a main propeller or an azimuth, to starboard for a tunnel thruster); ``reference drift``, the
+position reference drifting north at :data:`REFERENCE_DRIFT_M_S`; ``line:NAME`` a mooring line parted.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+from typing import Protocol
+
+import numpy as np
+
+from marinesim.errors import ParameterError, require_within
+from marinesim.manoeuvring.autopilot import wrap
+from marinesim.manoeuvring.state import Orders, ShipState
+from marinesim.station.dp import Dp
+from marinesim.station.moorings import Moorings
+from marinesim.station.thrusters import Thrusters
+
+EXTRA = ("z_north", "z_east", "z_psi", "xi1_north", "xi1_east", "xi1_psi", "xi2_north", "xi2_east", "xi2_psi",
+         "eta_north", "eta_east", "eta_psi", "nu_u", "nu_v", "nu_r", "b_north", "b_east", "b_psi",
+         "ref_north", "ref_east", "ref_psi", "drift_north", "drift_east")
+"""The DP computer's states kept in ``ShipState.extra``: the error's integral (m s, m s, rad s), the observer's
+(wave model, estimated position and velocity, bias: :meth:`Dp.observe`), the set point the reference model has
+reached, and the position reference's drift (m, a fault); then the virtual thrust forces (N)."""
+REFERENCE_DRIFT_M_S = 0.05
+"""How fast a drifting position reference walks off (m/s, north): 3 m a minute, as a DGNSS losing its
+corrections."""
+FAULTS = ("thruster:NAME", "drive-off:NAME", "reference drift", "line:NAME")
+
+
+class Environment(Protocol):
+    """What the weather does to a vessel at ``t`` (s), she at (north, east, psi) moving at (u, v, r)."""
+
+    def loads(self, t: float, north: float, east: float, psi: float, u: float, v: float, r: float) -> np.ndarray:
+        """The wind's and the waves' second-order loads (X N, Y N, N N m; body axes), (3,)."""
+
+    def wind_load(self, t: float, psi: float, u: float, v: float) -> np.ndarray:
+        """The wind's load alone (3,): what the DP's wind sensor and the vessel's coefficients make of it."""
+
+    def current(self, t: float) -> tuple[float, float]:
+        """The current (north m/s, east m/s) at ``t``."""
+
+    def wave_motion(self, t: float) -> tuple[float, float, float]:
+        """The wave-frequency motion of the vessel's origin (north m, east m, psi rad) at ``t``: in her measured
+        position."""
+
+
+class Calm:
+    """No wind, no current, no waves."""
+
+    def loads(self, t: float, north: float, east: float, psi: float, u: float, v: float, r: float) -> np.ndarray:
+        return np.zeros(3)
+
+    def wind_load(self, t: float, psi: float, u: float, v: float) -> np.ndarray:
+        return np.zeros(3)
+
+    def current(self, t: float) -> tuple[float, float]:
+        return 0.0, 0.0
+
+    def wave_motion(self, t: float) -> tuple[float, float, float]:
+        return 0.0, 0.0, 0.0
+
+
+@dataclass(frozen=True)
+class Station:
+    """``name`` with low-frequency mass ``m`` and damping ``d`` (3, 3; body axes, about her origin) under
+    ``environment``; on DP (``thrusters`` and ``dp``) or moored (``moorings``), or both."""
+
+    name: str
+    m: np.ndarray
+    d: np.ndarray
+    environment: Environment
+    thrusters: Thrusters | None = None
+    dp: Dp | None = None
+    moorings: Moorings | None = None
+    kind = "station"
+
+    def __post_init__(self) -> None:
+        if (self.thrusters is None) != (self.dp is None):
+            raise ParameterError(f"{self.name}: dynamic positioning needs both thrusters and a DP computer")
+        if self.thrusters is None and self.moorings is None:
+            raise ParameterError(f"{self.name}: a vessel keeping station needs thrusters (DP) or moorings")
+        object.__setattr__(self, "_m_inv", np.linalg.inv(np.asarray(self.m, float)))
+
+    @property
+    def label(self) -> str:
+        """One word for the conning strip."""
+        return "DP" if self.dp is not None else "MOORED"
+
+    def describe(self) -> str:
+        if self.dp is not None:
+            return (f"on dynamic positioning: {len(self.thrusters.units)} thrusters"
+                    + (" and moorings" if self.moorings is not None else ""))
+        return "moored: held by her lines"
+
+    # -- orders ---------------------------------------------------------------------------------
+
+    def start(self, speed: float, psi: float) -> tuple[ShipState, Orders]:
+        """Her state and orders at rest on heading ``psi`` (rad, clockwise from north), the set point where she is."""
+        if speed > 0.0:
+            raise ParameterError(f"{self.name} keeps station: she has no speed")
+        extra = [0.0] * len(EXTRA)
+        extra[EXTRA.index("eta_psi")] = extra[EXTRA.index("ref_psi")] = psi
+        extra += [0.0] * (self.thrusters.width if self.thrusters is not None else 0)
+        return ShipState(psi=psi, extra=tuple(extra)), Orders(autopilot=self.dp is not None, course=psi,
+                                                              engine=self.label.lower())
+
+    def order(self, orders: Orders, state: ShipState, *, rudder_deg: float | None = None, engine: str | None = None,
+              speed_kn: float | None = None, autopilot: bool | None = None, course_deg: float | None = None,
+              set_north_m: float | None = None, set_east_m: float | None = None,
+              fault: str | None = None) -> Orders:
+        """A heading (``course_deg``, compass) or position (``set_north_m``, ``set_east_m``: m from the start) set
+        point for the DP, or an instructor's ``fault`` (:data:`FAULTS`); helm and engine orders are refused."""
+        if any(o is not None for o in (rudder_deg, engine, speed_kn, autopilot)):
+            raise ParameterError(f"{self.name}: {self.describe()}; she takes set points, not helm or engine orders")
+        new = orders
+        if (course_deg is not None or set_north_m is not None or set_east_m is not None) and self.dp is None:
+            raise ParameterError(f"{self.name} is moored: she takes no set points")
+        if course_deg is not None:
+            new = replace(new, course=math.radians(require_within("course", course_deg, 0.0, 360.0, "deg") % 360.0))
+        if set_north_m is not None:
+            new = replace(new, north=require_within("set point north", set_north_m, -500.0, 500.0, "m"))
+        if set_east_m is not None:
+            new = replace(new, east=require_within("set point east", set_east_m, -500.0, 500.0, "m"))
+        if fault is not None:
+            new = replace(new, faults=new.faults | {self._fault(fault)})
+        return new
+
+    def _fault(self, fault: str) -> str:
+        kind, _, name = fault.partition(":")
+        if kind in ("thruster", "drive-off") and self.thrusters is not None:
+            self.thrusters.index(name)
+            return fault
+        if fault == "reference drift" and self.dp is not None:
+            return fault
+        if kind == "line" and self.moorings is not None:
+            self.moorings.with_failed(name)
+            return fault
+        raise ParameterError(f"fault {fault!r}: {self.name} can have "
+                             + ", ".join(f for f in FAULTS if self._offers(f)))
+
+    def _offers(self, fault: str) -> bool:
+        if fault.startswith(("thruster", "drive-off", "reference")):
+            return self.dp is not None
+        return self.moorings is not None
+
+    # -- stepping -------------------------------------------------------------------------------
+
+    def step(self, s: ShipState, orders: Orders, h: float, t: float = 0.0) -> tuple[ShipState, tuple[float, ...]]:
+        """The state ``h`` s after ``s`` (at ``t`` s) under ``orders``, and the derivatives of (north, east, psi,
+        u, v, r, p, phi) at ``s``."""
+        extra = np.array(s.extra)
+        n_dp = len(EXTRA)
+        lines = self._lines(orders.faults)
+        f_now = extra[n_dp:]
+        f_order, lag = f_now, None
+        if self.dp is not None:
+            f_order, lag, extra[:n_dp] = self._dp_cycle(s, orders, extra[:n_dp], f_now, h, t)
+        m_inv, d, env = self._m_inv, np.asarray(self.d, float), self.environment
+
+        def thrust(tau: float) -> np.ndarray:
+            if lag is None:
+                return np.zeros(3)
+            return self.thrusters.b @ (f_order + (f_now - f_order) * np.exp(-tau / lag))
+
+        def rates(tau: float, y: np.ndarray) -> np.ndarray:
+            north, east, psi, u, v, r = y
+            cn, ce = env.current(t + tau)
+            c, sn = math.cos(psi), math.sin(psi)
+            nu_r = np.array([u - (cn * c + ce * sn), v - (-cn * sn + ce * c), r])
+            force = thrust(tau) + env.loads(t + tau, north, east, psi, u, v, r) - d @ nu_r
+            if lines is not None:
+                force = force + lines.force(north, east, psi)
+            return np.concatenate([(u * c - v * sn, u * sn + v * c, r), m_inv @ force])
+
+        y0 = np.array([s.north, s.east, s.psi, s.u, s.v, s.r])
+        k1 = rates(0.0, y0)
+        k2 = rates(0.5 * h, y0 + 0.5 * h * k1)
+        k3 = rates(0.5 * h, y0 + 0.5 * h * k2)
+        k4 = rates(h, y0 + h * k3)
+        y = y0 + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
+        if lag is not None:
+            extra[n_dp:] = f_order + (f_now - f_order) * np.exp(-h / lag)
+        after = ShipState(*y.tolist(), r_ref=0.0, extra=tuple(extra.tolist()))
+        d0 = k1.tolist()
+        return after, (d0[0], d0[1], d0[2], d0[3], d0[4], d0[5], 0.0, 0.0)
+
+    def _dp_cycle(self, s: ShipState, orders: Orders, dp: np.ndarray, f_now: np.ndarray, h: float, t: float
+                  ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """One cycle of the DP computer at ``t``: (the thrusters' orders (m,), their time constants (m,), its
+        states ``h`` s on (len(EXTRA),))."""
+        computer, thrusters, env = self.dp, self.thrusters, self.environment
+        z, est, ref, drift = dp[0:3], dp[3:18], dp[18:21], dp[21:23]
+        wave = env.wave_motion(t)
+        measured = np.array([s.north + wave[0] + drift[0], s.east + wave[1] + drift[1], s.psi + wave[2]])
+        tau = computer.command(est, ref, z, env.wind_load(t, s.psi, s.u, s.v))
+        lost = frozenset(f.partition(":")[2] for f in orders.faults if f.startswith("thruster:"))
+        stuck = {name: thrusters.stuck(name, 0.0 if thrusters.units[thrusters.index(name)].kind != "tunnel"
+                                       else 0.5 * math.pi)
+                 for name in (f.partition(":")[2] for f in orders.faults if f.startswith("drive-off:"))}
+        f_order = thrusters.allocate(tau, lost - stuck.keys(), stuck)
+        saturated = np.any(np.abs(thrusters.b @ f_order - tau) > 1e-3 * np.abs(tau).max() + 1.0)
+        out = dp.copy()
+        out[3:18] = computer.observe(est, measured, thrusters.b @ f_now, h)
+        if not saturated:
+            out[0:3] = z + h * computer.error(est, ref)
+        out[18:21] = computer.reference(ref, (orders.north, orders.east, _unwrapped(orders.course, ref[2])), h)
+        if "reference drift" in orders.faults:
+            out[21] = drift[0] + REFERENCE_DRIFT_M_S * h
+        return f_order, thrusters.lag(), out
+
+    def _lines(self, faults: frozenset[str]) -> Moorings | None:
+        """Her moorings less the lines parted by ``faults``."""
+        if self.moorings is None:
+            return None
+        return self.moorings.with_failed(*(f.partition(":")[2] for f in faults if f.startswith("line:")))
+
+    @property
+    def line_names(self) -> tuple[str, ...]:
+        return () if self.moorings is None else self.moorings.names
+
+    def line_tensions(self, s: ShipState, faults: frozenset[str]) -> np.ndarray:
+        """Each mooring line's fairlead tension (N, (n_lines,)) in state ``s`` with ``faults``."""
+        return self._lines(faults).tensions(s.north, s.east, s.psi)
+
+    def settled(self, s: ShipState, orders: Orders, rates: tuple[float, ...]) -> bool:
+        """Never: the weather keeps working on her."""
+        return False
+
+    # -- what she shows -------------------------------------------------------------------------
+
+    def thruster_use(self, extra: np.ndarray) -> np.ndarray:
+        """Each thruster's thrust as a fraction of its rating, (T, n) from her ``extra`` states (T, len(extra))."""
+        if self.thrusters is None:
+            return np.zeros((len(extra), 0))
+        return np.array([self.thrusters.use(row[len(EXTRA):]) for row in np.atleast_2d(extra)])
+
+    def set_point(self, extra: np.ndarray) -> np.ndarray:
+        """The set point the reference model has reached (T, 3: north m, east m, psi rad) from ``extra`` (T, k)."""
+        extra = np.atleast_2d(extra)
+        at = EXTRA.index("ref_north")
+        if self.dp is None:
+            return np.zeros((len(extra), 3))
+        return extra[:, at:at + 3]
+
+
+def _unwrapped(course: float, near: float) -> float:
+    """``course`` (rad) as the angle nearest ``near``: the reference model turns the short way."""
+    return near + wrap(course - near)

@@ -1,0 +1,137 @@
+"""Mean second-order wave drift coefficients: the horizontal force and yaw moment per wave amplitude squared.
+
+A :class:`DriftTable` holds ``D(omega, beta)`` for surge X, sway Y and yaw N in the manoeuvring axes of
+:mod:`marinesim.manoeuvring.state` (x forward, y to starboard, z down; N positive turning the bow to starboard),
+so that a regular wave ``a cos(omega t)`` of relative propagation heading ``beta`` (docs/CONVENTIONS.md: 0
+following sea, pi head sea, +pi/2 travelling towards port) pushes the vessel with the mean force ``|a|^2 D``.
+Readers convert their program's axes once (e.g. :mod:`marinesim.vessel.wamit_drift`); :func:`make_drift_table`
+sorts, completes half-range tables by the port/starboard mirror and checks the headings cover the circle.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from marinesim.errors import ParameterError
+from marinesim.vessel.rao import MAX_HEADING_GAP
+
+DRIFT_DOFS = ("X", "Y", "N")
+"""The three drift loads, manoeuvring axes: surge (N/m^2), sway to starboard (N/m^2), yaw to starboard (N m/m^2)."""
+DRIFT_MIRROR_SIGN = np.array([1.0, -1.0, -1.0])
+"""Sign of each load at heading ``-beta`` against ``beta`` (port/starboard symmetry): X even, Y and N odd."""
+LONG_WAVE_POWER = 4
+"""Below the table's lowest frequency the coefficients fall as ``(omega / omega_0)^4`` (the drift force of
+long waves vanishes like the square of the body's wave-scattering, ~ (k L)^2 ~ omega^4)."""
+
+
+@dataclass(frozen=True, eq=False)
+class DriftTable:
+    """Mean drift coefficients ``D(omega, beta)``, manoeuvring axes (module docstring).
+
+    ``omega`` (n_w,) rad/s, strictly increasing, > 0; ``beta`` (n_b,) rad, relative propagation heading,
+    strictly increasing in [-pi, pi), covering the circle (no gap over ``MAX_HEADING_GAP``);
+    ``coefficients`` (n_w, n_b, 3): X and Y in N/m^2, N in N m/m^2 (per wave amplitude squared).
+    Build it with :func:`make_drift_table`, which checks all this.
+    """
+
+    omega: np.ndarray
+    beta: np.ndarray
+    coefficients: np.ndarray
+    source: str = ""
+    notes: tuple[str, ...] = ()
+
+    def __call__(self, omega: np.ndarray | float, beta: np.ndarray | float) -> np.ndarray:
+        """``D`` at wave frequencies ``omega`` (rad/s) and relative headings ``beta`` (rad), broadcast together:
+        shape ``broadcast(omega, beta).shape + (3,)``, i.e. (n, 3) for (n,) inputs.
+
+        Bilinear in frequency and in heading (periodic over 2 pi). Above the highest frequency the last row is
+        kept (constant); below the lowest the first row falls as ``(omega / omega_0)^4``
+        (:data:`LONG_WAVE_POWER`), and ``omega <= 0`` gives zero.
+        """
+        w, b = np.broadcast_arrays(np.asarray(omega, dtype=float), np.asarray(beta, dtype=float))
+        shape = w.shape
+        w, b = w.ravel(), b.ravel()
+        # heading: wrap into [beta_0, beta_0 + 2 pi) and interpolate on the table closed round the circle
+        ring = np.append(self.beta, self.beta[0] + 2.0 * math.pi)
+        q = self.beta[0] + np.mod(b - self.beta[0], 2.0 * math.pi)
+        j = np.clip(np.searchsorted(ring, q, side="right") - 1, 0, self.beta.size - 1)
+        tb = ((q - ring[j]) / (ring[j + 1] - ring[j]))[:, None]
+        j1 = np.where(j + 1 == self.beta.size, 0, j + 1)
+        # frequency: clamp into the table; the long-wave factor applies below it
+        n_w = self.omega.size
+        wc = np.clip(w, self.omega[0], self.omega[-1])
+        i = np.clip(np.searchsorted(self.omega, wc, side="right") - 1, 0, max(n_w - 2, 0))
+        i1 = np.minimum(i + 1, n_w - 1)
+        span = self.omega[i1] - self.omega[i]
+        tw = np.divide(wc - self.omega[i], span, out=np.zeros_like(wc), where=span > 0)[:, None]
+        c = self.coefficients
+        low = (1.0 - tb) * c[i, j] + tb * c[i, j1]
+        high = (1.0 - tb) * c[i1, j] + tb * c[i1, j1]
+        out = (1.0 - tw) * low + tw * high
+        factor = np.where(w >= self.omega[0], 1.0, np.clip(w / self.omega[0], 0.0, None) ** LONG_WAVE_POWER)
+        return (out * factor[:, None]).reshape(shape + (3,))
+
+
+def make_drift_table(omega: np.ndarray, beta: np.ndarray, coefficients: np.ndarray, *, source: str = "",
+                     notes: tuple[str, ...] = ()) -> DriftTable:
+    """A :class:`DriftTable` from ``omega`` (n_w,) rad/s, ``beta`` (n_b,) rad and ``coefficients`` (n_w, n_b, 3)
+    in the manoeuvring axes, in any order. Headings spanning exactly 0..pi (or -pi..0) are completed by the
+    port/starboard mirror (:data:`DRIFT_MIRROR_SIGN`); any other set must leave no gap wider than
+    ``MAX_HEADING_GAP`` round the circle. :class:`ParameterError` names what is wrong."""
+    omega = np.asarray(omega, dtype=float)
+    beta = np.asarray(beta, dtype=float)
+    values = np.asarray(coefficients, dtype=float)
+    if omega.ndim != 1 or beta.ndim != 1 or values.shape != (omega.size, beta.size, 3):
+        raise ParameterError(f"drift coefficients must be (frequencies, headings, 3) = ({omega.size}, {beta.size}, 3),"
+                             f" got {values.shape}")
+    if omega.size == 0 or beta.size == 0:
+        raise ParameterError("a drift table needs at least one frequency and one heading")
+    if not (np.all(np.isfinite(omega)) and np.all(np.isfinite(beta)) and np.all(np.isfinite(values))):
+        raise ParameterError("drift table frequencies, headings and coefficients must be finite")
+    if np.any(omega <= 0.0):
+        raise ParameterError(f"drift table frequencies must be > 0 rad/s, got {omega.min():g}")
+    order = np.argsort(omega, kind="stable")
+    omega, values = omega[order], values[order]
+    if np.any(np.diff(omega) == 0.0):
+        raise ParameterError(f"drift table frequency {omega[np.flatnonzero(np.diff(omega) == 0.0)[0]]:g} rad/s "
+                             "is given twice")
+    eps = 1e-9
+    wrapped = np.mod(beta + math.pi, 2.0 * math.pi) - math.pi  # [-pi, pi)
+    if beta.size > 1 and np.all(beta > -eps) and np.all(beta < math.pi + eps) \
+            and beta.min() < eps and beta.max() > math.pi - eps:
+        wrapped = np.where(beta > math.pi - eps, -math.pi, beta)
+        inner = (beta > eps) & (beta < math.pi - eps)
+        wrapped = np.concatenate([wrapped, -beta[inner]])
+        values = np.concatenate([values, values[:, inner] * DRIFT_MIRROR_SIGN], axis=1)
+        notes = notes + ("headings 0..180 deg completed by the port/starboard mirror",)
+    elif beta.size > 1 and np.all(beta < eps) and np.all(beta > -math.pi - eps) \
+            and beta.max() > -eps and beta.min() < -math.pi + eps:
+        wrapped = np.where(beta < -math.pi + eps, -math.pi, np.where(beta > -eps, 0.0, beta))
+        inner = (beta < -eps) & (beta > -math.pi + eps)
+        wrapped = np.concatenate([wrapped, -beta[inner]])
+        values = np.concatenate([values, values[:, inner] * DRIFT_MIRROR_SIGN], axis=1)
+        notes = notes + ("headings -180..0 deg completed by the port/starboard mirror",)
+    order = np.argsort(wrapped, kind="stable")
+    wrapped, values = wrapped[order], values[:, order]
+    same = np.flatnonzero(np.diff(wrapped) < eps)
+    # one heading twice (-180 and 180, 0 and 360, as runs over the whole circle write it): kept once if it agrees
+    scale = max(float(np.abs(values).max()), 1e-300)
+    for k in same:
+        if not np.allclose(values[:, k], values[:, k + 1], rtol=1e-4, atol=1e-6 * scale):
+            raise ParameterError(f"drift table heading {math.degrees(wrapped[k]):g} deg is given twice, with "
+                                 "different values")
+    if same.size:
+        keep = np.setdiff1d(np.arange(wrapped.size), same + 1)
+        wrapped, values = wrapped[keep], values[:, keep]
+    gaps = np.diff(np.append(wrapped, wrapped[0] + 2.0 * math.pi))
+    if np.any(gaps > MAX_HEADING_GAP + eps):
+        k = int(np.argmax(gaps))
+        raise ParameterError(f"drift table headings leave a gap of {math.degrees(gaps[k]):g} deg after "
+                             f"{math.degrees(wrapped[k]):g} deg (at most {math.degrees(MAX_HEADING_GAP):g}): give "
+                             "headings round the circle, or 0..180 deg for a port/starboard symmetric vessel")
+    for array in (omega, wrapped, values):
+        array.setflags(write=False)
+    return DriftTable(omega, wrapped, values, str(source), tuple(notes))

@@ -1,0 +1,200 @@
+"""Dynamic positioning: the supply vessel of configs/station/supply.toml holding station under wind and current,
+losing a thruster, following a drifting position reference, filtering the waves out of her measured position; the
+capability envelope and the simulation telling the same story; bad station files refused."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from conftest import ROOT
+from marinesim.cli import main
+from marinesim.errors import ScenarioError
+from marinesim.manoeuvring.voyage import Voyage
+from marinesim.scenario import load_scenario
+from marinesim.scenario.station_file import load_station
+from marinesim.station.capability import CURRENT_M_S, envelope
+from marinesim.station.dp import Dp
+from marinesim.station.environment import Weather, current_vector
+from marinesim.station.vessel import EXTRA, Station
+from marinesim.station.wind import WindLoads
+
+SUPPLY = ROOT / "configs" / "station" / "supply.toml"
+HEADING = math.radians(30.0)
+
+
+@pytest.fixture(scope="module")
+def supply():
+    file = load_station(SUPPLY)
+    m, d = file.matrices()
+    wind = file.wind
+    loads = WindLoads.blendermann(wind.vessel_type, wind.frontal_area_m2, wind.lateral_area_m2, file.length_m,
+                                  wind.lateral_centroid_m)
+    return file, m, d, file.thruster_set(), loads
+
+
+def _voyage(supply, wind_m_s: float, wind_from_deg: float, current=(0.0, 0.0), wave_motion=None) -> Voyage:
+    file, m, d, thrusters, loads = supply
+    weather = Weather(loads, wind_m_s, math.radians(wind_from_deg), current=current, wave_motion=wave_motion)
+    station = Station(file.name, m, d, weather, thrusters, Dp(m, d, file.tuning()))
+    state, orders = station.start(0.0, HEADING)
+    return Voyage(station, state, orders, 0.1)
+
+
+def _thrust(voyage: Voyage, t: float) -> np.ndarray:
+    return voyage.ship.thrusters.b @ np.array(voyage.state(t).extra[len(EXTRA):])
+
+
+def test_in_steady_wind_and_current_the_thrust_balances_the_environment_and_she_holds_station(supply):
+    """12 m/s from 20 deg and 0.5 m/s of current setting 225 deg: after the DP's integral has settled (its
+    natural periods are 80-100 s), the thrusters' force equals the wind's load and the current's (``D nu_c``) to
+    2 %, and she has never left a 5 m footprint. What would be wrong if not: a controller without integral action
+    (a standing offset), a thrust allocation that does not give what is asked, or loads of the wrong sign."""
+    voyage = _voyage(supply, 12.0, 20.0, current=current_vector(0.5, 225.0))
+    times = np.arange(0.0, 1500.0, 5.0)
+    path = voyage.sample(times)
+    offset = np.hypot(path["north"], path["east"])
+    assert offset.max() < 5.0, f"she left the footprint: {offset.max():.2f} m"
+    state = voyage.state(1500.0)
+    weather, d = voyage.ship.environment, voyage.ship.d
+    cn, ce = weather.current(1500.0)
+    c, s = math.cos(state.psi), math.sin(state.psi)
+    current_load = d @ np.array([cn * c + ce * s, -cn * s + ce * c, 0.0])
+    environment = weather.wind_load(1500.0, state.psi, 0.0, 0.0) + current_load
+    thrust = _thrust(voyage, 1500.0)
+    np.testing.assert_allclose(thrust[:2], -environment[:2], rtol=0.02)
+    assert abs(thrust[2] + environment[2]) < 0.02 * abs(environment[2]) + 1e4
+    assert offset[-60:].max() < 0.2, "at steady state she sits on her set point"
+
+
+def test_after_a_thruster_failure_she_drifts_off_where_the_capability_envelope_says_she_must(supply):
+    """18 m/s and the envelope's 0.75 m/s current on the starboard beam: the intact envelope holds it (limit above
+    18 m/s there), the envelope without the first bow tunnel does not (its limit below 18): in the simulation the
+    intact vessel holds within 5 m for 20 minutes; with the thruster lost from the start she is pushed off station
+    beyond 20 m, downwind. What would be wrong if not: an envelope and a simulation that disagree on what the
+    thrusters can do (allocation, limits, loads)."""
+    file, m, d, thrusters, loads = supply
+    beam = (90.0,)
+    intact = envelope(thrusters, loads, d, None, directions_deg=beam).limiting_wind_m_s[0]
+    lost = envelope(thrusters, loads, d, None, ("bow tunnel 1",), directions_deg=beam).limiting_wind_m_s[0]
+    assert lost < 18.0 < intact, (intact, lost)
+    wind_from = math.degrees(HEADING) + 90.0
+    current = current_vector(CURRENT_M_S, wind_from + 180.0)
+    holding = _voyage(supply, 18.0, wind_from, current=current)
+    times = np.arange(0.0, 1200.0, 10.0)
+    held = holding.sample(times)
+    kept = np.hypot(held["north"], held["east"])
+    assert kept[times >= 600.0].max() < 1.0, "the intact vessel settles back on her set point"
+    assert kept.max() < 10.0, "after the weather's first push (all of it at once at t = 0)"
+    failing = _voyage(supply, 18.0, wind_from, current=current)
+    failing.order(0.0, fault="thruster:bow tunnel 1")
+    drifted = failing.sample(times)
+    reach = np.hypot(drifted["north"], drifted["east"])
+    assert reach[-1] > 20.0, f"she should have been blown off: {reach[-1]:.1f} m"
+    downwind = np.array([-math.cos(math.radians(wind_from)), -math.sin(math.radians(wind_from))])
+    assert np.dot([drifted["north"][-1], drifted["east"][-1]], downwind) > 0.9 * reach[-1], "not downwind"
+
+
+def test_a_drifting_position_reference_walks_her_off_the_other_way(supply):
+    """The position reference drifts north at 0.05 m/s from 60 s: the DP holds the *measured* position, so the
+    vessel moves south by as much (15 m after five minutes, to within the loop's lag). What would be wrong if not:
+    a fault that does not reach the measurement, or a DP that reads the true position."""
+    voyage = _voyage(supply, 0.0, 0.0)
+    voyage.order(60.0, fault="reference drift")
+    state = voyage.state(660.0)
+    drift = state.extra[EXTRA.index("drift_north")]
+    assert drift == pytest.approx(30.0, abs=0.2)
+    assert state.north == pytest.approx(-drift, abs=3.0)
+    assert abs(state.east) < 1.0
+
+
+def test_the_observer_keeps_the_wave_frequency_motion_out_of_the_thrusters(supply):
+    """A 1 m surge and sway at the wave period (9 s, the observer's wave model) in the measured position: the
+    thrust's wave-frequency ripple stays below a tenth of what a controller on the raw measurement would ask
+    (``Kp`` times 1 m). What would be wrong if not: thrusters chasing every wave (wear, power) because the observer
+    does not notch the wave frequency."""
+    omega = 2.0 * math.pi / 9.0
+
+    def waves(t: float) -> tuple[float, float, float]:
+        return math.sin(omega * t), math.cos(omega * t), 0.0
+
+    voyage = _voyage(supply, 0.0, 0.0, wave_motion=waves)
+    times = np.arange(600.0, 900.0, 0.5)
+    thrust = np.array([_thrust(voyage, t) for t in times])
+    raw = voyage.ship.dp.kp[:2] * 1.0
+    assert np.all(thrust[:, :2].std(axis=0) * math.sqrt(2.0) < 0.1 * raw), (thrust[:, :2].std(axis=0), raw)
+    path = voyage.sample(times)
+    assert np.hypot(path["north"], path["east"]).max() < 0.5
+
+
+def test_the_shipped_dp_exercise_records_its_thrusters_and_wind(tmp_path, capsys):
+    """``marinesim export`` of configs/supply_dp.toml (two minutes) writes the station's columns: thruster use
+    (0-100 %), the wind and its load, the offset from the set point, read back with pandas. What would be wrong if
+    not: a record without what a DP operator watches."""
+    out = tmp_path / "dp.csv"
+    code = main(["export", str(ROOT / "configs" / "supply_dp.toml"), "--duration", "120", "--out", str(out)])
+    assert code == 0, capsys.readouterr().err
+    frame = pd.read_csv(out)
+    thrusters = [c for c in frame.columns if c.startswith("thruster_") and c.endswith("_pct")]
+    assert len(thrusters) == 5
+    assert frame[thrusters].to_numpy().min() >= 0.0 and frame[thrusters].to_numpy().max() <= 100.0
+    assert frame[thrusters].to_numpy().max() > 1.0, "the thrusters work against the weather"
+    assert frame["wind_speed_m_s"].std() > 0.2, "the wind gusts"
+    assert (frame["wind_force_x_kn"] < 0).mean() > 0.9, "wind from 10 deg off the bow pushes her astern"
+    assert frame["set_point_offset_m"].max() < 5.0
+
+
+def test_thrusters_that_cannot_hold_a_heading_are_refused(tmp_path):
+    """Two main propellers and nothing sideways: no position and heading can be held; the file is refused with one
+    line naming the key. What would be wrong if not: a DP vessel silently unable to hold station."""
+    text = SUPPLY.read_text()
+    cut = text.index("[[thrusters]]")
+    mains = "\n".join(block for block in text[cut:].split("\n\n") if 'kind = "main"' in block)
+    bad = tmp_path / "mains_only.toml"
+    bad.write_text(text[:cut] + mains + "\n")
+    with pytest.raises(ScenarioError, match=r"mains_only\.toml: thrusters: .*no\s+position and heading"):
+        load_station(bad)
+
+
+def test_a_scenario_on_dp_loads_with_its_station_and_takes_faults_it_can_have():
+    scenario = load_scenario(ROOT / "configs" / "supply_dp.toml")
+    ship = scenario.vessel.ship
+    assert ship.label == "DP" and len(ship.thrusters.units) == 5
+    state, orders = ship.start(0.0, HEADING)
+    with pytest.raises(Exception, match="no thruster 'bow 9'"):
+        ship.order(orders, state, fault="thruster:bow 9")
+    with pytest.raises(Exception, match="takes set points, not helm"):
+        ship.order(orders, state, rudder_deg=10.0)
+
+
+def test_the_shuttle_tankers_thrust_balances_wind_current_and_the_waves_drift_on_average():
+    """configs/tanker_dp.toml, 20 minutes after the first five: the DP's thrust averaged over them equals the
+    average of the loads the weather put on her (wind with gusts, current, the waves' slowly varying drift from
+    her WAMIT .9 table) to 2 % in surge and sway; the drift's average is near its expected mean ``sum |a|^2 D``
+    (within a third: slow drift has periods of minutes). What would be wrong if not: drift forces that do not reach
+    the vessel, of the wrong sign, or a DP that leaves a standing offset."""
+    from marinesim.scenario.schema import with_run
+    from marinesim.session.timeline import Simulation
+    from marinesim.station.drift import SlowDrift
+
+    scenario = with_run(load_scenario(ROOT / "configs" / "tanker_dp.toml"), duration=1500.0)
+    sim = Simulation(scenario, wake=False)
+    ship, weather = sim.voyage.ship, sim.station.weather
+    times = np.arange(300.0, 1500.0, 1.0)
+    states = [sim.voyage.state(t) for t in times]
+    thrust = np.array([ship.thrusters.b @ np.array(s.extra[len(EXTRA):]) for s in states]).mean(axis=0)
+    loads = np.array([weather.loads(t, s.north, s.east, s.psi, s.u, s.v, s.r) for t, s in zip(times, states)])
+    wind = np.array([weather.wind_load(t, s.psi, s.u, s.v) for t, s in zip(times, states)])
+    cn, ce = weather.current(0.0)
+    current = np.array([ship.d @ np.array([cn * math.cos(s.psi) + ce * math.sin(s.psi),
+                                           -cn * math.sin(s.psi) + ce * math.cos(s.psi), 0.0]) for s in states])
+    environment = (loads + current).mean(axis=0)
+    np.testing.assert_allclose(thrust[:2], -environment[:2], rtol=0.02)
+    drift = (loads - wind).mean(axis=0)
+    psi = float(np.mean([s.psi for s in states]))
+    expected = SlowDrift.from_components(sim.components(0), scenario.station.drift).mean(0.5 * math.pi - psi)
+    assert expected[0] < -1e5, "waves from ahead push a tanker astern"
+    np.testing.assert_allclose(drift[:2], expected[:2], rtol=0.35)
