@@ -19,7 +19,7 @@ PACKAGE = ROOT / "marinesim"
 LAYERS = (
     {"__init__", "errors", "constants", "angles", "atomic", "cache", "tokens", "recent", "progress",
      "resources", "formats", "pose", "gl"},
-    {"sea"}, {"hull"}, {"vessel"}, {"manoeuvring"}, {"wake"}, {"solver"}, {"criteria"},
+    {"sea"}, {"hull"}, {"vessel"}, {"manoeuvring"}, {"station"}, {"wake"}, {"solver"}, {"criteria"},
     {"scenario"}, {"session"}, {"study"}, {"report"}, {"render"}, {"cli", "__main__"},
 )
 

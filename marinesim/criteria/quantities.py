@@ -21,6 +21,7 @@ lateral and normal specific force in the deck frame (:func:`~marinesim.criteria.
 | ``msi_pct`` | motion sickness incidence, 2 h (O'Hanlon & McCauley 1974) | :mod:`.sickness` |
 | ``msdv_m_s1_5`` | motion sickness dose value over the run (ISO 2631-1, W_f) | :mod:`.sickness` |
 | ``mii_per_min`` | motion-induced interruptions, lateral tipping (Graham 1990) | :mod:`.interruptions` |
+| ``offset_max_m`` | largest distance of a vessel keeping station from her set point (the DP footprint) | :mod:`.statistics` |
 """
 
 from __future__ import annotations
@@ -36,6 +37,10 @@ WINDOW_S = 600.0
 """A criterion's running window unless it says otherwise (s)."""
 HELIDECK_WINDOW_S = 1200.0
 """The helideck quantities' window: helideck monitoring systems report over 20 minutes (CAP 437)."""
+FOOTPRINT_WINDOW_S = 30.0
+"""The footprint's window (s): a DP alarm sounds within seconds of her leaving it, and is cleared as soon."""
+STATION_QUANTITIES = ("offset_max_m",)
+"""Quantities of a vessel keeping station only (her record has their columns)."""
 LATERAL, NORMAL = "{p}_lateral_sf_m_s2", "{p}_normal_sf_m_s2"
 """The derived series: a point's specific force along the deck's y and z axes (m/s^2)."""
 
@@ -128,6 +133,8 @@ QUANTITIES: dict[str, Measure] = {
     "msi_pct": Measure("%", "motion sickness incidence (2 h)", ("{p}_az_m_s2",),
                        lambda series, dt, options: sickness.msi_of_record(series[0], dt), at_point=True),
     "msdv_m_s1_5": Measure("m/s^1.5", "motion sickness dose value", ("{p}_az_m_s2",), at_point=True, dose=Dose),
+    "offset_max_m": Measure("m", "largest offset from the set point", ("set_point_offset_m",),
+                            _one(statistics.max_abs), window_s=FOOTPRINT_WINDOW_S),
     "mii_per_min": Measure("1/min", "motion-induced interruptions", (LATERAL, NORMAL), _mii, at_point=True,
                            options=("tipping_coefficient",)),
 }

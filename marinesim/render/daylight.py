@@ -27,9 +27,8 @@ from datetime import timedelta, timezone
 
 import numpy as np
 
-from marinesim.angles import compass_to_math, wave_beta_from_compass
-from marinesim.constants import G
-from marinesim.scenario.model import EnvironmentOptions
+from marinesim.angles import compass_to_math
+from marinesim.scenario.model import EnvironmentOptions, wind_of
 from marinesim.sea.seastate import SeaState
 
 EXTINCTION = np.array([0.025, 0.060, 0.150])
@@ -39,10 +38,6 @@ ADAPTED_SKY = ((-18.0, -2.6), (-12.0, -2.2), (-6.0, -1.4), (0.0, -0.5), (6.0, -0
 real illuminance falls by eight decades from noon to night, the eye's adaptation takes up most of them."""
 MARSHALL_PALMER_N0, MARSHALL_PALMER_SLOPE, VISIBLE_DROP_MM = 8000.0, 4.1, 1.0
 """N0 (m^-3 mm^-1), the slope's factor (mm^-1) and the smallest drop seen as a streak (mm)."""
-PIERSON_MOSKOWITZ = 0.877
-"""wp U19.5 / g of a fully developed sea (Pierson & Moskowitz 1964)."""
-U19_5_TO_U10 = 1.075
-"""The wind at 19.5 m over the wind at 10 m (the neutral log profile over the sea)."""
 SUN_AT_ZENITH = np.array([1.00, 0.95, 0.88])
 """The sun's direct light from the zenith (linear RGB): the lower the sun, the redder (:data:`EXTINCTION`)."""
 MOON_PARALLAX_DEG = 0.9507
@@ -131,25 +126,6 @@ def bodies_at(environment: EnvironmentOptions, t_s: float) -> tuple[tuple[float,
     moon = direction(astral.moon.azimuth(observer, when),
                      geocentric - MOON_PARALLAX_DEG * math.cos(math.radians(geocentric)))
     return sun, moon
-
-
-def wind_of(environment: EnvironmentOptions, sea: SeaState | None) -> tuple[float, float, float]:
-    """The wind (unit vector it blows towards, E frame x and y, and speed at 10 m in m/s): the environment's, else
-    from the first wave system of ``sea`` (none without one)."""
-    first = next(iter(sea.systems), None) if sea is not None else None
-    speed, towards = environment.wind_speed_m_s, None
-    if environment.wind_from_deg is not None:
-        towards = wave_beta_from_compass(environment.wind_from_deg)  # blowing from a bearing, as waves come
-    if first is not None:
-        towards = first.beta if towards is None else towards
-        if speed is None:
-            spectrum = getattr(first, "spectrum", None)
-            u10 = getattr(spectrum, "u10", None)
-            period = spectrum.tp if spectrum is not None else first.period
-            speed = u10 if u10 is not None else PIERSON_MOSKOWITZ * G * period / (2.0 * math.pi) / U19_5_TO_U10
-    if speed is None or towards is None:
-        return (0.0, 0.0, 0.0)
-    return (math.cos(towards), math.sin(towards), float(speed))
 
 
 def visible_drops_m3(rain_mm_h: float) -> float:

@@ -18,14 +18,17 @@ from pydantic import (AfterValidator, AwareDatetime, BaseModel, ConfigDict, Fiel
                       model_validator)
 from pydantic_core import PydanticCustomError, core_schema
 
+from marinesim.angles import wave_beta_from_compass
+from marinesim.constants import G
 from marinesim.criteria.monitor import (CAUTION, MAX_WINDOW_ROWS, Criterion, check_point, default_name,
                                        parse_condition, watched)
-from marinesim.criteria.quantities import QUANTITIES
+from marinesim.criteria.quantities import QUANTITIES, STATION_QUANTITIES
 from marinesim.criteria.sickness import MAX_WF_DT_S
 from marinesim.errors import ParameterError, ScenarioError
 from marinesim.formats import extensions, formats
 from marinesim.hull.mesh import UNITS
 from marinesim.manoeuvring.actuators import TELEGRAPH
+from marinesim.sea.seastate import SeaState
 from marinesim.sea.kinds import (CHOPPINESS_RANGE, FETCH_LIMITED, MAX_DEPTH_M, MAX_FETCH_KM, MAX_HS_M, MAX_RESOLUTION,
                                  MAX_U10_M_S, MAX_WAVE_HEIGHT_M, MAX_WAVE_SYSTEMS, PERIOD_RANGE_S, SPECTRUM_TYPES,
                                  SPREADING_TYPES, misplaced, wind_sea_refusal)
@@ -54,6 +57,8 @@ MAX_CRITERIA = 64
 MAX_MESSAGE = 500
 """The most characters in an event's message."""
 MAX_RAIN_MM_H = 200.0
+MAX_CURRENT_M_S = 5.0
+"""The strongest current a scenario may set (m/s: 10 kn, beyond any tidal race a vessel keeps station in)."""
 """The heaviest rain drawn (mm/h): cloudburst."""
 MIN_VISIBILITY_M, MAX_VISIBILITY_M = 50.0, 200_000.0
 """The range of the meteorological visibility (m): thick fog to the clearest air."""
@@ -63,7 +68,7 @@ in her ability to manoeuvre (those and red-white-red all round), at anchor (all-
 none drawn."""
 WEATHER = ("visibility_m", "cloud_cover_oktas", "wind_speed_m_s", "rain_mm_h")
 """The ``[environment]`` keys an event or the instructor may change during a run."""
-ORDERS = ("speed_kn", "heading_deg", "rudder_deg", "engine", "autopilot")
+ORDERS = ("speed_kn", "heading_deg", "rudder_deg", "engine", "autopilot", "set_north_m", "set_east_m", "fault")
 """The ``[[events]]`` keys that are orders to the ship."""
 
 
@@ -334,7 +339,8 @@ class RunOptions(Section):
 
 
 class EnvironmentOptions(Section):
-    """``[environment]``: the light and the air the picture is drawn in (the physics does not see them). The sun
+    """``[environment]``: the light and the air the picture is drawn in, and the wind and current a vessel keeping
+    station feels (``[station]``; a vessel on passage does not see them). The sun
     is placed by ``time_utc`` at the position, where it and the moon move as the run goes on, or fixed by
     ``sun_azimuth_deg`` and ``sun_elevation_deg``."""
 
@@ -359,6 +365,12 @@ class EnvironmentOptions(Section):
     rain_mm_h: Annotated[float, Quantity("mm/h", ge=0.0, le=MAX_RAIN_MM_H)] = Field(
         0.0, description="rain rate drawn as falling streaks (2.5 light, 10 heavy, 50 violent showers); the "
                          "visibility is its own key")
+    current_speed_m_s: Annotated[float, Quantity("m/s", ge=0.0, le=MAX_CURRENT_M_S)] = Field(
+        0.0, description="a uniform current (pushes a vessel keeping station: [station])")
+    current_to_deg: Annotated[float, Quantity("deg", ge=0.0, le=360.0, what="a compass bearing")] = Field(
+        0.0, description="where the current sets TO (as mariners give a current, unlike wind and waves)")
+    wind_gusts: bool = Field(True, description="the wind on a vessel keeping station gusts (NPD / ISO 19901-1 "
+                                               "spectrum) about its mean")
     visibility_m: Annotated[float, Quantity("m", ge=MIN_VISIBILITY_M, le=MAX_VISIBILITY_M)] = Field(
         40_000.0, description="meteorological visibility: where a dark object's contrast against the horizon "
                               "falls to 0.05 (Koschmieder; 1 km is fog, 10 km moderate, 40 km very good)")
@@ -394,6 +406,32 @@ class EnvironmentOptions(Section):
         except ValidationError as error:
             first = error.errors()[0]
             raise ParameterError(f"environment.{'.'.join(map(str, first['loc']))}: {first['msg']}") from None
+
+
+PIERSON_MOSKOWITZ = 0.877
+"""wp U19.5 / g of a fully developed sea (Pierson & Moskowitz 1964)."""
+U19_5_TO_U10 = 1.075
+"""The wind at 19.5 m over the wind at 10 m (the neutral log profile over the sea)."""
+
+
+def wind_of(environment: EnvironmentOptions, sea: SeaState | None) -> tuple[float, float, float]:
+    """The wind (unit vector it blows towards, E frame x and y, and speed at 10 m in m/s): the environment's, else
+    from the first wave system of ``sea`` (none without one): what the picture's foam and spray and a vessel keeping
+    station feel."""
+    first = next(iter(sea.systems), None) if sea is not None else None
+    speed, towards = environment.wind_speed_m_s, None
+    if environment.wind_from_deg is not None:
+        towards = wave_beta_from_compass(environment.wind_from_deg)  # blowing from a bearing, as waves come
+    if first is not None:
+        towards = first.beta if towards is None else towards
+        if speed is None:
+            spectrum = getattr(first, "spectrum", None)
+            u10 = getattr(spectrum, "u10", None)
+            period = spectrum.tp if spectrum is not None else first.period
+            speed = u10 if u10 is not None else PIERSON_MOSKOWITZ * G * period / (2.0 * math.pi) / U19_5_TO_U10
+    if speed is None or towards is None:
+        return (0.0, 0.0, 0.0)
+    return (math.cos(towards), math.sin(towards), float(speed))
 
 
 def _at_least_one(systems: list[SeaOptions]) -> list[SeaOptions]:
@@ -441,6 +479,15 @@ class EventOptions(Section):
         None, description="new wind speed (the foam streaks; the sea changes only by sea)")
     rain_mm_h: Annotated[float | None, Quantity("mm/h", ge=0.0, le=MAX_RAIN_MM_H)] = Field(
         None, description="new rain rate (a squall; 0 ends it)")
+    set_north_m: Annotated[float | None, Quantity("m", ge=-500.0, le=500.0)] = Field(
+        None, description="a vessel on DP: her position set point north of where she started (with heading_deg: "
+                          "her heading's)")
+    set_east_m: Annotated[float | None, Quantity("m", ge=-500.0, le=500.0)] = Field(
+        None, description="... and east of it")
+    fault: Annotated[str | None, Field(min_length=1, max_length=80)] = Field(
+        None, description='an instructor\'s fault on a vessel keeping station: "thruster:NAME" lost, '
+                          '"drive-off:NAME" stuck at full thrust, "reference drift" (the position reference walks '
+                          'off), "line:NAME" parted')
 
     @model_validator(mode="after")
     def _one_trigger_and_an_action(self) -> EventOptions:
@@ -501,6 +548,26 @@ class ObjectiveOptions(Section):
         default_factory=list, description="names of [[criteria]] that judge it (met: none exceeded)")
 
 
+class StationOptions(Section):
+    """``[station]``: the vessel keeps station under wind, current and waves, on dynamic positioning or moorings
+    (:mod:`marinesim.station`); the set point is where she starts, on her heading."""
+
+    vessel: str = Field(description='her station-keeping file: a shipped one by name ("supply", "semisub": '
+                                    'configs/station) or a file (.toml)')
+    mode: Literal["dp", "moored"] = Field("dp", description="on dynamic positioning, or held by moorings")
+    moorings: str | None = Field(None, description='moored: the mooring file, a shipped one by name '
+                                                   '("semisub_8_chain": configs/moorings) or a file (.toml)')
+    footprint_m: Annotated[float, Quantity("m", gt=0.0, le=500.0)] = Field(
+        5.0, description='the alarm radius around the set point: a criterion "footprint" (offset_max_m) unless '
+                         "the scenario names one")
+
+    @model_validator(mode="after")
+    def _moorings_when_moored(self) -> StationOptions:
+        if (self.mode == "moored") != (self.moorings is not None):
+            raise _refuse("moorings", "give moorings with mode = \"moored\" (and only then)")
+        return self
+
+
 class BriefingOptions(Section):
     """``[briefing]``: what the trainees are told before the exercise, and its objectives."""
 
@@ -523,6 +590,30 @@ class ScenarioFile(Section):
     criteria: Annotated[list[CriterionOptions], Field(max_length=MAX_CRITERIA)] = Field(
         default_factory=list, description="motion limits evaluated live and by marinesim assess")
     briefing: BriefingOptions | None = Field(None, description="the exercise's briefing and objectives")
+    station: StationOptions | None = Field(None, description="station keeping: DP or moorings under the weather")
+
+    @model_validator(mode="after")
+    def _station_has_a_vessel_at_rest(self) -> ScenarioFile:
+        if self.station is not None:
+            if self.vessel is None:
+                raise _refuse("station", "station keeping needs a [vessel]")
+            if self.vessel.speed_kn > 0.0:
+                raise _refuse("vessel.speed_kn", f"a vessel keeping station has no speed, got {self.vessel.speed_kn:g}")
+            if self.vessel.manoeuvring not in (None, "station"):
+                raise _refuse("vessel.manoeuvring", "a vessel keeping station ([station]) is steered by her DP or "
+                                                    "held by her lines: leave manoeuvring out")
+        for i, criterion in enumerate(self.criteria):
+            if criterion.quantity in STATION_QUANTITIES and self.station is None:
+                raise _refuse(f"criteria[{i}].quantity", f"{criterion.quantity} is a vessel keeping station's: the "
+                                                         "scenario has no [station]")
+        for i, event in enumerate(self.events):
+            if (event.fault is not None or event.set_north_m is not None or event.set_east_m is not None) \
+                    and self.station is None:
+                key = "fault" if event.fault is not None else "set_north_m" if event.set_north_m is not None \
+                    else "set_east_m"
+                raise _refuse(f"events[{i}].{key}", "faults and set points are a station-keeping vessel's: the "
+                                                    "scenario has no [station]")
+        return self
 
     @model_validator(mode="after")
     def _criteria_and_events_fit(self) -> ScenarioFile:

@@ -14,10 +14,11 @@ from typing import Any
 import numpy as np
 
 from marinesim import formats
+from marinesim.angles import math_to_compass
 from marinesim.constants import KNOT
 from marinesim.criteria.interruptions import DEFAULT_TIPPING_COEFFICIENT
 from marinesim.criteria.monitor import Condition, Criterion, parse_condition
-from marinesim.criteria.quantities import Options
+from marinesim.criteria.quantities import STATION_QUANTITIES, Options
 from marinesim.errors import FileFormatError, MarinesimError, ScenarioError
 from marinesim.hull import Hull, VisualMesh, hydrostatics, load_hull, load_visual_mesh
 from marinesim.manoeuvring.ship import Ship
@@ -26,12 +27,24 @@ from marinesim.resources import resource_dir
 from marinesim.scenario.ship_file import load_ship, ship_from_hull
 from marinesim.scenario.model import (HULL_OPTIONS, VISUAL_MESH_OPTIONS, WAVE_PARAMETERS, WEATHER, CriterionOptions,
                                       EnvironmentOptions, EventOptions, OceanOptions, RunOptions, ScenarioFile,
-                                      SeaOptions, VesselOptions, validate)
+                                      SeaOptions, StationOptions, VesselOptions, validate, wind_of)
+from marinesim.scenario.moorings_file import load_moorings
+from marinesim.scenario.station_file import StationFile, load_station
+from marinesim.station.dp import Dp
+from marinesim.station.moorings import Moorings
+from marinesim.station.vessel import Calm, Station
+from marinesim.station.wind import WindLoads
+from marinesim.vessel.drift import DriftTable
+from marinesim.vessel.wamit_drift import read_drift
 from marinesim.sea.build import wave_system
 from marinesim.sea.seastate import SeaState
 from marinesim.vessel.body import RigidBody
 from marinesim.vessel.rao import RaoTable, one_speed_note
 from marinesim.vessel.read import read_rao
+
+
+FOOTPRINT = "footprint"
+"""The criterion a vessel keeping station gets from ``station.footprint_m`` when the scenario names none."""
 
 
 @dataclass(frozen=True)
@@ -74,12 +87,16 @@ class Event:
     rudder_deg: float | None = None       # by hand, positive to starboard
     engine: str | None = None             # a telegraph order
     autopilot: bool | None = None
+    fault: str | None = None              # an instructor's fault on a vessel keeping station
+    set_north_m: float | None = None      # a DP's position set point, from the start
+    set_east_m: float | None = None
 
     @property
     def orders(self) -> dict[str, float | str | bool]:
         """The orders to the ship, as :meth:`Simulation.order`'s keywords."""
         asked = {"speed_kn": None if self.speed_m_s is None else self.speed_m_s / KNOT, "course_deg": self.heading_deg,
-                 "rudder_deg": self.rudder_deg, "engine": self.engine, "autopilot": self.autopilot}
+                 "rudder_deg": self.rudder_deg, "engine": self.engine, "autopilot": self.autopilot,
+                 "set_north_m": self.set_north_m, "set_east_m": self.set_east_m, "fault": self.fault}
         return {key: value for key, value in asked.items() if value is not None}
 
     @property
@@ -102,6 +119,10 @@ class Event:
             parts.append(self.engine)
         if self.autopilot is not None:
             parts.append(f"autopilot {'on' if self.autopilot else 'off'}")
+        if self.set_north_m is not None or self.set_east_m is not None:
+            parts.append(f"set point {self.set_north_m or 0.0:g} m N {self.set_east_m or 0.0:g} m E")
+        if self.fault is not None:
+            parts.append(f"fault {self.fault}")
         change = ", ".join(parts)
         words = {"visibility_m": "visibility {:g} m", "cloud_cover_oktas": "cloud {:g} oktas",
                  "wind_speed_m_s": "wind {:g} m/s", "rain_mm_h": "rain {:g} mm/h"}
@@ -135,10 +156,35 @@ class Scenario:
     briefing: Briefing | None = None
     environment: EnvironmentOptions = EnvironmentOptions()
     notes: tuple[str, ...] = ()
+    station: StationSetup | None = None
 
     @property
     def name(self) -> str:
         return self.path.stem
+
+    @property
+    def wind(self) -> tuple[float, float]:
+        """The wind at the start (m/s at 10 m, compass deg it comes from): the environment's, else the first wave
+        system's (:func:`~marinesim.scenario.model.wind_of`)."""
+        x, y, speed = wind_of(self.environment, self.sea)
+        return speed, (math_to_compass(math.atan2(y, x)) + 180.0) % 360.0 if speed > 0.0 else 0.0
+
+
+@dataclass(frozen=True)
+class StationSetup:
+    """A vessel keeping station (``[station]``): her file, what it names read (wind loads, drift table), her
+    moorings, and the footprint (m)."""
+
+    options: StationOptions
+    file: StationFile
+    path: Path
+    wind: WindLoads
+    drift: DriftTable | None
+    moorings: Moorings | None
+
+    @property
+    def footprint_m(self) -> float:
+        return self.options.footprint_m
 
 
 def load_scenario(path: str | Path) -> Scenario:
@@ -177,13 +223,66 @@ def _build(path: Path, file: ScenarioFile) -> Scenario:
             raise ScenarioError(f"ocean.depth_m: {depth:g} m is not deeper than the vessel's draft ({draft:.4g} m, "
                                 f"{named}): the keel would be on the sea bed")
     sea = _sea("sea", file.sea, depth, "ocean.depth_m")
+    station = None
+    if file.station is not None:
+        station = _station(path, file.station, vessel, depth)
+        vessel = dataclasses.replace(vessel, ship=_station_vessel(station, vessel))
     events = tuple(_event(f"events[{i}]", e, depth, vessel) for i, e in enumerate(file.events))
     criteria = tuple(_criterion(c) for c in file.criteria)
+    if station is not None and not any(c.quantity in STATION_QUANTITIES for c in criteria):
+        taken = {c.label for c in criteria}
+        name = FOOTPRINT if FOOTPRINT not in taken else f"{FOOTPRINT} {station.footprint_m:g} m"
+        criteria += (Criterion("offset_max_m", station.footprint_m, name=name),)
     briefing = None if file.briefing is None else Briefing(
         file.briefing.text.strip(), tuple((o.text, tuple(o.criteria)) for o in file.briefing.objectives))
     notes = () if vessel is None else _speed_notes(vessel, events)
     return Scenario(path.resolve(), sea, file.ocean, file.run, vessel, events, criteria, briefing, file.environment,
-                    notes)
+                    notes, station)
+
+
+def _station(path: Path, options: StationOptions, vessel: Vessel, depth: float) -> StationSetup:
+    """The station-keeping vessel's file and what it names, her moorings in water ``depth`` (m)."""
+    file_path = _checked("station.vessel", lambda: _named_file(path, options.vessel, "station"))
+    file = _checked("station.vessel", lambda: load_station(file_path))
+    wind = file.wind
+    if wind.file is not None:
+        loads = _checked("station.vessel", lambda: WindLoads.from_file(
+            _file(file_path, wind.file), wind.frontal_area_m2, wind.lateral_area_m2, file.length_m))
+    else:
+        loads = _checked("station.vessel", lambda: WindLoads.blendermann(
+            wind.vessel_type, wind.frontal_area_m2, wind.lateral_area_m2, file.length_m, wind.lateral_centroid_m))
+    drift = None if file.drift is None else _checked("station.vessel", lambda: read_drift(
+        _file(file_path, file.drift), ulen=file.drift_ulen_m))
+    if options.mode == "dp" and not file.thrusters:
+        raise ScenarioError(f"station.mode: {file_path.name} gives no thrusters: she cannot keep station on DP")
+    moorings = None
+    if options.moorings is not None:
+        mooring_path = _checked("station.moorings", lambda: _named_file(path, options.moorings, "moorings"))
+        moorings = _checked("station.moorings", lambda: load_moorings(mooring_path, depth))
+        laid = math.degrees(moorings.heading) % 360.0
+        if abs((laid - vessel.heading_deg + 180.0) % 360.0 - 180.0) > 0.5:
+            raise ScenarioError(f"vessel.heading_deg: {vessel.heading_deg:g} deg, but the moorings "
+                                f"({mooring_path.name}) are laid for a vessel heading {laid:g} deg")
+    return StationSetup(options, file, file_path, loads, drift, moorings)
+
+
+def _station_vessel(setup: StationSetup, vessel: Vessel) -> Station:
+    """The :class:`Station` of ``setup`` in calm weather (the session gives her the scenario's)."""
+    m, d = setup.file.matrices()
+    thrusters = setup.file.thruster_set() if setup.options.mode == "dp" else None
+    dp = None if thrusters is None else Dp(m, d, setup.file.tuning())
+    return Station(setup.file.name, m, d, Calm(), thrusters, dp, setup.moorings)
+
+
+def _named_file(scenario: Path, name: str, folder: str) -> Path:
+    """A shipped file by its name (``configs/<folder>/<name>.toml``), else the file ``name`` relative to the
+    scenario."""
+    shipped = sorted(p.stem for p in (resource_dir("configs") / folder).glob("*.toml"))
+    if name in shipped:
+        return resource_dir("configs") / folder / f"{name}.toml"
+    if "/" not in name and "\\" not in name and not name.endswith(".toml"):
+        raise ScenarioError(f"{name!r}: expected a shipped file ({', '.join(shipped)}) or a file (.toml)")
+    return _file(scenario, name)
 
 
 def _sea(where: str, options: list[SeaOptions], depth: float, whole: str) -> SeaState:
@@ -204,7 +303,8 @@ def _event(where: str, options: EventOptions, depth: float, vessel: Vessel | Non
     condition = None if options.when is None else parse_condition(options.when)
     weather = {key: getattr(options, key) for key in WEATHER if getattr(options, key) is not None}
     event = Event(options.at_s, condition, options.ramp_s, sea, speed, options.heading_deg, options.message, weather,
-                  options.rudder_deg, options.engine, options.autopilot)
+                  options.rudder_deg, options.engine, options.autopilot, options.fault, options.set_north_m,
+                  options.set_east_m)
     if event.orders:  # an order the ship cannot carry out is refused now, not when it comes
         state, orders = vessel.ship.start(vessel.speed_m_s, math.radians(vessel.heading_deg))
         for key, value in event.orders.items():
