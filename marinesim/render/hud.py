@@ -82,6 +82,16 @@ class Slider:
 
 
 @dataclass(frozen=True)
+class Footprint:
+    """A vessel keeping station: her recent positions ``east``, ``north`` (m from the set point, oldest first) and
+    the footprint's ``radius`` (m), drawn to scale, north up (the DP operator's position plot)."""
+
+    east: np.ndarray
+    north: np.ndarray
+    radius: float
+
+
+@dataclass(frozen=True)
 class StripChart:
     """One channel's recent history: ``times`` (s, increasing) and ``values`` in ``unit``; the chart
     shows ``[times[-1] - span_s, times[-1]]``."""
@@ -118,8 +128,9 @@ class StripHistory:
         self._values[slot] = values
         self._written += 1
 
-    def chart(self, name: str, unit: str) -> StripChart:
-        """The channel ``name`` over the last ``span_s`` seconds, oldest first (copies)."""
+    def chart(self, name: str, unit: str, span_s: float | None = None) -> StripChart:
+        """The channel ``name`` over the last ``span_s`` seconds (default the history's), oldest first (copies)."""
+        span_s = self.span_s if span_s is None else span_s
         column = self.names.index(name) if name in self.names else None
         if column is None:
             raise KeyError(f"no channel {name!r} (have {', '.join(self.names)})")
@@ -128,9 +139,9 @@ class StripHistory:
         order = np.arange(self._written - count, self._written) % capacity
         times, values = self._times[order], self._values[order, column]
         if count:
-            recent = times >= times[-1] - self.span_s
+            recent = times >= times[-1] - span_s
             times, values = times[recent], values[recent]
-        return StripChart(name, unit, times.copy(), values.copy(), self.span_s)
+        return StripChart(name, unit, times.copy(), values.copy(), span_s)
 
     def clear(self) -> None:
         self._written = 0
@@ -226,7 +237,8 @@ class Hud:
 
     def draw(self, size: tuple[int, int], lines: Sequence[str], charts: Sequence[StripChart] = (),
              help_lines: Sequence[str] | None = None, panel: Sequence[tuple[str, str]] = (),
-             messages: Sequence[str] = (), banners: Sequence[Banner] = (), slider: Slider | None = None) -> None:
+             messages: Sequence[str] = (), banners: Sequence[Banner] = (), slider: Slider | None = None,
+             footprint: Footprint | None = None) -> None:
         """Draw onto the currently bound framebuffer of `size` (w, h) pixels, alpha-blended, depth test off:
         `lines` as a text block at the top-left on a translucent dark panel; `charts` stacked at the bottom-left
         (each: a panel about 360x70 px with its title, unit, current value, the min/max of the y axis as labels,
@@ -236,7 +248,8 @@ class Hud:
         two would overlap), each coloured by its level (:data:`LEVEL_COLORS`); ``messages`` in amber at
         the top-centre, below the top panels if they leave no room between them; ``banners`` along the
         bottom, right of the charts, the first lowest (the middle of the picture, where the orbit camera puts
-        the vessel, stays free); ``slider`` along the bottom, right of the charts (:meth:`slider_rect`).
+        the vessel, stays free); ``slider`` along the bottom, right of the charts (:meth:`slider_rect`);
+        ``footprint`` a square position plot at the right, under the criteria panel (:meth:`_footprint`).
         Charts that would take more than :data:`CHART_SHARE` of the height are left out (the last first), all of
         them while a banner has no room beside them, and a line longer than the target is wide is cut with ``~``.
 
@@ -270,6 +283,11 @@ class Hud:
             if right_x < 2 * self.margin + left[0]:  # no room beside the text block: under it, on the left (the
                 right_x, right_y = self.margin, 2 * self.margin + left[1]  # middle, the vessel's, stays free)
             self._text_block(base, right_x, right_y, rows, self.pad, PANEL_COLOR)
+        if footprint is not None:
+            side = 2 * self.chart_size[1]
+            below = right_y + right[1] + self.margin if panel and right_y == self.margin else self.margin
+            self._footprint(base, footprint, width - self.margin - side, below, side)
+            right = (max(right[0], side), below + side - self.margin)
         if messages:
             messages = [clip(m) for m in messages]
             box_w, box_h = self._text_size(messages, self.pad)
@@ -414,6 +432,32 @@ class Hud:
         if times.size > 1:
             xs = right - (times[-1] - times) / chart.span_s * (right - plot_x)
             layer.polyline(xs, zero - values / limit * half, TRACE_COLOR)
+
+    def _footprint(self, layer: _Layer, footprint: Footprint, x: int, y: int, side: int) -> None:
+        """The position plot in a ``side`` px square panel at (``x``, ``y``): the footprint's circle, the set point's
+        cross, her track and where she is now (red once outside)."""
+        layer.rect(x, y, side, side, PANEL_COLOR)
+        east, north = np.asarray(footprint.east, float), np.asarray(footprint.north, float)
+        now = math.hypot(east[-1], north[-1]) if east.size else 0.0
+        self._text(layer, x + self.pad, y + 2, f"footprint {footprint.radius:g} m", TEXT_COLOR)
+        top = y + self.line_height + 4
+        half = (y + side - self.pad - top) / 2.0
+        cx, cy = x + side / 2.0, top + half
+        reach = max(footprint.radius, float(np.max(np.hypot(east, north))) if east.size else 0.0)
+        scale = 0.9 * half / reach
+        outside = now > footprint.radius
+        circle = np.linspace(0.0, 2.0 * math.pi, 73)
+        layer.polyline(cx + footprint.radius * scale * np.sin(circle), cy - footprint.radius * scale * np.cos(circle),
+                       LEVEL_COLORS["exceeded" if outside else "ok"])
+        tick = 0.12 * half
+        layer.polyline(np.array([cx - tick, cx + tick]), np.array([cy, cy]), ZERO_LINE_COLOR)
+        layer.polyline(np.array([cx, cx]), np.array([cy - tick, cy + tick]), ZERO_LINE_COLOR)
+        if east.size > 1:
+            layer.polyline(cx + east * scale, cy - north * scale, TRACE_COLOR)
+        if east.size:
+            dot = max(self.pad // 2, 2)
+            layer.rect(cx + east[-1] * scale - dot, cy - north[-1] * scale - dot, 2 * dot, 2 * dot,
+                       LEVEL_COLORS["exceeded" if outside else "ok"])
 
     def _render(self, layer: _Layer) -> None:
         """Panels, then lines, then text of one layer."""

@@ -22,16 +22,26 @@ from marinesim.gl import is_software
 from marinesim.render import CAMERAS, HUDS
 from marinesim.render.camera import BridgeCamera, FreeCamera, OrbitCamera
 from marinesim.render.clock import FrameClock
-from marinesim.render.hud import (ALARM_COLOR, LEVEL_COLORS, Banner, Hud, Slider, StripChart, StripHistory,
-                                  font_px_for)
+from marinesim.render.hud import (ALARM_COLOR, LEVEL_COLORS, Banner, Footprint, Hud, Slider, StripChart,
+                                  StripHistory, font_px_for)
 from marinesim.render.renderer import Renderer, RenderOptions
 from marinesim.scenario import Scenario
 from marinesim.session.exercise import Exercise, quiet
 from marinesim.session.replay import Replay
+from marinesim.session.station import line_columns, thruster_columns
 from marinesim.session.timeline import Simulation
 
 CHARTED = (("heave", "heave_m", "m"), ("roll", "roll_deg", "deg"), ("pitch", "pitch_deg", "deg"))
 """Strip charts: title, motion column, unit."""
+STATION_CHARTED = (("offset", "set_point_offset_m", "m"),)
+"""A vessel keeping station charts her offset from the set point as well."""
+FOOTPRINT_TRACK = (("east of set point", "east_of_set_point_m", "m"), ("north of set point", "north_of_set_point_m",
+                                                                       "m"))
+"""... and keeps her position for the footprint plot (not charted)."""
+CHART_SPAN_S = 60.0
+"""The strip charts show the last minute."""
+FOOTPRINT_SPAN_S = 600.0
+"""The footprint plot shows the last ten minutes (1,500 samples of the history)."""
 HISTORY_STEP_S = 0.2
 """Spacing of the strip charts' samples (s of simulated time)."""
 NOT_DRAWN = "vessel not drawn: the scenario names no hull or visual_mesh (its motions are computed)"
@@ -80,7 +90,11 @@ class Scene:
         self.cameras = {"orbit": OrbitCamera(distance_m=2.2 * length), "bridge": BridgeCamera(tuple(bridge)),
                         "free": FreeCamera()}
         self.camera_name = camera
-        self.history = StripHistory([name for name, _, _ in CHARTED])
+        self.charted = CHARTED + (STATION_CHARTED if self.sim.station is not None else ())
+        kept = self.charted + (FOOTPRINT_TRACK if self.sim.station is not None else ())
+        self._kept_columns = [column for _, column, _ in kept]
+        self.history = StripHistory([name for name, _, _ in kept], capacity=8192,
+                                    span_s=FOOTPRINT_SPAN_S if self.sim.station is not None else CHART_SPAN_S)
         self._next_sample = 0.0
         self.clock: FrameClock | None = None
         """The window's frame clock (measured frame time and real-time factor); None (a headless render):
@@ -126,7 +140,7 @@ class Scene:
         times = np.arange(self._next_sample, self.sim.time + 1e-9, HISTORY_STEP_S)
         frame = self.sim.frame(times)
         for i, t in enumerate(times):
-            self.history.append(float(t), [frame[column][i] for _, column, _ in CHARTED])
+            self.history.append(float(t), [frame[column][i] for column in self._kept_columns])
         self._next_sample = times[-1] + HISTORY_STEP_S
 
     def draw(self, size: tuple[int, int], hud: bool = True, help_lines: list[str] | None = None) -> None:
@@ -141,13 +155,20 @@ class Scene:
             else:
                 lines, panel = self.strip_lines(size[0]), self.criteria_strip()
             self.hud.draw(size, lines, self.charts(), help_lines, panel, self.exercise.messages(), self.banners(),
-                          self.slider)
+                          self.slider, self.footprint())
 
     def charts(self) -> list[StripChart]:
         """The strip charts drawn: the motions' over the last minute, with the panels and a vessel."""
         if not (self.panels and self.sim.vessel):
             return []
-        return [self.history.chart(name, unit) for name, _, unit in CHARTED]
+        return [self.history.chart(name, unit, CHART_SPAN_S) for name, _, unit in self.charted]
+
+    def footprint(self) -> Footprint | None:
+        """A vessel keeping station's position plot over the last :data:`FOOTPRINT_SPAN_S`, with the panels."""
+        if not self.panels or self.sim.station is None:
+            return None
+        east, north = (self.history.chart(name, unit).values for name, _, unit in FOOTPRINT_TRACK)
+        return Footprint(east, north, self.sim.scenario.station.footprint_m)
 
     def banners(self) -> list[Banner]:
         """The helideck's status light, then the alarms waiting for an acknowledgement (flashing at 1 Hz
@@ -222,9 +243,12 @@ class Scene:
             ordered = c["course_deg"]
             turning = f" > {ordered:03.0f}" if ordered is not None and abs(
                 (ordered - c["heading_deg"] + 180.0) % 360.0 - 180.0) > 0.5 else ""
+            offset = ""
+            if self.sim.station is not None:
+                offset = f" {self.sim.frame(np.array([self.sim.time]))['set_point_offset_m'][0]:.1f} m"
             if not full:  # the strip: as short as a ship's speed and heading were
-                return f"HDG {c['heading_deg']:03.0f}{turning} {self.sim.vessel.ship.label}"
-            return (f"HDG {c['heading_deg']:03.0f}{turning} {c['engine'].upper()}   "
+                return f"HDG {c['heading_deg']:03.0f}{turning} {self.sim.vessel.ship.label}{offset}"
+            return (f"HDG {c['heading_deg']:03.0f}{turning} {c['engine'].upper()}{offset}   "
                     f"SOG {c['speed_over_ground_kn']:.1f} kn")
 
         def side(deg: float) -> str:
@@ -248,6 +272,8 @@ class Scene:
             lines.append(f"surge {m[0]:+6.2f}  sway {m[1]:+6.2f}  heave {m[2]:+6.2f} m")
             lines.append(f"roll {math.degrees(m[3]):+6.2f}  pitch {math.degrees(m[4]):+6.2f}  "
                          f"yaw {math.degrees(m[5]):+6.2f} deg")
+            if self.sim.station is not None:
+                lines.append(self.station_line())
         if self.sim.vessel is not None and self.renderer.mesh is None:
             lines.append(NOT_DRAWN)
         line = f"camera {self.camera_name}"
@@ -257,6 +283,25 @@ class Scene:
         if self.clock is not None:
             line += f"   {self.clock.line()}"
         return lines + [line] + self.status
+
+    def station_line(self) -> str:
+        """A vessel keeping station now: her offset against the footprint, the wind she feels and each thruster's
+        use (%, X lost) or mooring line's tension (kN, X parted)."""
+        sim = self.sim
+        ship, t = sim.voyage.ship, sim.time
+        row = sim.frame(np.array([t]))
+        faults = sim.voyage.orders_at(t).faults
+        words = [f"{ship.label}  offset {row['set_point_offset_m'][0]:.1f} / {sim.scenario.station.footprint_m:g} m",
+                 f"wind {row['wind_speed_m_s'][0]:.0f} m/s from {row['wind_from_deg'][0]:03.0f}"]
+        if ship.thrusters is not None:
+            use = " ".join("X" if f"thruster:{th.name}" in faults else
+                           f"{row[c][0]:.0f}" for th, c in zip(ship.thrusters.units, thruster_columns(ship)))
+            words.append(f"thrust % {use}")
+        if ship.moorings is not None:
+            tensions = " ".join("X" if f"line:{name}" in faults else f"{row[c][0]:.0f}"
+                                for name, c in zip(ship.line_names, line_columns(ship)))
+            words.append(f"lines kN {tensions}")
+        return "   ".join(words)
 
     def weather_line(self) -> str:
         """The light and the air now, as the instructor sets them: the clock (UTC) where the scenario has one, the

@@ -24,6 +24,7 @@ from marinesim.sea.seastate import SeaState
 from marinesim.session.exercise import Exercise, ran_words
 from marinesim.session.log import SessionLog
 from marinesim.session.sidecar import sha256
+from marinesim.session.station import line_columns, station_record, thruster_columns
 
 VERDICTS = {"ok": "met", "caution": "met with caution", "exceeded": "not met", "settling": "no value"}
 """An objective's verdict from the worst level of the criteria that judge it, in a run that went through its
@@ -109,6 +110,26 @@ def _ship(exercise: Exercise) -> dict | None:
         out[column] = np.round(record[column], 6).tolist()
     out["course_deg"] = [None if not o.autopilot else round(math.degrees(o.course) % 360.0, 6)
                          for o in map(sim.voyage.orders_at, times)]
+    if sim.station is not None:
+        out["station"] = _station(sim, times)
+    return out
+
+
+def _station(sim, times: np.ndarray) -> dict:
+    """A vessel keeping station at ``times`` (s): her midship from the set point (m), the wind, and each thruster's
+    use (%) or mooring line's tension (kN), from the record's station columns."""
+    ship = sim.voyage.ship
+    record = station_record(ship, sim.voyage, times)
+    out = {"footprint_m": sim.scenario.station.footprint_m,
+           "north_from_set_point_m": np.round(record["north_of_set_point_m"], 4).tolist(),
+           "east_from_set_point_m": np.round(record["east_of_set_point_m"], 4).tolist(),
+           "wind_speed_m_s": np.round(record["wind_speed_m_s"], 3).tolist()}
+    if ship.thrusters is not None:
+        out["thrusters"] = {t.name: np.round(record[column], 2).tolist()
+                            for t, column in zip(ship.thrusters.units, thruster_columns(ship))}
+    if ship.moorings is not None:
+        out["lines"] = {name: np.round(record[column], 1).tolist()
+                        for name, column in zip(ship.line_names, line_columns(ship))}
     return out
 
 

@@ -25,7 +25,8 @@ from pathlib import Path
 
 from marinesim.atomic import atomic_path
 from marinesim.report.plots import (CAUTION, EXCEEDED, NM, NONE, OK, STATION_M, clock, compass, criterion_png,
-                                    handling_png, number, timeline_png, track_png, with_unit)
+                                    footprint_png, handling_png, number, station_use_png, timeline_png, track_png,
+                                    with_unit)
 
 LEVELS = {"within limits": "ok", "met": "ok", "ok": "ok", "caution": "caution", "met with caution": "caution",
           "exceeded": "exceeded", "not met": "exceeded", "settling": "none", "no value": "none", "incomplete": "none",
@@ -325,6 +326,18 @@ class _Page:
                f"<span>{_e(' · '.join(moved))}</span></figcaption></figure>",
                f"<figure>{_img(handling, f'heading, speed, rudder and propeller of {name} over the run')}"
                f"<figcaption><b>Handling</b><span>{_e(' · '.join(handled))}</span></figcaption></figure>"]
+        station = ship.get("station")
+        if station:
+            offset = max((math.hypot(n, e) for n, e in zip(station["north_from_set_point_m"],
+                                                            station["east_from_set_point_m"])), default=0.0)
+            kept = "within" if offset <= station["footprint_m"] else "outside"
+            work = "thruster use" if station.get("thrusters") else "mooring line tensions"
+            out += [f"<figure>{_img(footprint_png(ship), f'footprint of {name} around the set point')}"
+                    f"<figcaption><b>Footprint</b><span>largest offset {offset:.1f} m, {kept} the "
+                    f"{station['footprint_m']:g} m footprint</span></figcaption></figure>",
+                    f"<figure>{_img(station_use_png(ship, self.duration), f'wind and {work} of {name}')}"
+                    f"<figcaption><b>Station keeping</b><span>the wind and {work} over the run</span></figcaption>"
+                    "</figure>"]
         return "\n".join(out) + "\n</section>"
 
     def alarms_section(self) -> str:

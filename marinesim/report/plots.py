@@ -806,3 +806,92 @@ def _tag(ax, x: float, y_axes: float, text: str, color: str, ha: str) -> None:
     """A small boxed tag (an event's number) at data ``x``, axes-fraction ``y_axes``."""
     ax.text(x, y_axes, text, transform=ax.get_xaxis_transform(), ha=ha, va="top", fontsize=9, color="white",
             fontweight="bold", bbox={"boxstyle": "round,pad=0.22", "fc": color, "ec": "none"}, zorder=6)
+
+
+def footprint_png(ship: dict) -> bytes:
+    """A vessel keeping station: where her midship was around the set point over the run (east right, north up,
+    to scale, m), the track coloured from light (start) to dark (end), the footprint's circle (red where she went
+    outside it), the set point (a cross) and her outline at the end along her heading."""
+    station = ship["station"]
+    t = np.asarray(ship.get("time_s") or [], float)
+    east = np.asarray(station.get("east_from_set_point_m") or [], float)[: t.size]
+    north = np.asarray(station.get("north_from_set_point_m") or [], float)[: t.size]
+    footprint = float(station["footprint_m"])
+    reach = float(np.hypot(east, north).max()) if east.size else 0.0
+    half = max(1.25 * footprint, 1.1 * reach, 1.0)
+    height_in, top_px = 6.2, 34.0
+    figure, ax = _figure(height_in, top_px=top_px)
+    wide = (WIDTH_IN * DPI - LEFT_PX - RIGHT_PX) / (height_in * DPI - BOTTOM_PX - top_px)  # the axes' own shape
+    ax.set_xlim(-half * wide, half * wide)
+    ax.set_ylim(-half, half)
+    ax.set_aspect("equal", adjustable="box")
+    ax.grid(color=GRID, lw=0.8)
+    ax.set_axisbelow(True)
+    ax.set_xlabel("east of the set point (m)", fontsize=10, color=MUTED)
+    ax.set_ylabel("north of the set point (m)", fontsize=10, color=MUTED)
+    ax.tick_params(labelsize=10, colors=INK)
+    outside = reach > footprint
+    circle = np.linspace(0.0, 2.0 * math.pi, 181)
+    ax.plot(footprint * np.sin(circle), footprint * np.cos(circle), color=EXCEEDED if outside else OK, lw=1.6,
+            ls=(0, (5, 3)), zorder=2)
+    ax.text(footprint * math.sin(math.radians(45.0)), footprint * math.cos(math.radians(45.0)),
+            f"  footprint {footprint:g} m", color=EXCEEDED if outside else OK, fontsize=9.5, va="bottom")
+    if east.size > 1:
+        from matplotlib.collections import LineCollection
+
+        points = np.column_stack([east, north])
+        shade = np.linspace(0.25, 1.0, len(points) - 1)
+        colours = np.column_stack([0.12 + 0.5 * (1 - shade), 0.31 + 0.45 * (1 - shade), 0.55 + 0.35 * (1 - shade),
+                                   np.ones_like(shade)])
+        ax.add_collection(LineCollection(np.stack([points[:-1], points[1:]], axis=1), colors=colours, lw=1.5,
+                                         zorder=3))
+    ax.plot([0.0], [0.0], marker="+", ms=14, mew=2.0, color=INK, zorder=4)
+    heading = ship.get("heading_deg") or []
+    if east.size and heading:
+        _ship_symbol(ax, (float(east[-1]), float(north[-1])), float(heading[-1]), fc=INK, ec=INK, size_px=30.0)
+    words = (f"largest offset {reach:.1f} m" + (f", outside the {footprint:g} m footprint" if outside
+                                                    else f", within the {footprint:g} m footprint"))
+    ax.set_title(f"{ship.get('name') or 'the vessel'} — footprint around the set point", fontsize=12, loc="left",
+                 color=INK, pad=8, fontweight="bold")
+    ax.set_title(words, fontsize=9.5, loc="right", color=EXCEEDED if outside else MUTED, pad=9)
+    return _png(figure)
+
+
+def station_use_png(ship: dict, duration_s: float) -> bytes:
+    """A vessel keeping station over the run, on the report's time axis: each thruster's use (% of its rating), or
+    each mooring line's tension (kN), and the wind speed (m/s) above it."""
+    station = ship["station"]
+    t = np.asarray(ship.get("time_s") or [], float)
+    groups = [(name, np.asarray(values, float)[: t.size]) for name, values in (station.get("thrusters") or {}).items()]
+    lines = not groups
+    if lines:
+        groups = [(f"line {name}", np.asarray(values, float)[: t.size])
+                  for name, values in (station.get("lines") or {}).items()]
+    from matplotlib.figure import Figure
+
+    height = 60.0 + 2 * 150.0 + 30.0 + BOTTOM_PX
+    figure = Figure(figsize=(WIDTH_IN, height / DPI), dpi=DPI, facecolor="white")
+    figure.subplots_adjust(left=LEFT_PX / (WIDTH_IN * DPI), right=1 - RIGHT_PX / (WIDTH_IN * DPI),
+                           bottom=BOTTOM_PX / height, top=1 - 60.0 / height, hspace=30.0 / 150.0)
+    wind_ax, use_ax = figure.subplots(2, 1, sharex=True)
+    span = _span(duration_s, t)
+    wind = np.asarray(station.get("wind_speed_m_s") or [], float)[: t.size]
+    wind_ax.plot(t[: wind.size], wind, color=VALUE, lw=1.2)
+    wind_ax.set_ylabel("wind (m/s)", fontsize=10, color=MUTED)
+    for name, values in groups:
+        use_ax.plot(t[: values.size], values, lw=1.3, label=name)
+    use_ax.set_ylabel("tension (kN)" if lines else "thrust (% of rating)", fontsize=10, color=MUTED)
+    if not lines:
+        use_ax.set_ylim(0.0, 105.0)
+        use_ax.axhline(100.0, color=EXCEEDED, lw=1.0, ls=(0, (4, 3)))
+    use_ax.legend(loc="upper left", fontsize=8.5, ncol=min(len(groups), 5), frameon=False)
+    for ax in (wind_ax, use_ax):
+        ax.grid(color=GRID, lw=0.8)
+        ax.set_axisbelow(True)
+        ax.tick_params(labelsize=10, colors=INK)
+        ax.set_xlim(0.0, span)
+    _time_axis(use_ax, span)
+    figure.suptitle(f"{ship.get('name') or 'the vessel'} — wind and " + ("mooring line tensions" if lines else
+                    "thruster use"), x=LEFT_PX / (WIDTH_IN * DPI), ha="left", fontsize=12, color=INK,
+                    fontweight="bold")
+    return _png(figure)

@@ -85,7 +85,8 @@ class Alarm:
 CHANGE_KEYS = frozenset({"hs_factor", "tp_factor", "turn_waves_deg", "speed_kn", "heading_deg", "ramp_s"})
 """What a live change may give (:meth:`Simulation.change`'s keywords, the sea as factors of the present one; speed
 and heading are orders to the engine and the autopilot)."""
-ORDER_KEYS = frozenset({"rudder_deg", "engine", "speed_kn", "autopilot", "course_deg"})
+ORDER_KEYS = frozenset({"rudder_deg", "engine", "speed_kn", "autopilot", "course_deg", "set_north_m", "set_east_m",
+                        "fault"})
 """What a live order may give (:meth:`Simulation.order`'s keywords)."""
 WEATHER_KEYS = frozenset({*WEATHER, "hours"})
 """What a live weather change may give (:meth:`EnvironmentOptions.changed`'s keywords): new values, the clock moved."""

@@ -82,7 +82,7 @@ def export_motions(assembly: Assembly, out: Path, file_format: str | None = None
         raise ParameterError(f"{duration:g} s at dt {run.dt_s:g} s is {steps:.3g} rows, more than {MAX_ROWS:.0e} "
                              "per export")
     assembly.response  # refuses a scenario without a vessel
-    columns = record_columns(scenario.vessel.points)
+    columns = record_columns(scenario.vessel.points, scenario.vessel.ship)
     simulation = Simulation(scenario, wake=False, assembly=assembly)
     exercise = Exercise(simulation, duration, log)
 
@@ -114,7 +114,7 @@ def motions_sidecar(exercise: Exercise, rows: int, duration_s: float) -> dict:
     vessel, rao, response = scenario.vessel, scenario.vessel.rao, assembly.response
     return {
         "rows": rows,
-        "columns": record_columns(vessel.points),
+        "columns": record_columns(vessel.points, vessel.ship),
         "conventions": CONVENTIONS,
         **run_sidecar(assembly, duration_s, scenario.run.dt_s, response.components),
         "vessel": {

@@ -277,7 +277,7 @@ def _check_action(path: Path, number: int, entry: dict) -> None:
         raise FileFormatError(path, number, f"{action}: unknown key {unknown[0]!r} (known: "
                          f"{', '.join(sorted(ACTIONS[action])) or 'none'})")
     for key, value in fields.items():
-        if key in CHANGE_KEYS | {"rudder_deg", "course_deg"} and not _is(value, float):
+        if key in CHANGE_KEYS | {"rudder_deg", "course_deg", "set_north_m", "set_east_m"} and not _is(value, float):
             raise FileFormatError(path, number, f"key {key!r}: expected a number, got {value!r}")
     if action == "order":
         if "engine" in fields and fields["engine"] not in TELEGRAPH:
@@ -285,6 +285,9 @@ def _check_action(path: Path, number: int, entry: dict) -> None:
                                                 f"got {fields['engine']!r}")
         if "autopilot" in fields and not isinstance(fields["autopilot"], bool):
             raise FileFormatError(path, number, f"key 'autopilot': expected true or false, got {fields['autopilot']!r}")
+        if "fault" in fields and not (isinstance(fields["fault"], str) and 0 < len(fields["fault"]) <= 80):
+            raise FileFormatError(path, number, f"key 'fault': expected a fault's name (1 to 80 characters), got "
+                                                f"{fields['fault']!r}")
     if action == "trigger" and not _is(fields.get("index"), int):
         raise FileFormatError(path, number, f"key 'index': expected an event's index, got {fields.get('index')!r}")
     if action == "message" and not (isinstance(fields.get("text"), str) and 0 < len(fields["text"]) <= MAX_MESSAGE):

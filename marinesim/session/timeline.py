@@ -22,6 +22,7 @@ whatever the frame rate. The local wave solver, when started, is stepped with th
 from __future__ import annotations
 
 import contextvars
+import dataclasses
 import math
 from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import dataclass
@@ -41,6 +42,8 @@ from marinesim.scenario.model import CHANGE_RAMP_S, MAX_SPEED_KN, WEATHER, Envir
 from marinesim.sea.ocean import Components, smoothstep
 from marinesim.sea.seastate import SeaState, scaled_sea
 from marinesim.session.assembly import Assembly
+from marinesim.session.station import StationWorld, station_columns, station_record
+from marinesim.station.vessel import Station
 from marinesim.vessel.along import KNOT_S, ShipPath, linear_along
 from marinesim.vessel.response import Response, Track, motion_columns
 from marinesim.wake.cache import cached_wake
@@ -49,6 +52,9 @@ from marinesim.wake.compute import QUALITATIVE_BELOW_FROUDE, Wake, WakeGrid
 if TYPE_CHECKING:  # the solver's module (moderngl's compute side) loads only where a solver runs
     from marinesim.solver.local import LocalSolver
 
+STATION_HEADING_DEG = 0.5
+"""A vessel keeping station responds to the waves as on her heading to this step (deg): the RAOs change little
+over it, and a heading held by a DP wandering a tenth of a degree keeps one response."""
 PREPARE_S = 0.5
 """A sea change starts this long (s) after it is asked for: meanwhile a worker thread computes its amplitudes
 (:meth:`Ocean.prepare`, 0.1-0.2 s at 4 x 256^2), so the frames go on without a hitch. The start is a fixed time,
@@ -143,9 +149,14 @@ class Simulation:
         self._last_pose: tuple[float, int, Pose | None] = (math.nan, 0, None)
         self._straight: dict[tuple, Response] = {}
         self.voyage: Voyage | None = None
+        self.station: StationWorld | None = None
         if self.vessel is not None:
-            start, orders = self.vessel.ship.start(self.vessel.speed_m_s, math.radians(self.vessel.heading_deg))
-            self.voyage = Voyage(self.vessel.ship, start, orders, STEP_S)
+            ship = self.vessel.ship
+            if isinstance(ship, Station):
+                self.station = StationWorld(scenario, ship, scenario.station, lambda: self.legs, self.components)
+                ship = dataclasses.replace(ship, environment=self.station.weather)
+            start, orders = ship.start(self.vessel.speed_m_s, math.radians(self.vessel.heading_deg))
+            self.voyage = Voyage(ship, start, orders, STEP_S)
         self.version = 0
         """Counts the changes of the timeline (a sea change started, an order given): rows computed before a
         change are stale after it."""
@@ -229,15 +240,18 @@ class Simulation:
         self._move_clock(self.time)
 
     def order(self, *, rudder_deg: float | None = None, engine: str | None = None, speed_kn: float | None = None,
-              autopilot: bool | None = None, course_deg: float | None = None, at: float | None = None) -> None:
+              autopilot: bool | None = None, course_deg: float | None = None, set_north_m: float | None = None,
+              set_east_m: float | None = None, fault: str | None = None, at: float | None = None) -> None:
         """Orders to the ship from ``at`` (s; default now): the rudder by hand (deg, positive to starboard; the
         autopilot off), a telegraph order or the engine set for a speed (kn), the autopilot on (on the present
-        heading) or off (the rudder held where it stands), or a course (compass deg) for the autopilot."""
+        heading) or off (the rudder held where it stands), or a course (compass deg) for the autopilot (a DP's
+        heading); a DP's position set point (m north and east of her start) or an instructor's ``fault`` on a vessel
+        keeping station (:mod:`marinesim.station.vessel`)."""
         if self.vessel is None:
             raise ParameterError("the scenario has no vessel: no orders")
         t = self.time if at is None else require_at_least("time of an order (s)", at, self.time)
         asked = {"rudder_deg": rudder_deg, "engine": engine, "speed_kn": speed_kn, "autopilot": autopilot,
-                 "course_deg": course_deg}
+                 "course_deg": course_deg, "set_north_m": set_north_m, "set_east_m": set_east_m, "fault": fault}
         self.voyage.order(t, **{key: value for key, value in asked.items() if value is not None})
         self.version += 1
 
@@ -258,6 +272,10 @@ class Simulation:
         after = before.changed(hours, **keys)
         ramp = require_at_least("ramp time (s)", ramp_s, 0.0)
         self._weather = _WeatherRamp(self.time, ramp, before.changed(hours) if hours else before, after)
+        if self.station is not None and "wind_speed_m_s" in keys:  # from the step it acts at, as an order
+            start = self.voyage.step_of(self.time) * STEP_S
+            self.station.weather.change(start, ramp, speed=keys["wind_speed_m_s"])
+            self.voyage.changed(start)
 
     def _start(self, change: _Change) -> None:
         t, last = change.ready_at, self.legs[-1]
@@ -267,6 +285,8 @@ class Simulation:
         for index, weight in last.before if w < 1.0 else ():  # a blend under way: it goes on from the mix of now
             before[index] = before.get(index, 0.0) + (1.0 - w) * weight
         self.legs.append(Leg(t, change.ramp_s, change.sea, tuple(before.items()), self._new_set(t + change.ramp_s)))
+        if self.station is not None:  # the waves' drift and motion change: she is stepped again from here
+            self.voyage.changed(t)
         self.version += 1
 
     def _new_set(self, t: float) -> int:
@@ -326,7 +346,7 @@ class Simulation:
     @property
     def columns(self) -> list[str]:
         """The record's columns (:meth:`frame`)."""
-        return record_columns(self.vessel.points)
+        return record_columns(self.vessel.points, self.vessel.ship)
 
     def frame(self, times: np.ndarray) -> dict[str, np.ndarray]:
         """The record (as ``marinesim export``) at ``times`` (s, increasing): the motion columns, blended across
@@ -343,7 +363,10 @@ class Simulation:
         return self._record(times, self._linear(times, dt))
 
     def _record(self, times: np.ndarray, linear: np.ndarray) -> dict[str, np.ndarray]:
-        return self.assembly.response.frame(times, linear) | self.voyage.record(times, linear[:, 5])
+        out = self.assembly.response.frame(times, linear) | self.voyage.record(times, linear[:, 5])
+        if self.station is not None:
+            out |= station_record(self.voyage.ship, self.voyage, times)
+        return out
 
     def _linear(self, times: np.ndarray, dt: float | None = None) -> np.ndarray:
         """The responses' linear outputs (:meth:`Response.linear`) at ``times`` (increasing; a grid of step ``dt``
@@ -381,12 +404,37 @@ class Simulation:
         if not times.size:
             return out
         vessel = self.vessel
+        if self.station is not None:
+            return self._along_station(index, times, dt)
         for lo, hi, run in self.voyage.runs(times):
             if run is None:
                 out[lo:hi] = linear_along(vessel.rao, self.components(index), vessel.points, self.voyage.path,
                                           times[lo:hi])
                 continue
             response = self._straight_response(index, run)
+            if dt is None or hi - lo < 2:
+                out[lo:hi] = response.linear(times[lo:hi])
+            else:
+                out[lo:hi] = np.concatenate([o for _, o in response.linear_steps(float(times[lo]), dt, hi - lo)])
+        return out
+
+    def _along_station(self, index: int, times: np.ndarray, dt: float | None) -> np.ndarray:
+        """Set ``index``'s response for a vessel keeping station: on her heading of each time, to the nearest
+        :data:`STATION_HEADING_DEG`, at rest at the set point (her excursions, metres, hardly shift the waves'
+        phases)."""
+        vessel = self.vessel
+        headings = np.round(np.degrees(self.voyage.path(times).heading) / STATION_HEADING_DEG) * STATION_HEADING_DEG
+        out = np.empty((times.size, 19 + len(vessel.points)))
+        bounds = np.r_[0, np.flatnonzero(np.diff(headings)) + 1, times.size]
+        for lo, hi in zip(bounds[:-1], bounds[1:]):
+            key = (index, "station", float(headings[lo]))
+            response = self._straight.get(key)
+            if response is None:
+                response = Response(vessel.rao, self.components(index), Track(math.radians(key[2]), 0.0),
+                                    vessel.points, strict=False)
+                if len(self._straight) >= RESPONSES_KEPT:
+                    self._straight.pop(next(iter(self._straight)))
+                self._straight[key] = response
             if dt is None or hi - lo < 2:
                 out[lo:hi] = response.linear(times[lo:hi])
             else:
@@ -510,10 +558,11 @@ class Simulation:
         return lines
 
 
-def record_columns(points: dict[str, tuple[float, float, float]]) -> list[str]:
+def record_columns(points: dict[str, tuple[float, float, float]], ship=None) -> list[str]:
     """The record's columns: the motions' (:func:`~marinesim.vessel.response.motion_columns`), then the ship's
-    (:data:`~marinesim.manoeuvring.voyage.SHIP_COLUMNS`)."""
-    return motion_columns(points) + list(SHIP_COLUMNS)
+    (:data:`~marinesim.manoeuvring.voyage.SHIP_COLUMNS`), then a station-keeping vessel's
+    (:func:`~marinesim.session.station.station_columns`)."""
+    return motion_columns(points) + list(SHIP_COLUMNS) + (station_columns(ship) if isinstance(ship, Station) else [])
 
 
 def _call(function):
