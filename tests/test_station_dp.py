@@ -143,7 +143,8 @@ def test_the_shipped_dp_exercise_records_its_thrusters_and_wind(tmp_path, capsys
     assert frame[thrusters].to_numpy().min() >= 0.0 and frame[thrusters].to_numpy().max() <= 100.0
     assert frame[thrusters].to_numpy().max() > 1.0, "the thrusters work against the weather"
     assert frame["wind_speed_m_s"].std() > 0.2, "the wind gusts"
-    assert (frame["wind_force_x_kn"] < 0).mean() > 0.9, "wind from 10 deg off the bow pushes her astern"
+    assert (frame["wind_force_x_kn"] < 0).mean() > 0.9, "wind from 50 deg on the starboard bow pushes her astern"
+    assert (frame["wind_force_y_kn"] < 0).mean() > 0.9, "... and to port"
     assert frame["set_point_offset_m"].max() < 5.0
 
 

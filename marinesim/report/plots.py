@@ -869,10 +869,10 @@ def station_use_png(ship: dict, duration_s: float) -> bytes:
                   for name, values in (station.get("lines") or {}).items()]
     from matplotlib.figure import Figure
 
-    height = 60.0 + 2 * 150.0 + 30.0 + BOTTOM_PX
+    height = 60.0 + 2 * 150.0 + 44.0 + BOTTOM_PX
     figure = Figure(figsize=(WIDTH_IN, height / DPI), dpi=DPI, facecolor="white")
     figure.subplots_adjust(left=LEFT_PX / (WIDTH_IN * DPI), right=1 - RIGHT_PX / (WIDTH_IN * DPI),
-                           bottom=BOTTOM_PX / height, top=1 - 60.0 / height, hspace=30.0 / 150.0)
+                           bottom=BOTTOM_PX / height, top=1 - 60.0 / height, hspace=44.0 / 150.0)
     wind_ax, use_ax = figure.subplots(2, 1, sharex=True)
     span = _span(duration_s, t)
     wind = np.asarray(station.get("wind_speed_m_s") or [], float)[: t.size]
@@ -884,7 +884,8 @@ def station_use_png(ship: dict, duration_s: float) -> bytes:
     if not lines:
         use_ax.set_ylim(0.0, 105.0)
         use_ax.axhline(100.0, color=EXCEEDED, lw=1.0, ls=(0, (4, 3)))
-    use_ax.legend(loc="upper left", fontsize=8.5, ncol=min(len(groups), 5), frameon=False)
+    use_ax.legend(loc="lower left", bbox_to_anchor=(0.0, 1.0), fontsize=8.5, ncol=min(len(groups), 6), frameon=False,
+                  borderaxespad=0.2)
     for ax in (wind_ax, use_ax):
         ax.grid(color=GRID, lw=0.8)
         ax.set_axisbelow(True)

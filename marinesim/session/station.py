@@ -31,7 +31,9 @@ may be left running."""
 MEASURED_SHARE_LEFT = 1e-2
 """The share of the wave-frequency motion's variance the DP's measured position leaves out (smallest components)."""
 BLOCK_STEPS = 600
-"""The wave-frequency motion is computed in blocks of this many steps (a minute at 0.1 s)."""
+"""The wave-frequency motion is computed in blocks of this many steps (a minute at 0.1 s) ..."""
+SUB_STEPS = 60
+"""... from one table of phasors over this many steps, turned to each sub-block's start."""
 
 
 class StationWorld:
@@ -71,10 +73,11 @@ class StationWorld:
                 out = out + (1.0 - w) * weight * value(index)
         return out
 
-    def _wave_model(self, index: int) -> tuple[np.ndarray, np.ndarray]:
-        """Set ``index``'s wave-frequency (north, east, psi) as ``Re sum c exp(i w t)``: (w (n,), c (n, 3)), the
-        components holding all but :data:`MEASURED_SHARE_LEFT` of each motion's variance (the DP's position
-        sensor needs the motion, not its last hundredth)."""
+    def _wave_model(self, index: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Set ``index``'s wave-frequency (north, east, psi) as ``Re sum c exp(i w t)``: (w (n,), c (n, 3), and the
+        phasors ``exp(i w j h)`` of a sub-block, (SUB_STEPS, n)), the components holding all but
+        :data:`MEASURED_SHARE_LEFT` of each motion's variance (the DP's position sensor needs the motion, not its
+        last hundredth)."""
         vessel = self.scenario.vessel
         response = Response(vessel.rao, self._components(index), Track(self.heading0, 0.0), {}, strict=False)
         x, y, yaw = response.motion_coefficients()[:, [0, 1, 5]].T
@@ -87,14 +90,19 @@ class StationWorld:
             total = np.cumsum(power[order, j])
             count = int(np.searchsorted(total, (1.0 - MEASURED_SHARE_LEFT) * total[-1])) + 1
             kept[order[:count]] = True
-        return response.omega_e[kept], coefficients[kept]
+        omega = response.omega_e[kept]
+        return omega, coefficients[kept], np.exp(1j * np.outer(np.arange(SUB_STEPS) * STEP_S, omega))
 
     def _motion_block(self, key: tuple[int, int]) -> np.ndarray:
-        """Set ``key[0]``'s wave-frequency (north m, east m, psi rad) over block ``key[1]`` of steps, (BLOCK, 3)."""
+        """Set ``key[0]``'s wave-frequency (north m, east m, psi rad) over block ``key[1]`` of steps, (BLOCK, 3): a
+        sub-block's phasors times each sub-block's start, ``exp(i w (t0 + j h)) = exp(i w t0) exp(i w j h)``."""
         index, block = key
-        omega, coefficients = self._wave_model(index)
-        times = (block * BLOCK_STEPS + np.arange(BLOCK_STEPS)) * STEP_S
-        return (np.exp(1j * np.outer(times, omega)) @ coefficients).real
+        omega, coefficients, table = self._wave_model(index)
+        out = np.empty((BLOCK_STEPS, 3))
+        for first in range(0, BLOCK_STEPS, SUB_STEPS):
+            start = (block * BLOCK_STEPS + first) * STEP_S
+            out[first:first + SUB_STEPS] = (table @ (np.exp(1j * omega * start)[:, None] * coefficients)).real
+        return out
 
     def _wave_motion(self, t: float) -> tuple[float, float, float]:
         step = round(t / STEP_S)

@@ -56,6 +56,8 @@ class Thrusters:
     units: tuple[Thruster, ...]
     length: float
     b: np.ndarray = field(init=False, repr=False, compare=False)
+    azimuths: bool = field(init=False, repr=False, compare=False)
+    _least: dict = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         if not self.units:
@@ -69,6 +71,8 @@ class Thrusters:
             if t.kind in ("tunnel", "azimuth"):
                 columns.append((0.0, 1.0, t.x))
         object.__setattr__(self, "b", np.array(columns, dtype=float).T)
+        object.__setattr__(self, "azimuths", any(t.kind == "azimuth" for t in self.units))
+        object.__setattr__(self, "_least", {})
 
     @property
     def width(self) -> int:
@@ -129,27 +133,35 @@ class Thrusters:
         for name in lost:
             free[slices[self.index(name)]] = False
         rest = tau - self.b @ f
-        b = self.b[:, free]
-        if b.shape[1] == 0:
+        if not free.any():
             return f
-        scale = np.array([1.0, 1.0, 1.0 / self.length])
-        bw = b * scale[:, None]
-        try:
-            least = b.T @ np.linalg.solve(b @ b.T, rest) if np.linalg.matrix_rank(bw) == 3 else None
-        except np.linalg.LinAlgError:
-            least = None
-        if least is not None and np.all(least >= lo[free] - 1e-9) and np.all(least <= hi[free] + 1e-9) \
+        least = self._least_norm(tuple(free)) @ rest
+        if np.all(np.isfinite(least)) and np.all(least >= lo[free] - 1e-9) and np.all(least <= hi[free] + 1e-9) \
                 and self._within_circles(f, free, least):
             f[free] = least
             return f
+        b = self.b[:, free]
+        scale = np.array([1.0, 1.0, 1.0 / self.length])
         top = max(float(np.max(hi[free])), 1.0)
-        a = np.vstack([bw / top, math.sqrt(PENALTY) * np.eye(b.shape[1]) / top])
+        a = np.vstack([b * scale[:, None] / top, math.sqrt(PENALTY) * np.eye(b.shape[1]) / top])
         target = np.concatenate([rest * scale / top, np.zeros(b.shape[1])])
         f[free] = lsq_linear(a, target, bounds=(lo[free], np.maximum(hi[free], lo[free] + 1e-12)),
                              method="bvls").x
         return self._onto_circles(f)
 
+    def _least_norm(self, free: tuple[bool, ...]) -> np.ndarray:
+        """``B^T (B B^T)^-1`` of the ``free`` virtual forces' columns ((k, 3)); NaN where they cannot give every
+        (X, Y, N) (rank below 3: the bounded problem decides). Kept per set of free forces."""
+        if free not in self._least:
+            b = self.b[:, np.array(free)]
+            scaled = b * np.array([1.0, 1.0, 1.0 / self.length])[:, None]
+            full = np.linalg.matrix_rank(scaled) == 3
+            self._least[free] = b.T @ np.linalg.inv(b @ b.T) if full else np.full((b.shape[1], 3), np.nan)
+        return self._least[free]
+
     def _within_circles(self, f: np.ndarray, free: np.ndarray, values: np.ndarray) -> bool:
+        if not self.azimuths:
+            return True
         trial = f.copy()
         trial[free] = values
         return np.allclose(self._onto_circles(trial.copy()), trial)

@@ -32,16 +32,20 @@ import numpy as np
 from marinesim.errors import ParameterError, require_within
 from marinesim.manoeuvring.autopilot import wrap
 from marinesim.manoeuvring.state import Orders, ShipState
-from marinesim.station.dp import Dp
+from marinesim.station.dp import Dp, rotation
 from marinesim.station.moorings import Moorings
 from marinesim.station.thrusters import Thrusters
 
 EXTRA = ("z_north", "z_east", "z_psi", "xi1_north", "xi1_east", "xi1_psi", "xi2_north", "xi2_east", "xi2_psi",
          "eta_north", "eta_east", "eta_psi", "nu_u", "nu_v", "nu_r", "b_north", "b_east", "b_psi",
-         "ref_north", "ref_east", "ref_psi", "drift_north", "drift_east")
+         "ref_north", "ref_east", "ref_psi", "drift_north", "drift_east", "ff_x", "ff_y", "ff_n")
 """The DP computer's states kept in ``ShipState.extra``: the error's integral (m s, m s, rad s), the observer's
 (wave model, estimated position and velocity, bias: :meth:`Dp.observe`), the set point the reference model has
-reached, and the position reference's drift (m, a fault); then the virtual thrust forces (N)."""
+reached, the position reference's drift (m, a fault) and the wind feed-forward (N, N, N m: the wind sensor's
+load, filtered over :data:`WIND_FILTER_S`); then the virtual thrust forces (N)."""
+WIND_FILTER_S = 10.0
+"""The DP's wind feed-forward follows the measured wind's load with this time constant (s): a gust shorter than
+it moves her before her thrusters answer, as on a real DP."""
 REFERENCE_DRIFT_M_S = 0.05
 """How fast a drifting position reference walks off (m/s, north): 3 m a minute, as a DGNSS losing its
 corrections."""
@@ -116,14 +120,29 @@ class Station:
     # -- orders ---------------------------------------------------------------------------------
 
     def start(self, speed: float, psi: float) -> tuple[ShipState, Orders]:
-        """Her state and orders at rest on heading ``psi`` (rad, clockwise from north), the set point where she is."""
+        """Her state and orders at rest on heading ``psi`` (rad, clockwise from north), the set point where she is.
+        On DP she starts settled, as a trainee takes her over: the thrusters already balance the weather of the
+        start (wind, current and waves' drift), the observer's bias and the controller's integral already hold
+        it (the wind's share is the feed-forward's)."""
         if speed > 0.0:
             raise ParameterError(f"{self.name} keeps station: she has no speed")
-        extra = [0.0] * len(EXTRA)
+        extra = np.zeros(len(EXTRA) + (self.thrusters.width if self.thrusters is not None else 0))
         extra[EXTRA.index("eta_psi")] = extra[EXTRA.index("ref_psi")] = psi
-        extra += [0.0] * (self.thrusters.width if self.thrusters is not None else 0)
-        return ShipState(psi=psi, extra=tuple(extra)), Orders(autopilot=self.dp is not None, course=psi,
-                                                              engine=self.label.lower())
+        if self.dp is not None:
+            env = self.environment
+            cn, ce = env.current(0.0)
+            current = np.asarray(self.d, float) @ np.array([cn * math.cos(psi) + ce * math.sin(psi),
+                                                             -cn * math.sin(psi) + ce * math.cos(psi), 0.0])
+            load = env.loads(0.0, 0.0, 0.0, psi, 0.0, 0.0, 0.0) + current
+            turn = rotation(psi)
+            at = EXTRA.index
+            extra[at("b_north"):at("b_psi") + 1] = turn @ load
+            extra[at("z_north"):at("z_psi") + 1] = turn @ (load - env.wind_load(0.0, psi, 0.0, 0.0)) / self.dp.ki
+            wind = env.wind_load(0.0, psi, 0.0, 0.0)
+            extra[at("ff_x"):at("ff_n") + 1] = wind
+            extra[len(EXTRA):] = self.thrusters.allocate(-load)
+        return ShipState(psi=psi, extra=tuple(extra.tolist())), Orders(autopilot=self.dp is not None, course=psi,
+                                                                       engine=self.label.lower())
 
     def order(self, orders: Orders, state: ShipState, *, rudder_deg: float | None = None, engine: str | None = None,
               speed_kn: float | None = None, autopilot: bool | None = None, course_deg: float | None = None,
@@ -210,10 +229,10 @@ class Station:
         """One cycle of the DP computer at ``t``: (the thrusters' orders (m,), their time constants (m,), its
         states ``h`` s on (len(EXTRA),))."""
         computer, thrusters, env = self.dp, self.thrusters, self.environment
-        z, est, ref, drift = dp[0:3], dp[3:18], dp[18:21], dp[21:23]
+        z, est, ref, drift, feed = dp[0:3], dp[3:18], dp[18:21], dp[21:23], dp[23:26]
         wave = env.wave_motion(t)
         measured = np.array([s.north + wave[0] + drift[0], s.east + wave[1] + drift[1], s.psi + wave[2]])
-        tau = computer.command(est, ref, z, env.wind_load(t, s.psi, s.u, s.v))
+        tau = computer.command(est, ref, z, feed)
         lost = frozenset(f.partition(":")[2] for f in orders.faults if f.startswith("thruster:"))
         stuck = {name: thrusters.stuck(name, 0.0 if thrusters.units[thrusters.index(name)].kind != "tunnel"
                                        else 0.5 * math.pi)
@@ -227,6 +246,7 @@ class Station:
         out[18:21] = computer.reference(ref, (orders.north, orders.east, _unwrapped(orders.course, ref[2])), h)
         if "reference drift" in orders.faults:
             out[21] = drift[0] + REFERENCE_DRIFT_M_S * h
+        out[23:26] = feed + (env.wind_load(t, s.psi, s.u, s.v) - feed) * (1.0 - math.exp(-h / WIND_FILTER_S))
         return f_order, thrusters.lag(), out
 
     def _lines(self, faults: frozenset[str]) -> Moorings | None:
