@@ -3,7 +3,13 @@ shipped supply vessel on DP (configs/supply_dp.toml) after her first bow tunnel 
 
 from __future__ import annotations
 
+import math
+import subprocess
+import sys
+from pathlib import Path
+
 import numpy as np
+import pytest
 
 from conftest import ROOT
 from marinesim.scenario import load_scenario
@@ -36,3 +42,68 @@ def test_the_panels_show_the_footprint_plot_and_each_thrusters_use_with_the_lost
     right = green[:, 1280 - 300:]
     assert right[:360].sum() > 150, "the footprint's green circle at the top right"
     assert hud[260:460, 440:840].mean() < 0.02, "the middle, where the vessel is, stays free"
+
+
+NO_WINDOW = 77
+
+
+@pytest.mark.slow
+def test_the_instructor_fails_a_thruster_and_the_reference_with_keys_and_the_replay_holds_them(tmp_path):
+    """The viewer (pyglet's headless EGL window, real key events) on configs/supply_dp.toml: L loses the first
+    working thruster, Q sets the position reference drifting, RIGHT turns the DP's heading 5 deg; the session log
+    holds them as orders, and its replay has the same faults and the same record to the last digit. What would be
+    wrong if not: an instructor who cannot fail the DP live, or a log that does not bring back what happened."""
+    result = subprocess.run([sys.executable, __file__, str(tmp_path)], capture_output=True, text=True, timeout=600)
+    if result.returncode == NO_WINDOW:
+        pytest.skip(f"no headless pyglet window: {result.stdout.strip()}")
+    assert result.returncode == 0, result.stderr[-3000:]
+
+
+def walkthrough(tmp_path: Path) -> None:
+    from marinesim.gl import GraphicsError
+    from marinesim.render.viewer import NoDisplay, Viewer
+    from marinesim.session.replay import replay_session
+
+    scenario = load_scenario(ROOT / "configs" / "supply_dp.toml")
+    try:
+        viewer = Viewer(scenario, size=(320, 180), headless=True)
+    except (NoDisplay, GraphicsError) as error:
+        print(error)
+        sys.exit(NO_WINDOW)
+    import pyglet
+
+    key = pyglet.window.key
+    viewer.log_path = tmp_path / "session.jsonl"
+
+    def press(symbol: int, text: str | None) -> None:
+        viewer.window.dispatch_event("on_key_press", symbol, 0)
+        if text is not None:
+            viewer.window.dispatch_event("on_text", text)
+        viewer.window.dispatch_event("on_key_release", symbol, 0)
+        viewer.window.dispatch_events()
+
+    try:
+        for _ in range(20):
+            viewer.tick(0.1)
+        press(key.L, "l")
+        press(key.Q, "q")
+        press(key.RIGHT, None)
+        for _ in range(30):
+            viewer.tick(0.1)
+        viewer.draw()
+        sim = viewer.scene.sim
+        faults = sim.voyage.orders.faults
+        assert faults == {"thruster:bow tunnel 1", "reference drift"}, faults
+        assert math.isclose(math.degrees(sim.voyage.orders.course), 35.0), sim.voyage.orders.course
+        record = sim.frame(np.arange(0.0, 5.0, 0.1))
+    finally:
+        viewer.close()
+    again = replay_session(tmp_path / "session.jsonl")
+    assert again.sim.voyage.orders.faults == faults
+    replayed = again.sim.frame(np.arange(0.0, 5.0, 0.1))
+    for column, values in record.items():
+        np.testing.assert_array_equal(replayed[column], values, err_msg=column)
+
+
+if __name__ == "__main__":
+    walkthrough(Path(sys.argv[1]))

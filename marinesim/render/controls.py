@@ -183,7 +183,12 @@ class Controls:
             return order(course_deg=round((course + step) % 360.0, 6))
 
         if ship.kind == "station":
-            return {"LEFT": steer(-HELM_STEP_DEG), "RIGHT": steer(HELM_STEP_DEG)}
+            keys = {"LEFT": steer(-HELM_STEP_DEG), "RIGHT": steer(HELM_STEP_DEG)}
+            if sim.station is not None:  # the instructor's faults on a vessel on DP or moorings
+                keys["L"] = self.next_fault
+                if ship.dp is not None:
+                    keys["Q"] = order(fault="reference drift")
+            return keys
         hard = math.degrees(ship.steering.max_angle)
         rudder = math.degrees(orders.rudder) if not orders.autopilot else c["rudder_order_deg"]
 
@@ -199,6 +204,20 @@ class Controls:
                 "UP": telegraph(1), "DOWN": telegraph(-1),
                 "P": order(autopilot=not orders.autopilot),
                 "U": steer(-small), "I": steer(small), "_9": steer(-large), "_0": steer(large)}
+
+    def next_fault(self) -> None:
+        """The instructor fails the next thruster still working (a vessel on DP) or parts the next line still
+        holding (moored)."""
+        sim = self.scene.sim
+        ship, faults = sim.voyage.ship, sim.voyage.orders.faults
+        names = ([f"thruster:{t.name}" for t in ship.thrusters.units] if ship.thrusters is not None
+                 else [f"line:{name}" for name in ship.line_names])
+        left = [name for name in names if name not in faults]
+        if not left:
+            self.say("every thruster is lost" if ship.thrusters is not None else "every line has parted")
+            return
+        self._act("order", fault=left[0])
+        self.say(f"instructor: {left[0].replace(':', ' ')} {'lost' if ship.thrusters is not None else 'parted'}")
 
     def trigger_next(self) -> None:
         """The instructor brings the next scripted event forward to now."""
@@ -311,6 +330,7 @@ HELP = [
     "F / G          instructor: fog thickens / lifts (visibility / 2, x 2)",
     "J / K          instructor: cloud cover -/+ 1 okta    Y / T   clock -/+ 1 h (scenarios with time_utc)",
     "O              instructor: rain none / light / heavy / violent showers",
+    "L / Q          instructor (DP, moorings): next thruster lost or line parted / position reference drifts",
     "R              start / stop recording the motions (CSV, as marinesim export)",
     "TAB            HUD: compact strip / full panels (motions, charts, every criterion)",
     "H              this help            ESC      quit",
