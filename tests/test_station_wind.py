@@ -345,3 +345,13 @@ def test_wind_force_function_matches_the_vessels_method():
     loads = WindLoads.blendermann("tanker loaded", 1200.0, 6000.0, 320.0, s_l=10.0)
     direct = wind_force(loads.coefficients, 1200.0, 6000.0, 320.0, 0.5, 0.1, 2.0, 18.0, 2.5)
     assert np.array_equal(direct, loads.force(0.5, 0.1, 2.0, 18.0, 2.5))
+
+
+def test_blendermann_one_angle_at_a_time_equals_the_array_formula():
+    """The simulation asks for one angle a step (plain floats, for speed); the array formula is the published one.
+    What would be wrong if not: the simulation's wind loads differing from the ones the tests above check."""
+    coefficients = BlendermannCoefficients("offshore supply vessel", 250.0, 780.0, 84.8, 8.0)
+    gammas = np.linspace(-math.pi, math.pi, 721)
+    table = coefficients(gammas)
+    one = np.array([coefficients(float(g)) for g in gammas]).T
+    np.testing.assert_allclose(one, table, rtol=1e-13, atol=1e-15)

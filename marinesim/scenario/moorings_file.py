@@ -1,10 +1,12 @@
-"""A mooring file (``configs/moorings/*.toml``): a vessel's spread of catenary lines, validated as a scenario is (one
-pydantic model; errors name the file and the key), and the :class:`~marinesim.station.moorings.Moorings` built from
-it in the scenario's water depth.
+"""A mooring file (``configs/moorings/*.toml``): a vessel's spread of catenary lines or her hawser, validated as a
+scenario is (one pydantic model; errors name the file and the key), and the
+:class:`~marinesim.station.moorings.Moorings` built from it in the scenario's water depth.
 
 Anchors are given as mariners lay them, a compass bearing (deg) and a horizontal distance (m) from the set point,
-for the heading the vessel holds on station (``heading_deg``); fairleads in the body frame (x forward, y to
-starboard, z up from the waterline, m); line types by MoorPy's material name and nominal diameter.
+for the heading the vessel holds on station (``heading_deg``); a hawser's fixed point above the water (an FPSO's
+stern chock) instead as ``fixed_point_m`` = [north, east, z up from the waterline] (m from the set point); fairleads
+in the body frame (x forward, y to starboard, z up from the waterline, m); line types by MoorPy's material name and
+nominal diameter.
 """
 
 from __future__ import annotations
@@ -31,6 +33,8 @@ MAX_RADIUS_M = 20_000.0
 """The farthest anchor and the longest line (m)."""
 MAX_FAIRLEAD_M = 500.0
 """The farthest a fairlead lies from the vessel's origin along any axis (m)."""
+ANCHOR_KEYS = ("anchor_bearing_deg", "anchor_radius_m")
+"""A line's far end as an anchor on the seabed; ``fixed_point_m`` instead: a hawser's fixed point."""
 
 
 def _material(name: str) -> str:
@@ -44,10 +48,15 @@ class MooringLineOptions(Section):
     """``[[lines]]``: one mooring line."""
 
     name: Annotated[str, Field(min_length=1, max_length=40)] = Field(description="the line's name (faults name it)")
-    anchor_bearing_deg: Annotated[float, Quantity("deg", ge=0.0, le=360.0, what="a compass bearing")] = Field(
-        description="compass bearing of the anchor from the set point")
-    anchor_radius_m: Annotated[float, Quantity("m", gt=0.0, le=MAX_RADIUS_M)] = Field(
-        description="horizontal distance of the anchor from the set point")
+    anchor_bearing_deg: Annotated[float | None, Quantity("deg", ge=0.0, le=360.0, what="a compass bearing")] = Field(
+        None, description="compass bearing of the anchor from the set point (with anchor_radius_m)")
+    anchor_radius_m: Annotated[float | None, Quantity("m", gt=0.0, le=MAX_RADIUS_M)] = Field(
+        None, description="horizontal distance of the anchor from the set point (with anchor_bearing_deg)")
+    fixed_point_m: Annotated[list[float] | None, Quantity("m", ge=-MAX_RADIUS_M, le=MAX_RADIUS_M),
+                             Field(min_length=3, max_length=3),
+                             _expecting(f"[north, east, z] in metres, each in -{MAX_RADIUS_M:g}..{MAX_RADIUS_M:g}")
+                             ] = Field(None, description="a hawser's far end instead of an anchor: [north, east, z up "
+                                                         "from the waterline] of a fixed point from the set point")
     fairlead_m: Annotated[list[float], Quantity("m", ge=-MAX_FAIRLEAD_M, le=MAX_FAIRLEAD_M),
                           Field(min_length=3, max_length=3),
                           _expecting(f"[x, y, z] in metres, each in -{MAX_FAIRLEAD_M:g}..{MAX_FAIRLEAD_M:g}")] = Field(
@@ -57,6 +66,17 @@ class MooringLineOptions(Section):
         description="MoorPy's line type: chain (R4 studless), chain_studlink, wire, polyester, nylon, ...")
     diameter_m: Annotated[float, Quantity("m", ge=DIAMETER_RANGE_M[0], le=DIAMETER_RANGE_M[1])] = Field(
         description="nominal diameter")
+
+    @model_validator(mode="after")
+    def _one_far_end(self) -> MooringLineOptions:
+        given = [key for key in ANCHOR_KEYS if getattr(self, key) is not None]
+        if self.fixed_point_m is not None and given:
+            raise _refuse(given[0], "give the far end one way: anchor_bearing_deg and anchor_radius_m (an anchor) or "
+                                    "fixed_point_m (a hawser's fixed point), not both")
+        if self.fixed_point_m is None and len(given) < len(ANCHOR_KEYS):
+            missing = next(key for key in ANCHOR_KEYS if key not in given)
+            raise _refuse(missing, "required (with the other anchor key), or fixed_point_m instead for a hawser")
+        return self
 
 
 class MooringFile(Section):
@@ -83,6 +103,11 @@ def build_moorings(file: MooringFile, depth: float) -> Moorings:
     """The :class:`Moorings` a validated file describes in water ``depth`` (m)."""
     lines = []
     for options in file.lines:
+        if options.fixed_point_m is not None:
+            north, east, height = options.fixed_point_m
+            lines.append(Line(options.name, (north, east), tuple(options.fairlead_m), options.length_m,
+                              options.material, options.diameter_m, anchor_height_m=height))
+            continue
         bearing = math.radians(options.anchor_bearing_deg)
         anchor = (options.anchor_radius_m * math.cos(bearing), options.anchor_radius_m * math.sin(bearing))
         lines.append(Line(options.name, anchor, tuple(options.fairlead_m), options.length_m, options.material,

@@ -1,15 +1,19 @@
-"""Catenary mooring lines holding a vessel on station: each line's fairlead tension from MoorPy's catenary.
+"""Mooring lines and hawsers holding a vessel on station: each line's fairlead tension from MoorPy's catenary.
 
 Axes as :mod:`marinesim.manoeuvring.state`: the vessel's low-frequency position ``north``, ``east`` (m, from the
 set point) and heading ``psi`` (rad, clockwise from north); body axes x forward, y to starboard. A line runs from
-its anchor on the seabed, given in the earth frame as (north m, east m) from the set point, to its fairlead on the
-vessel, given in the body frame as (x m forward, y m to starboard, z m up from the waterline). The fairleads stay
-at their depth: the vessel's wave-frequency motion (heave, roll, pitch) is not felt by the lines. The line's
-wet weight acts over its whole length (a fairlead above the waterline: its few metres in air counted wet).
+its far end, given in the earth frame as (north m, east m) from the set point, to its fairlead on the vessel, given
+in the body frame as (x m forward, y m to starboard, z m up from the waterline). The far end is an anchor on the
+seabed, or for a hawser a fixed point above the water (an FPSO's stern chock, the FPSO not simulated: the point
+does not move). The fairleads stay at their depth or height: the vessel's wave-frequency motion (heave, roll,
+pitch) is not felt by the lines. An anchored line's wet weight acts over its whole length (a fairlead above the
+waterline: its few metres in air counted wet); a hawser hangs in air and weighs its mass (a slack hawser dipping
+into the sea is still weighed in air).
 
 Line physics is MoorPy's (``moorpy.Catenary.catenary``: an elastic catenary with seabed contact, no seabed
-friction) and its line-property library (``moorpy.helpers.getLineProps``: mass, wet weight, axial stiffness EA
-and minimum breaking load from the material's name and nominal diameter). A catenary solve per line and per
+friction; a hawser's hung from its fixed point, ``CB`` < 0) and its line-property library
+(``moorpy.helpers.getLineProps``: mass, wet weight, axial stiffness EA and minimum breaking load from the material's
+name and nominal diameter). A catenary solve per line and per
 Runge-Kutta stage would be far too slow for the simulator, so :class:`Moorings` tabulates each line's horizontal
 and vertical fairlead tension ``H``, ``V`` against the horizontal anchor-fairlead span once, on a grid of
 :data:`GRID_INTERVALS` or more intervals (0.5 m or finer) over the set point's span +- :data:`REACH_FRACTION` of
@@ -17,6 +21,12 @@ it or +- :data:`REACH_MAX_M`, whichever is smaller (taut side: cut where the ten
 times the breaking load), and interpolates it with a cubic spline. Beyond the grid, ``H`` and ``V`` carry on
 linearly at the grid end's slope (the taut side's elastic stiffness; on the slack side down to zero): the vessel
 has then left the range the mooring was laid for.
+
+A hawser's table runs from well slack (:data:`SLACK_FRACTION` of the span at which it is straight and unstretched)
+to past :data:`TAUT_LIMIT` times its breaking load, whatever its set point: the vessel may close on the fixed point
+or weathervane about it. Slack, it hangs between its ends under its weight alone (MoorPy's suspended catenary, a
+few kN for a nylon hawser); closer than the table's slack end its ``H`` and ``V`` are held at the end's values.
+Its ``V`` (the line's pull down on the fairlead) turns negative when it pulls the fairlead up.
 
 MoorPy (which imports matplotlib) is imported on first use, not with this module.
 """
@@ -49,6 +59,8 @@ ANCHOR_DEPTH_TOLERANCE_M = 0.1
 """An anchor depth stated within this of the water depth is on the seabed (m)."""
 MIN_SPAN_M = 1.0
 """The least horizontal anchor-fairlead span at the set point (m): a catenary line runs out from the vessel."""
+SLACK_FRACTION = 0.8
+"""A hawser's table starts at this fraction of the horizontal span at which it is straight and unstretched."""
 
 
 @dataclass(frozen=True)
@@ -98,7 +110,10 @@ class Line:
     """One mooring line: ``anchor`` (north m, east m) in the earth frame from the set point, on the seabed (or at
     ``anchor_depth_m`` below the surface, which must then be the water depth); ``fairlead`` (x m forward, y m to
     starboard, z m up from the waterline) in the body frame from the vessel's origin; unstretched ``length_m``;
-    MoorPy's ``material`` of nominal ``diameter_m`` (m)."""
+    MoorPy's ``material`` of nominal ``diameter_m`` (m).
+
+    A hawser: ``anchor_height_m`` (m up from the waterline, >= 0) puts the far end at a fixed point in the air
+    above ``anchor`` instead of on the seabed; its fairlead must be above the waterline too."""
 
     name: str
     anchor: tuple[float, float]
@@ -107,6 +122,7 @@ class Line:
     material: str = "chain"
     diameter_m: float = 0.1
     anchor_depth_m: float | None = None
+    anchor_height_m: float | None = None
 
     def __post_init__(self) -> None:
         if not isinstance(self.name, str) or not self.name.strip():
@@ -123,12 +139,23 @@ class Line:
             raise ParameterError(f"{where}: length_m must be > 0, got {self.length_m!r}")
         if self.anchor_depth_m is not None:
             require_finite(f"{where}: anchor_depth_m", self.anchor_depth_m)
+        if self.anchor_height_m is not None:
+            height = require_finite(f"{where}: anchor_height_m", self.anchor_height_m)
+            if self.anchor_depth_m is not None:
+                raise ParameterError(f"{where}: give anchor_depth_m (an anchor on the seabed) or anchor_height_m (a "
+                                     f"hawser's fixed point above the water), not both")
+            if height < 0.0:
+                raise ParameterError(f"{where}: fixed point {-height:.1f} m below the waterline: a hawser's far end is "
+                                     f"a point above the water")
+            if self.fairlead[2] < 0.0:
+                raise ParameterError(f"{where}: fairlead {-self.fairlead[2]:.1f} m below the waterline: a hawser runs "
+                                     f"in air")
         require_finite(f"{where}: diameter_m", self.diameter_m)
         try:
             kind = line_type(self.material, float(self.diameter_m))
         except ParameterError as error:
             raise ParameterError(f"{where}: {error}") from None
-        if kind.weight_n_m <= 0.0:
+        if not self.hawser and kind.weight_n_m <= 0.0:
             raise ParameterError(f"{where}: {self.material} of {self.diameter_m:g} m floats (wet weight "
                                  f"{kind.weight_n_m:.0f} N/m): a catenary line must sink")
 
@@ -137,14 +164,26 @@ class Line:
         """Its properties from MoorPy's library."""
         return line_type(self.material, float(self.diameter_m))
 
+    @property
+    def hawser(self) -> bool:
+        """Whether its far end is a fixed point above the water (``anchor_height_m`` given)."""
+        return self.anchor_height_m is not None
+
+    @property
+    def weight_n_m(self) -> float:
+        """The weight it hangs under (N/m): in air for a hawser, wet in sea water for an anchored line."""
+        kind = self.type
+        return kind.mass_kg_m * G if self.hawser else kind.weight_n_m
+
 
 class Moorings:
     """``lines`` in water ``depth`` (m) holding a vessel whose set point is (0, 0) heading ``heading`` (rad,
     clockwise from north), the lines named in ``failed`` parted. Immutable: :meth:`with_failed` gives a copy.
 
     Refused (:class:`ParameterError`, one line naming the line and the numbers): no lines, two lines of one name,
-    an anchor off the seabed, a fairlead under the seabed, an anchor under its fairlead, a line too short to reach
-    its fairlead without breaking, and one whose tension at the set point is above its breaking load."""
+    an anchor off the seabed, a fairlead under the seabed, an anchor (or a hawser's fixed point) under its fairlead,
+    a line too short to reach its fairlead without breaking, and one whose tension at the set point is above its
+    breaking load."""
 
     def __init__(self, lines: Sequence[Line], depth: float, heading: float = 0.0,
                  failed: Iterable[str] = ()) -> None:
@@ -166,8 +205,10 @@ class Moorings:
         """Each line's minimum breaking load (N), (n_lines,)."""
         self.mbl.flags.writeable = False
         spans = self._spans(0.0, 0.0, self.heading)[2]
-        tables = [self._check_and_tabulate(line, float(span)) for line, span in zip(self.lines, spans)]
-        self._tabulate(tables)
+        tables = [(self._check_hawser if line.hawser else self._check_and_tabulate)(line, float(span))
+                  for line, span in zip(self.lines, spans)]
+        self._tabulate(tables, [line.hawser for line in self.lines])
+        self._floor = np.array([[0.0, -np.inf if line.hawser else 0.0] for line in self.lines])  # (n, 2) H, V
         self.failed: frozenset[str] = frozenset()
         self._intact = np.ones(len(self.lines))
         self._variants: dict[frozenset[str], Moorings] = {}
@@ -200,7 +241,7 @@ class Moorings:
         from moorpy.helpers import CatenaryError
 
         try:
-            pretension = math.hypot(*_catenary(line.length_m, kind.ea_n, kind.weight_n_m, height, depth, span))
+            pretension = math.hypot(*_catenary(line.length_m, kind.ea_n, kind.weight_n_m, height, 0.0, depth, span)[:2])
         except CatenaryError:
             raise ParameterError(f"{where}: MoorPy's catenary fails at the set point ({line.length_m:g} m of line, "
                                  f"{height:g} m high over {span:.1f} m)") from None
@@ -212,13 +253,56 @@ class Moorings:
         step = 0.5 / 2.0 ** max(0, math.ceil(math.log2(GRID_INTERVALS * 0.5 / (2.0 * reach))))
         first, last = math.floor((span - reach) / step), math.ceil((span + reach) / step)
         try:
-            return _table(line.length_m, kind.ea_n, kind.weight_n_m, height, depth, first * step, step,
+            return _table(line.length_m, kind.ea_n, kind.weight_n_m, height, 0.0, depth, first * step, step,
                           last - first + 1, TAUT_LIMIT * kind.mbl_n)
         except ParameterError as error:
             raise ParameterError(f"{where}: {error}") from None
 
-    def _tabulate(self, tables: list[tuple[np.ndarray, np.ndarray]]) -> None:
-        """Cubic coefficients of every line's (H, V) against span, padded to one shape: (n, 4, segments, 2)."""
+    def _check_hawser(self, line: Line, span: float) -> tuple[np.ndarray, np.ndarray]:
+        """Check a hawser at horizontal ``span`` (m) from its fixed point at the set point and tabulate it from well
+        slack to past :data:`TAUT_LIMIT` times its breaking load."""
+        where, kind, length = f"line {line.name}", line.type, line.length_m
+        rise = line.fairlead[2] - line.anchor_height_m  # fairlead above the fixed point (m)
+        below = self.depth + line.anchor_height_m  # seabed below the fixed point (m)
+        if span < MIN_SPAN_M:
+            raise ParameterError(f"{where}: fixed point {span:.2f} m from over its fairlead at the set point: a hawser "
+                                 f"runs out from the vessel (at least {MIN_SPAN_M:g} m)")
+        reach_length = length * (1.0 + kind.mbl_n / kind.ea_n)
+        straight = math.hypot(span, rise)
+        if reach_length <= straight:
+            raise ParameterError(f"{where}: {length:.1f} m long, too short to reach its fairlead {straight:.1f} m "
+                                 f"from the fixed point (stretched to its breaking load: {reach_length:.1f} m)")
+        from moorpy.helpers import CatenaryError
+
+        try:
+            pretension = math.hypot(*_catenary(length, kind.ea_n, line.weight_n_m, rise, below, self.depth, span)[:2])
+        except CatenaryError:
+            raise ParameterError(f"{where}: MoorPy's catenary fails at the set point ({length:g} m of hawser, "
+                                 f"{rise:+g} m high over {span:.1f} m)") from None
+        if pretension >= kind.mbl_n:
+            raise ParameterError(f"{where}: tension {pretension / 1e6:.2f} MN at the set point is above its breaking "
+                                 f"load {kind.mbl_n / 1e6:.2f} MN: the hawser is too short for a fixed point "
+                                 f"{straight:.1f} m from its fairlead")
+        reach = min(REACH_FRACTION * span, REACH_MAX_M)
+        straight_span = math.sqrt(max(length * length - rise * rise, 0.0))  # just taut, unstretched (m)
+        limit_span = math.sqrt(max((length * (1.0 + TAUT_LIMIT * kind.mbl_n / kind.ea_n)) ** 2 - rise * rise, 0.0))
+        low = max(min(SLACK_FRACTION * straight_span, span - reach), 0.5 * MIN_SPAN_M)
+        high = max(limit_span, span + reach) + 1.0
+        step = 0.5 / 2.0 ** max(0, math.ceil(math.log2(GRID_INTERVALS * 0.5 / (high - low))))
+        first, last = math.floor(low / step), math.ceil(high / step)
+        try:
+            spans, hv = _table(length, kind.ea_n, line.weight_n_m, rise, below, self.depth, first * step, step,
+                               last - first + 1, TAUT_LIMIT * kind.mbl_n)
+        except ParameterError as error:
+            raise ParameterError(f"{where}: {error}") from None
+        if spans[0] > span - reach:
+            raise ParameterError(f"{where}: MoorPy's catenary fails for the slack hawser out to {spans[0]:.1f} m, "
+                                 f"beyond the set point's {span:.1f} m - {reach:.1f} m")
+        return spans, hv
+
+    def _tabulate(self, tables: list[tuple[np.ndarray, np.ndarray]], hold_slack: Sequence[bool]) -> None:
+        """Cubic coefficients of every line's (H, V) against span, padded to one shape: (n, 4, segments, 2); the
+        lines of ``hold_slack`` (hawsers) held at their slack end's values below their table."""
         n, most = len(tables), max(len(spans) for spans, _ in tables) - 1
         self._lo = np.array([spans[0] for spans, _ in tables])
         self._hi = np.array([spans[-1] for spans, _ in tables])
@@ -232,6 +316,8 @@ class Moorings:
             slope = spline.derivative()
             self._ends[i, 0] = spline(spans[0]), slope(spans[0])
             self._ends[i, 1] = spline(spans[-1]), slope(spans[-1])
+            if hold_slack[i]:
+                self._ends[i, 0, 1] = 0.0
 
     @property
     def span_range(self) -> np.ndarray:
@@ -272,7 +358,8 @@ class Moorings:
     # -- loads --------------------------------------------------------------------------------------------------
 
     def _spans(self, north: float, east: float, psi: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """From each fairlead to its anchor: north and east (m) and the horizontal span (m), each (n_lines,)."""
+        """From each fairlead to its anchor (or fixed point): north and east (m) and the horizontal span (m), each
+        (n_lines,)."""
         c, s = math.cos(psi), math.sin(psi)
         x, y = self._fairlead[:, 0], self._fairlead[:, 1]
         d_north = self._anchor[:, 0] - (north + x * c - y * s)
@@ -280,7 +367,8 @@ class Moorings:
         return d_north, d_east, np.hypot(d_north, d_east)
 
     def _hv(self, span: np.ndarray) -> np.ndarray:
-        """Horizontal and vertical fairlead tension (N) of every line at horizontal ``span`` (m, (n,)): (n, 2)."""
+        """Horizontal tension and vertical pull down (N) at every line's fairlead at horizontal ``span`` (m, (n,)):
+        (n, 2); ``H`` >= 0, ``V`` >= 0 but for a hawser."""
         rows = np.arange(len(span))
         index = np.clip(np.floor((span - self._lo) / self._step).astype(int), 0, self._segments - 1)
         t = (span - (self._lo + index * self._step))[:, None]
@@ -289,7 +377,7 @@ class Moorings:
         below = self._ends[:, 0, 0] + self._ends[:, 0, 1] * (span - self._lo)[:, None]
         above = self._ends[:, 1, 0] + self._ends[:, 1, 1] * (span - self._hi)[:, None]
         hv = np.where((span < self._lo)[:, None], below, np.where((span > self._hi)[:, None], above, inside))
-        return np.maximum(hv, 0.0) * self._intact[:, None]
+        return np.maximum(hv, self._floor) * self._intact[:, None]
 
     def force(self, north: float, east: float, psi: float) -> np.ndarray:
         """The intact lines' pull on the vessel at (``north``, ``east``, ``psi``): (X N forward, Y N to starboard,
@@ -323,38 +411,46 @@ class Moorings:
         return k
 
 
-def _catenary(length: float, ea: float, weight: float, height: float, depth: float, span: float,
-              guess: tuple[float, float] = (0.0, 0.0)) -> tuple[float, float]:
-    """MoorPy's catenary from an anchor on the seabed to a fairlead ``height`` (m) above it and ``span`` (m) away:
-    the fairlead's horizontal and vertical tension (N)."""
+def _catenary(length: float, ea: float, weight: float, height: float, below: float, depth: float, span: float,
+              guess: tuple[float, float] = (0.0, 0.0)) -> tuple[float, float, tuple[float, float]]:
+    """MoorPy's catenary from the far end to a fairlead ``height`` (m, < 0: below it) above it and ``span`` (m)
+    away, the far end an anchor on the seabed (``below`` 0) or a fixed point ``below`` m above the seabed (the line
+    clear of it), in water ``depth`` (m): the fairlead's horizontal tension and vertical pull down (N), and MoorPy's
+    solved (HF, VF) to start the next solve from (its own line's end B, which it may have swapped)."""
     from moorpy.Catenary import catenary
 
-    info = catenary(span, height, length, ea, weight, CB=0.0, HF0=guess[0], VF0=guess[1], depth=depth)[4]
-    return float(info["HF"]), float(info["VF"])
+    *_, fx_b, fz_b, info = catenary(span, height, length, ea, weight, CB=-below, HF0=guess[0], VF0=guess[1],
+                                    depth=depth)
+    return -float(fx_b), -float(fz_b), (float(info["HF"]), float(info["VF"]))
 
 
 @functools.lru_cache(maxsize=256)
-def _table(length: float, ea: float, weight: float, height: float, depth: float, start: float, step: float,
-           count: int, limit: float) -> tuple[np.ndarray, np.ndarray]:
-    """Spans ``start + i step`` (m, i < ``count``) and the fairlead's (H, V) there (N), (m,) and (m, 2); cut after
-    the first span whose tension passes ``limit`` (N) or where the catenary fails on the taut side."""
+def _table(length: float, ea: float, weight: float, height: float, below: float, depth: float, start: float,
+           step: float, count: int, limit: float) -> tuple[np.ndarray, np.ndarray]:
+    """Spans ``start + i step`` (m, i < ``count``) and the fairlead's (H, V) there (N), (m,) and (m, 2), the line as
+    :func:`_catenary`'s; cut after the first span whose tension passes ``limit`` (N) or where the catenary fails on
+    the taut side. A hawser's (``below`` > 0) spans where the catenary fails while the line is slack, before any
+    it solves, are left out (the table then starts later)."""
     from moorpy.helpers import CatenaryError
 
     spans = start + step * np.arange(count)
-    rows, guess = [], (0.0, 0.0)
+    rows, guess, skipped = [], (0.0, 0.0), 0
     for span in spans:
         try:
-            guess = _catenary(length, ea, weight, height, depth, float(span), guess)
+            h, v, guess = _catenary(length, ea, weight, height, below, depth, float(span), guess)
         except CatenaryError:
+            if not rows and below > 0.0 and math.hypot(span, height) < length:
+                skipped += 1
+                continue
             if len(rows) < 4:
                 raise ParameterError(f"MoorPy's catenary fails for a {length:g} m line {height:g} m high over "
                                      f"{span:g} m") from None
             break
-        rows.append(guess)
-        if math.hypot(*guess) > limit and len(rows) >= 4:
+        rows.append((h, v))
+        if math.hypot(h, v) > limit and len(rows) >= 4:
             break
     hv = np.array(rows)
     hv.flags.writeable = False
-    spans = spans[: len(rows)].copy()
+    spans = spans[skipped: skipped + len(rows)].copy()
     spans.flags.writeable = False
     return spans, hv

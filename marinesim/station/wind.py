@@ -313,6 +313,8 @@ class BlendermannCoefficients(WindCoefficients):
         self.name = f"Blendermann (1994): {vessel_type}"
 
     def _evaluate(self, gamma: np.ndarray) -> np.ndarray:
+        if gamma.ndim == 0:  # one angle, as the simulation asks each step: the same formulas in plain floats
+            return np.array(self._one(float(gamma)))
         row, off = self.row, np.abs(gamma)
         cd_l_af = np.where(off <= math.pi / 2.0, row.cd_l_af_bow, row.cd_l_af_stern)
         cd_l = cd_l_af * self.frontal_area / self.lateral_area
@@ -321,6 +323,14 @@ class BlendermannCoefficients(WindCoefficients):
         cy = row.cd_t * np.sin(gamma) / den
         cn = (self.s_l / self.length - 0.18 * (off - math.pi / 2.0)) * cy
         return np.stack([cx, cy, cn])
+
+    def _one(self, gamma: float) -> tuple[float, float, float]:
+        row, off = self.row, abs(gamma)
+        cd_l_af = row.cd_l_af_bow if off <= math.pi / 2.0 else row.cd_l_af_stern
+        cd_l = cd_l_af * self.frontal_area / self.lateral_area
+        den = 1.0 - 0.5 * row.delta * (1.0 - cd_l / row.cd_t) * math.sin(2.0 * gamma) ** 2
+        cy = row.cd_t * math.sin(gamma) / den
+        return (-cd_l_af * math.cos(gamma) / den, cy, (self.s_l / self.length - 0.18 * (off - math.pi / 2.0)) * cy)
 
 
 class TabulatedCoefficients(WindCoefficients):
