@@ -199,3 +199,33 @@ def test_the_shuttle_tankers_thrust_balances_wind_current_and_the_waves_drift_on
     expected = SlowDrift.from_components(sim.components(0), scenario.station.drift).mean(0.5 * math.pi - psi)
     assert expected[0] < -1e5, "waves from ahead push a tanker astern"
     np.testing.assert_allclose(drift[:2], expected[:2], rtol=0.35)
+
+
+def test_a_session_log_keeps_the_station_files_and_its_replay_refuses_them_changed(tmp_path):
+    """A session of the shuttle tanker on DP: its log keeps the sha256 of her station-keeping file and of the drift
+    table beside her RAO set, as of her RAO and hull; once the station file has changed, replaying the log is
+    refused. What would be wrong if not: a replay of other physics (other thrusters, another DP tuning) passed off
+    as the session."""
+    import shutil
+
+    from marinesim.errors import ScenarioError as Refused
+    from marinesim.session.exercise import Exercise
+    from marinesim.session.log import read_log, vessel_files, write_log
+    from marinesim.session.replay import session_scenario
+    from marinesim.session.timeline import Simulation
+
+    shutil.copy(ROOT / "configs" / "station" / "tanker.toml", tmp_path / "tanker.toml")
+    text = (ROOT / "configs" / "tanker_dp.toml").read_text().replace('"../', f'"{ROOT.as_posix()}/')
+    scenario_path = tmp_path / "tanker_dp.toml"
+    scenario_path.write_text(text.replace('vessel = "tanker"', 'vessel = "tanker.toml"'))
+    scenario = load_scenario(scenario_path)
+    assert set(vessel_files(scenario)) == {"rao", "hull", "station", "drift"}
+    assert vessel_files(scenario)["drift"].name == "tanker.9"
+    exercise = Exercise(Simulation(scenario, wake=False), duration_s=2.0)
+    exercise.advance(2.0)
+    log = write_log(tmp_path / "session.jsonl", exercise)
+    session_scenario(read_log(log), log)
+    station = tmp_path / "tanker.toml"
+    station.write_text(station.read_text().replace("periods_s = [150.0, 150.0, 120.0]", "periods_s = [90.0, 90.0, 80.0]"))
+    with pytest.raises(Refused, match="station file .*tanker.toml has changed since the session"):
+        session_scenario(read_log(log), log)

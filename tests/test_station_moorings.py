@@ -232,3 +232,203 @@ def test_bad_file_is_refused(tmp_path: Path, change, expected):
     with pytest.raises(ScenarioError) as error:
         load_moorings(path, DEPTH)
     assert re.search(rf"bad\.toml: {expected}", one_line(error.value))
+
+
+# -- a hawser: the shuttle tanker astern of an FPSO (configs/moorings/tanker_hawser.toml) --------------------------
+
+HAWSER = ROOT / "configs" / "moorings" / "tanker_hawser.toml"
+HAWSER_DEPTH = 100.0
+"""The offshore-loading exercise's water depth (m): the hawser, in the air, is clear of the seabed at any depth."""
+
+
+@pytest.fixture(scope="module")
+def hawser() -> Moorings:
+    return load_moorings(HAWSER, HAWSER_DEPTH)
+
+
+def chock_at(hawser: Moorings, span: float, psi: float) -> tuple[float, float]:
+    """The vessel's (north m, east m) at heading ``psi`` (rad) that puts her bow chock ``span`` (m, horizontal) from
+    the fixed point, on the line from the fixed point through the chock's place at the set point."""
+    line = hawser.lines[0]
+    x, y, _ = line.fairlead
+    c0, s0 = math.cos(hawser.heading), math.sin(hawser.heading)
+    fixed = np.array(line.anchor)
+    away = np.array([x * c0 - y * s0, x * s0 + y * c0]) - fixed
+    chock = fixed + span * away / np.linalg.norm(away)
+    c, s = math.cos(psi), math.sin(psi)
+    return float(chock[0] - (x * c - y * s)), float(chock[1] - (x * s + y * c))
+
+
+def moorpy_hawser(hawser: Moorings, north: float, east: float, psi: float) -> float:
+    """MoorPy's own solve of the same two-point line (x east, y north, z up): the fixed point and the bow chock
+    where the vessel at (``north``, ``east``, ``psi``) has it, both fixed; its tension at the chock (N). Built in
+    air (``rho`` 0), as ours: MoorPy 1.3's Line weighs a line with both ends above the water wet."""
+    line = hawser.lines[0]
+    system = moorpy.System(depth=hawser.depth, rho=0.0, g=G)
+    system.setLineType(dnommm=line.diameter_m * 1000.0, material=line.material, name="hawser")
+    x, y, z = line.fairlead
+    c, s = math.cos(psi), math.sin(psi)
+    fixed = system.addPoint(1, np.array([line.anchor[1], line.anchor[0], line.anchor_height_m]))
+    chock = system.addPoint(1, np.array([east + x * s + y * c, north + x * c - y * s, z]))
+    system.addLine(line.length_m, "hawser", pointA=fixed.number, pointB=chock.number)
+    system.initialize()
+    system.solveEquilibrium()
+    return float(system.lineList[0].TB)
+
+
+def test_hawser_file_is_just_taut_at_the_set_point(hawser):
+    """The shipped hawser: 92.4 m of 0.14 m nylon over 93.1 m chock to chock, some 190 kN of pretension (the
+    header's figure), the FPSO's stern 90 m ahead of her bow on her heading 260 deg, 25 m up."""
+    (line,) = hawser.lines
+    assert line.hawser and line.anchor_height_m == 25.0
+    assert math.degrees(hawser.heading) == pytest.approx(260.0)
+    assert math.hypot(*line.anchor) == pytest.approx(213.0, abs=0.01)
+    assert math.degrees(math.atan2(line.anchor[1], line.anchor[0])) % 360.0 == pytest.approx(260.0, abs=0.01)
+    assert 100e3 < hawser.pretensions[0] < 300e3
+    assert hawser.pretensions[0] == pytest.approx(188e3, rel=0.02)
+
+
+@pytest.mark.parametrize("yaw_deg", [0.0, 25.0, -40.0])
+def test_taut_hawser_tension_equals_moorpys_solve(hawser, yaw_deg):
+    """Where the hawser is taut (its chock 0.2 % to 15 % beyond its length from the fixed point) and with the tanker
+    weathervaned off her set heading, our tabulated tension equals MoorPy's System solve of the same line between
+    two fixed points within 1 %. Failing: the fixed point's height, the weight in air or the table's knee wrong."""
+    psi = hawser.heading + math.radians(yaw_deg)
+    length = hawser.lines[0].length_m
+    for stretch in (1.002, 1.005, 1.01, 1.03, 1.06, 1.1, 1.15):
+        span = math.sqrt((stretch * length) ** 2 - 5.0 ** 2)
+        north, east = chock_at(hawser, span, psi)
+        ours = hawser.tensions(north, east, psi)[0]
+        assert ours == pytest.approx(moorpy_hawser(hawser, north, east, psi), rel=0.01), stretch
+
+
+def test_slack_hawser_hangs_under_its_weight(hawser):
+    """Closer than its length the hawser goes slack: its tension falls below its own weight in air (some 10 kN)
+    and stays there however close the tanker comes (held below the table); MoorPy's solve of the slack line
+    agrees within 1 % over the table."""
+    line = hawser.lines[0]
+    weight = line.weight_n_m * line.length_m
+    assert 9e3 < weight < 12e3
+    psi = hawser.heading
+    for fraction in (0.95, 0.9, 0.85):
+        north, east = chock_at(hawser, fraction * line.length_m, psi)
+        slack = hawser.tensions(north, east, psi)[0]
+        assert 0.0 < slack < weight
+        assert slack == pytest.approx(moorpy_hawser(hawser, north, east, psi), rel=0.01)
+    for span in (60.0, 30.0, 5.0):
+        north, east = chock_at(hawser, span, psi)
+        assert 0.0 < hawser.tensions(north, east, psi)[0] < weight
+        assert np.linalg.norm(hawser.force(north, east, psi)[:2]) < 0.5 * weight
+
+
+@pytest.mark.parametrize("yaw_deg", [20.0, -20.0])
+def test_hawser_pulls_her_bow_towards_the_fixed_point(hawser, yaw_deg):
+    """Her bow chock where it is at the set point but her heading 20 deg off the hawser's line: the pull, at the
+    pretension, points from the chock to the fixed point, and its yaw moment (about her origin, 120 m aft of the
+    chock) turns her bow back towards it: -x H sin(20 deg) with the bow swung to starboard, + to port. Failing: a
+    sign of the body frame or the heading wrong, and a weathervaning tanker would turn away from the FPSO."""
+    psi = hawser.heading + math.radians(yaw_deg)
+    line = hawser.lines[0]
+    x, y, _ = line.fairlead
+    c0, s0 = math.cos(hawser.heading), math.sin(hawser.heading)
+    north, east = chock_at(hawser, math.hypot(line.anchor[0] - x * c0, line.anchor[1] - x * s0), psi)
+    along, sideways, moment = hawser.force(north, east, psi)
+    c, s = math.cos(psi), math.sin(psi)
+    pull = np.array([along * c - sideways * s, along * s + sideways * c])  # earth frame, north and east
+    chock = np.array([north + x * c - y * s, east + x * s + y * c])
+    to_fixed = np.array(line.anchor) - chock
+    cross = pull[0] * to_fixed[1] - pull[1] * to_fixed[0]
+    assert cross == pytest.approx(0.0, abs=1e-9 * np.linalg.norm(pull) * np.linalg.norm(to_fixed))  # parallel
+    assert pull @ to_fixed > 0.0
+    assert hawser.tensions(north, east, psi)[0] == pytest.approx(hawser.pretensions[0], rel=1e-6)
+    off = (psi - math.atan2(to_fixed[1], to_fixed[0]) + math.pi) % (2.0 * math.pi) - math.pi  # bow off the line
+    assert math.degrees(off) == pytest.approx(yaw_deg, abs=0.05)
+    assert math.copysign(1.0, moment) == -math.copysign(1.0, yaw_deg)
+    assert moment == pytest.approx(-x * np.linalg.norm(pull) * math.sin(off), rel=1e-6)
+    assert along > 0.0 and abs(along) > abs(sideways)  # still mostly a pull ahead
+
+
+def test_parted_hawser_pulls_nothing(hawser):
+    """The hawser parted (the instructor's fault): no force, no moment, no tension, wherever she is."""
+    parted = hawser.with_failed("hawser")
+    psi = hawser.heading + 0.3
+    north, east = chock_at(hawser, 100.0, psi)
+    assert np.all(hawser.force(north, east, psi) != 0.0)
+    assert np.all(parted.force(north, east, psi) == 0.0)
+    assert parted.tensions(north, east, psi)[0] == 0.0 and parted.pretensions[0] == 0.0
+
+
+def hawser_line(**keys) -> Line:
+    """The shipped hawser's line, with ``keys`` changed."""
+    psi = math.radians(260.0)
+    given = dict(name="hawser", anchor=(213.0 * math.cos(psi), 213.0 * math.sin(psi)), fairlead=(120.0, 0.0, 20.0),
+                 length_m=92.4, material="nylon", diameter_m=0.14, anchor_height_m=25.0) | keys
+    return Line(**given)
+
+
+@pytest.mark.parametrize("keys, expected", [
+    (dict(anchor_height_m=-3.0), "line hawser: fixed point 3.0 m below the waterline: a hawser's far end is a point "
+                                 "above the water"),
+    (dict(fairlead=(120.0, 0.0, -2.0)), "line hawser: fairlead 2.0 m below the waterline: a hawser runs in air"),
+    (dict(anchor_depth_m=100.0), "line hawser: give anchor_depth_m (an anchor on the seabed) or anchor_height_m (a "
+                                 "hawser's fixed point above the water), not both"),
+    (dict(length_m=70.0), "line hawser: 70.0 m long, too short to reach its fairlead 93.1 m from the fixed point "
+                          "(stretched to its breaking load: 84.0 m)"),
+])
+def test_bad_hawser_is_refused(keys, expected):
+    """A fixed point under the water, a hawser's fairlead under it, an anchor depth as well, a hawser too short to
+    reach its fairlead without breaking: one line naming the line and the numbers."""
+    with pytest.raises(ParameterError) as error:
+        Moorings([hawser_line(**keys)], HAWSER_DEPTH, math.radians(260.0))
+    assert one_line(error.value) == expected
+
+
+@pytest.mark.parametrize("change, expected", [
+    (("fixed_point_m = [", "anchor_bearing_deg = 260.0\nfixed_point_m = ["),
+     r"lines\[0\]\.anchor_bearing_deg: give the far end one way: anchor_bearing_deg and anchor_radius_m \(an "
+     r"anchor\) or fixed_point_m \(a hawser's fixed point\), not both"),
+    (("fixed_point_m = [-36.99, -209.76, 25.0]", "anchor_radius_m = 213.0"),
+     r"lines\[0\]\.anchor_bearing_deg: required with anchor_radius_m \(an anchor\), or fixed_point_m instead \(a "
+     r"hawser's fixed point\)$"),
+    (("-209.76, 25.0]", "-209.76, -4.0]"),
+     r"line hawser: fixed point 4\.0 m below the waterline: a hawser's far end is a point above the water"),
+    (("-209.76, 25.0]", "-209.76]"), r"lines\[0\]\.fixed_point_m: expected \[north, east, z\] in metres"),
+])
+def test_bad_hawser_file_is_refused(tmp_path: Path, change, expected):
+    """Both ways of giving a line's far end, half an anchor, a fixed point under the water, a fixed point of two
+    coordinates: one line naming the file and the key (or the line)."""
+    path = tmp_path / "bad.toml"
+    text = HAWSER.read_text()
+    assert change[0] in text
+    path.write_text(text.replace(*change, 1))
+    with pytest.raises(ScenarioError) as error:
+        load_moorings(path, HAWSER_DEPTH)
+    assert re.search(rf"bad\.toml: {expected}", one_line(error.value))
+
+
+def test_hawser_table_starts_where_moorpy_solves_a_slack_hawser(monkeypatch):
+    """Should MoorPy's catenary fail for a hawser hanging well slack, its table starts at the first span MoorPy
+    solves and the tension closer in is held there (small: its weight). Forced here: MoorPy 1.3 solves these."""
+    import moorpy.Catenary
+    from moorpy.helpers import CatenaryError
+
+    from marinesim.station import moorings as module
+
+    solve = moorpy.Catenary.catenary
+
+    def failing(span, height, length, *args, **keys):
+        if span < 0.9 * length and keys.get("CB", 0.0) < 0.0:
+            raise CatenaryError("forced")
+        return solve(span, height, length, *args, **keys)
+
+    module._table.cache_clear()
+    monkeypatch.setattr(moorpy.Catenary, "catenary", failing)
+    try:
+        moorings = Moorings([hawser_line()], HAWSER_DEPTH, math.radians(260.0))
+    finally:
+        module._table.cache_clear()
+    low = moorings.span_range[0, 0]
+    assert 0.9 * 92.4 <= low < 0.9 * 92.4 + 0.5
+    at_low = moorings.tensions(*chock_at(moorings, low, moorings.heading), moorings.heading)[0]
+    closer = moorings.tensions(*chock_at(moorings, 40.0, moorings.heading), moorings.heading)[0]
+    assert closer == pytest.approx(at_low, rel=1e-9) and closer < 12e3

@@ -74,8 +74,9 @@ class MooringLineOptions(Section):
             raise _refuse(given[0], "give the far end one way: anchor_bearing_deg and anchor_radius_m (an anchor) or "
                                     "fixed_point_m (a hawser's fixed point), not both")
         if self.fixed_point_m is None and len(given) < len(ANCHOR_KEYS):
-            missing = next(key for key in ANCHOR_KEYS if key not in given)
-            raise _refuse(missing, "required (with the other anchor key), or fixed_point_m instead for a hawser")
+            missing, other = sorted(ANCHOR_KEYS, key=lambda key: key in given)
+            raise _refuse(missing, f"required with {other} (an anchor), or fixed_point_m instead (a hawser's fixed "
+                                   f"point)")
         return self
 
 

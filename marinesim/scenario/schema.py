@@ -181,6 +181,8 @@ class StationSetup:
     wind: WindLoads
     drift: DriftTable | None
     moorings: Moorings | None
+    files: dict[str, Path] = field(default_factory=dict)
+    """The files read, by role (station, wind, drift, moorings): a session log keeps their sha256."""
 
     @property
     def footprint_m(self) -> float:
@@ -244,26 +246,49 @@ def _station(path: Path, options: StationOptions, vessel: Vessel, depth: float) 
     """The station-keeping vessel's file and what it names, her moorings in water ``depth`` (m)."""
     file_path = _checked("station.vessel", lambda: _named_file(path, options.vessel, "station"))
     file = _checked("station.vessel", lambda: load_station(file_path))
+    files = {"station": file_path}
     wind = file.wind
     if wind.file is not None:
+        files["wind"] = _checked("station.vessel", lambda: _file(file_path, wind.file))
         loads = _checked("station.vessel", lambda: WindLoads.from_file(
-            _file(file_path, wind.file), wind.frontal_area_m2, wind.lateral_area_m2, file.length_m))
+            files["wind"], wind.frontal_area_m2, wind.lateral_area_m2, file.length_m))
     else:
         loads = _checked("station.vessel", lambda: WindLoads.blendermann(
             wind.vessel_type, wind.frontal_area_m2, wind.lateral_area_m2, file.length_m, wind.lateral_centroid_m))
-    drift = None if file.drift is None else _checked("station.vessel", lambda: read_drift(
-        _file(file_path, file.drift), ulen=file.drift_ulen_m))
+    drift_path = (_checked("station.vessel", lambda: _file(file_path, file.drift)) if file.drift is not None
+                  else _beside(vessel.rao_path, DRIFT_FILES))
+    drift = None if drift_path is None else _checked("station.vessel", lambda: read_drift(
+        drift_path, ulen=file.drift_ulen_m))
+    if drift_path is not None:
+        files["drift"] = drift_path
     if options.mode == "dp" and not file.thrusters:
         raise ScenarioError(f"station.mode: {file_path.name} gives no thrusters: she cannot keep station on DP")
     moorings = None
     if options.moorings is not None:
         mooring_path = _checked("station.moorings", lambda: _named_file(path, options.moorings, "moorings"))
         moorings = _checked("station.moorings", lambda: load_moorings(mooring_path, depth))
+        files["moorings"] = mooring_path
         laid = math.degrees(moorings.heading) % 360.0
         if abs((laid - vessel.heading_deg + 180.0) % 360.0 - 180.0) > 0.5:
             raise ScenarioError(f"vessel.heading_deg: {vessel.heading_deg:g} deg, but the moorings "
                                 f"({mooring_path.name}) are laid for a vessel heading {laid:g} deg")
-    return StationSetup(options, file, file_path, loads, drift, moorings)
+    return StationSetup(options, file, file_path, loads, drift, moorings, files)
+
+
+DRIFT_FILES = (".8", ".9")
+"""A WAMIT RAO set's mean drift files, the momentum one (better for a ship) first."""
+
+
+def _beside(rao_path: Path, suffixes: tuple[str, ...]) -> Path | None:
+    """The first of a WAMIT run's files with ``suffixes`` beside its ``.4`` (None for another format or none)."""
+    if rao_path.suffix != ".4":
+        return None
+    for suffix in suffixes:
+        candidate = rao_path.with_suffix(suffix)
+        if candidate.is_file():
+            formats.check_file(candidate)
+            return candidate
+    return None
 
 
 def _station_vessel(setup: StationSetup, vessel: Vessel) -> Station:

@@ -110,11 +110,13 @@ def header(scenario: Scenario, duration_s: float, end_s: float) -> dict[str, Any
 
 
 def vessel_files(scenario: Scenario) -> dict[str, Path]:
-    """The files the vessel of ``scenario`` is read from (its RAO table, its hull if any), by role."""
+    """The files the vessel of ``scenario`` is read from (its RAO table, its hull if any, a vessel keeping station's
+    files), by role."""
     vessel = scenario.vessel
     if vessel is None:
         return {}
-    return {"rao": vessel.rao_path, **({"hull": vessel.hull_path} if vessel.hull_path else {})}
+    station = scenario.station.files if scenario.station is not None else {}
+    return {"rao": vessel.rao_path, **({"hull": vessel.hull_path} if vessel.hull_path else {}), **station}
 
 
 def write_log(path: Path, exercise: Exercise) -> Path:

@@ -295,9 +295,9 @@ class Moorings:
                                last - first + 1, TAUT_LIMIT * kind.mbl_n)
         except ParameterError as error:
             raise ParameterError(f"{where}: {error}") from None
-        if spans[0] > span - reach:
+        if spans[0] >= span:
             raise ParameterError(f"{where}: MoorPy's catenary fails for the slack hawser out to {spans[0]:.1f} m, "
-                                 f"beyond the set point's {span:.1f} m - {reach:.1f} m")
+                                 f"beyond the set point's {span:.1f} m")
         return spans, hv
 
     def _tabulate(self, tables: list[tuple[np.ndarray, np.ndarray]], hold_slack: Sequence[bool]) -> None:
