@@ -226,6 +226,7 @@ def test_a_session_log_keeps_the_station_files_and_its_replay_refuses_them_chang
     log = write_log(tmp_path / "session.jsonl", exercise)
     session_scenario(read_log(log), log)
     station = tmp_path / "tanker.toml"
-    station.write_text(station.read_text().replace("periods_s = [150.0, 150.0, 120.0]", "periods_s = [90.0, 90.0, 80.0]"))
+    station.write_text(station.read_text().replace("periods_s = [150.0, 150.0, 120.0]",
+                                                   "periods_s = [90.0, 90.0, 80.0]"))
     with pytest.raises(Refused, match="station file .*tanker.toml has changed since the session"):
         session_scenario(read_log(log), log)

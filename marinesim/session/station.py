@@ -139,7 +139,8 @@ def station_record(station: Station, voyage: Voyage, times: np.ndarray) -> dict[
     wind = np.array([env.wind(float(t)) for t in times]).reshape(-1, 2)
     load = np.array([env.wind_load(float(t), s.psi, s.u, s.v) for t, s in zip(times, states)]).reshape(-1, 3)
     out |= {"wind_speed_m_s": wind[:, 0], "wind_from_deg": np.degrees(wind[:, 1]) % 360.0,
-            "wind_force_x_kn": load[:, 0] / 1e3, "wind_force_y_kn": load[:, 1] / 1e3, "wind_moment_knm": load[:, 2] / 1e3}
+            "wind_force_x_kn": load[:, 0] / 1e3, "wind_force_y_kn": load[:, 1] / 1e3,
+            "wind_moment_knm": load[:, 2] / 1e3}
     if station.thrusters is not None:
         use = station.thruster_use(extra)
         for j, column in enumerate(thruster_columns(station)):
