@@ -432,3 +432,17 @@ def test_hawser_table_starts_where_moorpy_solves_a_slack_hawser(monkeypatch):
     at_low = moorings.tensions(*chock_at(moorings, low, moorings.heading), moorings.heading)[0]
     closer = moorings.tensions(*chock_at(moorings, 40.0, moorings.heading), moorings.heading)[0]
     assert closer == pytest.approx(at_low, rel=1e-9) and closer < 12e3
+
+
+def test_hawser_moors_in_deep_water(hawser):
+    """A scenario without a water depth (deep water): the hawser, clear of the seabed, pulls as in 100 m; an
+    anchored line cannot be laid there and is refused in one line."""
+    deep = load_moorings(HAWSER, math.inf)
+    psi = hawser.heading + 0.2
+    for span in (80.0, 93.0, 100.0):
+        north, east = chock_at(hawser, span, psi)
+        np.testing.assert_array_equal(deep.force(north, east, psi), hawser.force(north, east, psi))
+    with pytest.raises(ParameterError) as error:
+        Moorings([chain()], math.inf)
+    assert one_line(error.value) == ("line 3: an anchor on the seabed needs a water depth, got deep water (only a "
+                                     "hawser to a fixed point moors a vessel there)")

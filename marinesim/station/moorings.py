@@ -13,14 +13,13 @@ into the sea is still weighed in air).
 Line physics is MoorPy's (``moorpy.Catenary.catenary``: an elastic catenary with seabed contact, no seabed
 friction; a hawser's hung from its fixed point, ``CB`` < 0) and its line-property library
 (``moorpy.helpers.getLineProps``: mass, wet weight, axial stiffness EA and minimum breaking load from the material's
-name and nominal diameter). A catenary solve per line and per
-Runge-Kutta stage would be far too slow for the simulator, so :class:`Moorings` tabulates each line's horizontal
-and vertical fairlead tension ``H``, ``V`` against the horizontal anchor-fairlead span once, on a grid of
-:data:`GRID_INTERVALS` or more intervals (0.5 m or finer) over the set point's span +- :data:`REACH_FRACTION` of
-it or +- :data:`REACH_MAX_M`, whichever is smaller (taut side: cut where the tension passes :data:`TAUT_LIMIT`
-times the breaking load), and interpolates it with a cubic spline. Beyond the grid, ``H`` and ``V`` carry on
-linearly at the grid end's slope (the taut side's elastic stiffness; on the slack side down to zero): the vessel
-has then left the range the mooring was laid for.
+name and nominal diameter). A catenary solve per line and per Runge-Kutta stage would be far too slow for the
+simulator, so :class:`Moorings` tabulates each line's horizontal and vertical fairlead tension ``H``, ``V`` against
+the horizontal anchor-fairlead span once, on a grid of :data:`GRID_INTERVALS` or more intervals (0.5 m or finer)
+over the set point's span +- :data:`REACH_FRACTION` of it or +- :data:`REACH_MAX_M`, whichever is smaller (taut
+side: cut where the tension passes :data:`TAUT_LIMIT` times the breaking load), and interpolates it with a cubic
+spline. Beyond the grid, ``H`` and ``V`` carry on linearly at the grid end's slope (the taut side's elastic
+stiffness; on the slack side down to zero): the vessel has then left the range the mooring was laid for.
 
 A hawser's table runs from well slack (:data:`SLACK_FRACTION` of the span at which it is straight and unstretched)
 to past :data:`TAUT_LIMIT` times its breaking load, whatever its set point: the vessel may close on the fixed point
@@ -42,7 +41,7 @@ import numpy as np
 from scipy.interpolate import CubicSpline
 
 from marinesim.constants import RHO_SEAWATER, G
-from marinesim.errors import ParameterError, require_finite
+from marinesim.errors import ParameterError, require_finite, require_positive
 
 REACH_FRACTION = 0.15
 REACH_MAX_M = 60.0
@@ -177,19 +176,18 @@ class Line:
 
 
 class Moorings:
-    """``lines`` in water ``depth`` (m) holding a vessel whose set point is (0, 0) heading ``heading`` (rad,
-    clockwise from north), the lines named in ``failed`` parted. Immutable: :meth:`with_failed` gives a copy.
+    """``lines`` in water ``depth`` (m; ``math.inf``, deep water: hawsers only) holding a vessel whose set point is
+    (0, 0) heading ``heading`` (rad, clockwise from north), the lines named in ``failed`` parted. Immutable:
+    :meth:`with_failed` gives a copy.
 
     Refused (:class:`ParameterError`, one line naming the line and the numbers): no lines, two lines of one name,
-    an anchor off the seabed, a fairlead under the seabed, an anchor (or a hawser's fixed point) under its fairlead,
-    a line too short to reach its fairlead without breaking, and one whose tension at the set point is above its
-    breaking load."""
+    an anchor off the seabed or in deep water, a fairlead under the seabed, an anchor (or a hawser's fixed point)
+    under its fairlead, a line too short to reach its fairlead without breaking, and one whose tension at the set
+    point is above its breaking load."""
 
     def __init__(self, lines: Sequence[Line], depth: float, heading: float = 0.0,
                  failed: Iterable[str] = ()) -> None:
-        depth = require_finite("depth_m", depth)
-        if depth <= 0.0:
-            raise ParameterError(f"depth_m must be > 0, got {depth!r}")
+        depth = require_positive("depth_m", depth, allow_infinite=True)
         self.depth, self.heading = depth, require_finite("heading", heading)
         self.lines = tuple(lines)
         if not self.lines:
@@ -221,6 +219,9 @@ class Moorings:
 
     def _check_and_tabulate(self, line: Line, span: float) -> tuple[np.ndarray, np.ndarray]:
         where, depth = f"line {line.name}", self.depth
+        if math.isinf(depth):
+            raise ParameterError(f"{where}: an anchor on the seabed needs a water depth, got deep water (only a "
+                                 f"hawser to a fixed point moors a vessel there)")
         if line.anchor_depth_m is not None and abs(line.anchor_depth_m - depth) > ANCHOR_DEPTH_TOLERANCE_M:
             off = depth - line.anchor_depth_m
             raise ParameterError(f"{where}: anchor {abs(off):.1f} m {'above' if off > 0 else 'below'} the seabed "
@@ -241,7 +242,8 @@ class Moorings:
         from moorpy.helpers import CatenaryError
 
         try:
-            pretension = math.hypot(*_catenary(line.length_m, kind.ea_n, kind.weight_n_m, height, 0.0, depth, span)[:2])
+            hv = _catenary(line.length_m, kind.ea_n, kind.weight_n_m, height, 0.0, depth, span)[:2]
+            pretension = math.hypot(*hv)
         except CatenaryError:
             raise ParameterError(f"{where}: MoorPy's catenary fails at the set point ({line.length_m:g} m of line, "
                                  f"{height:g} m high over {span:.1f} m)") from None
@@ -263,7 +265,8 @@ class Moorings:
         slack to past :data:`TAUT_LIMIT` times its breaking load."""
         where, kind, length = f"line {line.name}", line.type, line.length_m
         rise = line.fairlead[2] - line.anchor_height_m  # fairlead above the fixed point (m)
-        below = self.depth + line.anchor_height_m  # seabed below the fixed point (m)
+        seabed = min(self.depth, 2.0 * length)  # the water depth, or deeper than the hawser can hang (same tensions)
+        below = seabed + line.anchor_height_m  # seabed below the fixed point (m)
         if span < MIN_SPAN_M:
             raise ParameterError(f"{where}: fixed point {span:.2f} m from over its fairlead at the set point: a hawser "
                                  f"runs out from the vessel (at least {MIN_SPAN_M:g} m)")
@@ -275,7 +278,7 @@ class Moorings:
         from moorpy.helpers import CatenaryError
 
         try:
-            pretension = math.hypot(*_catenary(length, kind.ea_n, line.weight_n_m, rise, below, self.depth, span)[:2])
+            pretension = math.hypot(*_catenary(length, kind.ea_n, line.weight_n_m, rise, below, seabed, span)[:2])
         except CatenaryError:
             raise ParameterError(f"{where}: MoorPy's catenary fails at the set point ({length:g} m of hawser, "
                                  f"{rise:+g} m high over {span:.1f} m)") from None
@@ -291,7 +294,7 @@ class Moorings:
         step = 0.5 / 2.0 ** max(0, math.ceil(math.log2(GRID_INTERVALS * 0.5 / (high - low))))
         first, last = math.floor(low / step), math.ceil(high / step)
         try:
-            spans, hv = _table(length, kind.ea_n, line.weight_n_m, rise, below, self.depth, first * step, step,
+            spans, hv = _table(length, kind.ea_n, line.weight_n_m, rise, below, seabed, first * step, step,
                                last - first + 1, TAUT_LIMIT * kind.mbl_n)
         except ParameterError as error:
             raise ParameterError(f"{where}: {error}") from None

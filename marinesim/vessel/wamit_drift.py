@@ -16,7 +16,6 @@ x forward, y to port, z up, forces on the body: the table's manoeuvring axes (y 
 
 from __future__ import annotations
 
-import math
 from pathlib import Path
 
 import numpy as np
@@ -27,6 +26,7 @@ from marinesim.formats import check_file
 from marinesim.tokens import parse_float, parse_int, read_text
 from marinesim.vessel.drift import DriftTable, make_drift_table
 from marinesim.vessel.wamit import Settings, frc_rho
+from marinesim.vessel.wamit_rows import check_modulus, next_period
 
 COLUMNS = "PER BETA1 BETA2 I MOD PHA RE IM"
 DRIFT_MODES = (1, 2, 6)
@@ -107,19 +107,11 @@ def _read_rows(path: Path, header_lines: int) -> tuple[np.ndarray, np.ndarray, n
         for name, beta, token in (("BETA1", beta1, parts[1]), ("BETA2", beta2, parts[2])):
             if not -360.0 <= beta <= 360.0:
                 raise FileFormatError(path, number, f"{name} must be a heading in -360..360 deg, got {token}")
-        if abs(math.hypot(re, im) - modulus) > 1e-4 * max(modulus, 1e-30):
-            raise FileFormatError(path, number, f"MOD {modulus:g} disagrees with |RE + i IM| = {math.hypot(re, im):g}")
+        check_modulus(path, number, modulus, re, im)
         if per <= 0.0:
             skipped_limits += 1
             continue
-        if not periods or per != periods[-1]:
-            if per in periods:
-                raise FileFormatError(path, number, f"PER {parts[0]} appears again after other periods "
-                                                    "(duplicate or unsorted)")
-            if len(periods) >= 2 and (per - periods[-1]) * (periods[-1] - periods[-2]) < 0:
-                raise FileFormatError(path, number, f"PER {parts[0]} breaks the order of the periods (must be "
-                                                    "monotonic)")
-            periods.append(per)
+        if next_period(path, number, parts[0], per, periods):
             period_line.append(number)
         if beta1 != beta2:
             cross += 1

@@ -16,6 +16,25 @@ COLUMNS = "PER BETA I MOD PHA RE IM"
 RIGID_MODES = 6
 
 
+def check_modulus(path: Path, number: int, modulus: float, re: float, im: float) -> None:
+    """A row's MOD must be ``|RE + i IM|`` (to 1e-4 of it): else the columns are not WAMIT's."""
+    if abs(math.hypot(re, im) - modulus) > 1e-4 * max(modulus, 1e-30):
+        raise FileFormatError(path, number, f"MOD {modulus:g} disagrees with |RE + i IM| = {math.hypot(re, im):g}")
+
+
+def next_period(path: Path, number: int, token: str, per: float, periods: list[float]) -> bool:
+    """Add ``per`` (written ``token``) to ``periods`` if it starts a new period: the periods of a WAMIT file are
+    monotonic and each comes in one run of rows. Whether it was new."""
+    if periods and per == periods[-1]:
+        return False
+    if per in periods:
+        raise FileFormatError(path, number, f"PER {token} appears again after other periods (duplicate or unsorted)")
+    if len(periods) >= 2 and (per - periods[-1]) * (periods[-1] - periods[-2]) < 0:
+        raise FileFormatError(path, number, f"PER {token} breaks the order of the periods (must be monotonic)")
+    periods.append(per)
+    return True
+
+
 def read_rows(path: Path, *, header_lines: int = 0, what: str = "mode", offset: int = 0) -> tuple[
         np.ndarray, np.ndarray, np.ndarray, list[str]]:
     """Periods (file order, monotonic), headings (deg, increasing), values (heading, period, 6) and notes
@@ -51,17 +70,8 @@ def read_rows(path: Path, *, header_lines: int = 0, what: str = "mode", offset: 
             raise FileFormatError(path, number, f"BETA must be a heading in -360..360 deg, got {parts[1]}")
         if dof < 1:
             raise FileFormatError(path, number, f"I must be a mode number >= 1, got {dof}")
-        if abs(math.hypot(re, im) - modulus) > 1e-4 * max(modulus, 1e-30):
-            raise FileFormatError(path, number, f"MOD {modulus:g} disagrees with |RE + i IM| = "
-                                                f"{math.hypot(re, im):g}")
-        if not periods or per != periods[-1]:
-            if per in periods:
-                raise FileFormatError(path, number, f"PER {parts[0]} appears again after other periods "
-                                                    "(duplicate or unsorted)")
-            if len(periods) >= 2 and (per - periods[-1]) * (periods[-1] - periods[-2]) < 0:
-                raise FileFormatError(path, number, f"PER {parts[0]} breaks the order of the periods "
-                                                    "(must be monotonic)")
-            periods.append(per)
+        check_modulus(path, number, modulus, re, im)
+        next_period(path, number, parts[0], per, periods)
         p = len(periods) - 1
         if beta not in headings:
             if p > 0:
