@@ -446,3 +446,30 @@ def test_hawser_moors_in_deep_water(hawser):
         Moorings([chain()], math.inf)
     assert one_line(error.value) == ("line 3: an anchor on the seabed needs a water depth, got deep water (only a "
                                      "hawser to a fixed point moors a vessel there)")
+
+
+def test_the_shuttle_tanker_on_her_hawser_weathervanes_and_falls_back_when_it_parts():
+    """configs/tanker_hawser.toml (the tanker astern of an FPSO's stern on a 92 m nylon hawser, 30 t astern pull,
+    wind from 265 deg, 5 deg off her heading): for five minutes the hawser holds her (its tension in the record,
+    hundreds of kN on average as she surges on it, never at its breaking load), within its reach of the fixed
+    point; her heading has turned towards the wind. Parted at five minutes (the instructor's fault), its tension is zero and she falls back from the FPSO.
+    What would be wrong if not: a hawser that does not hold, a record without its tension, or a parted line that
+    still pulls."""
+    from marinesim.scenario import load_scenario
+    from marinesim.session.timeline import Simulation
+
+    scenario = load_scenario(ROOT / "configs" / "tanker_hawser.toml")
+    sim = Simulation(scenario, wake=False)
+    sim.order(fault="line:hawser", at=300.0)
+    times = np.arange(0.0, 600.0, 5.0)
+    record = sim.frame(times)
+    tension = record["line_hawser_tension_kn"]
+    holding, parted = times < 300.0, times > 305.0
+    assert tension[holding].mean() > 200.0 and tension[holding].max() < 4690.0, tension[holding]
+    assert np.all(tension[parted] == 0.0)
+    fixed = np.array([-36.99, -209.76])
+    reach = np.hypot(record["north_m"] - fixed[0], record["east_m"] - fixed[1])
+    assert reach[holding].max() < 213.0 + 0.2 * 92.4, "the hawser (92 m, 20 % stretch at its breaking load) holds her"
+    assert reach[-1] > reach[holding].max() + 20.0, "parted, she falls back from the FPSO"
+    heading = record["heading_deg"][(times > 200.0) & (times < 300.0)].mean()
+    assert 260.5 < heading < 270.0, f"she weathervanes towards the wind from 265 deg, heading {heading:.1f}"

@@ -557,6 +557,9 @@ class StationOptions(Section):
     mode: Literal["dp", "moored"] = Field("dp", description="on dynamic positioning, or held by moorings")
     moorings: str | None = Field(None, description='moored: the mooring file, a shipped one by name '
                                                    '("semisub_8_chain": configs/moorings) or a file (.toml)')
+    pull_kn: Annotated[float, Quantity("kN", ge=0.0, le=5000.0)] = Field(
+        0.0, description="moored: a constant pull astern on her own engines, as a shuttle tanker keeps her hawser "
+                         "taut (20 to 50 t)")
     footprint_m: Annotated[float, Quantity("m", gt=0.0, le=500.0)] = Field(
         5.0, description='the alarm radius around the set point: a criterion "footprint" (offset_max_m) unless '
                          "the scenario names one")
@@ -565,6 +568,8 @@ class StationOptions(Section):
     def _moorings_when_moored(self) -> StationOptions:
         if (self.mode == "moored") != (self.moorings is not None):
             raise _refuse("moorings", "give moorings with mode = \"moored\" (and only then)")
+        if self.pull_kn and self.mode != "moored":
+            raise _refuse("pull_kn", "a pull astern is a moored vessel's: on DP her thrusters hold her")
         return self
 
 

@@ -296,7 +296,7 @@ def _station_vessel(setup: StationSetup, vessel: Vessel) -> Station:
     m, d = setup.file.matrices()
     thrusters = setup.file.thruster_set() if setup.options.mode == "dp" else None
     dp = None if thrusters is None else Dp(m, d, setup.file.tuning())
-    return Station(setup.file.name, m, d, Calm(), thrusters, dp, setup.moorings)
+    return Station(setup.file.name, m, d, Calm(), thrusters, dp, setup.moorings, setup.options.pull_kn * 1e3)
 
 
 def _named_file(scenario: Path, name: str, folder: str) -> Path:

@@ -97,6 +97,8 @@ class Station:
     thrusters: Thrusters | None = None
     dp: Dp | None = None
     moorings: Moorings | None = None
+    pull: float = 0.0
+    """A constant thrust astern along her own axis (N) on moorings: a shuttle tanker keeping her hawser taut."""
     kind = "station"
 
     def __post_init__(self) -> None:
@@ -208,6 +210,8 @@ class Station:
             c, sn = math.cos(psi), math.sin(psi)
             nu_r = np.array([u - (cn * c + ce * sn), v - (-cn * sn + ce * c), r])
             force = thrust(tau) + env.loads(t + tau, north, east, psi, u, v, r) - d @ nu_r
+            if self.pull:
+                force = force - np.array([self.pull, 0.0, 0.0])
             if lines is not None:
                 force = force + lines.force(north, east, psi)
             return np.concatenate([(u * c - v * sn, u * sn + v * c, r), m_inv @ force])
