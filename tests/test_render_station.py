@@ -50,8 +50,8 @@ NO_WINDOW = 77
 @pytest.mark.slow
 def test_the_instructor_fails_a_thruster_and_the_reference_with_keys_and_the_replay_holds_them(tmp_path):
     """The viewer (pyglet's headless EGL window, real key events) on configs/supply_dp.toml: L loses the first
-    working thruster, Q sets the position reference drifting, RIGHT turns the DP's heading 5 deg; the session log
-    holds them as orders, and its replay has the same faults and the same record to the last digit. What would be
+    working thruster, Q sets the position reference drifting, RIGHT turns the DP's heading 5 deg, UP UP V move her
+    set point 2 m ahead and 1 m to starboard; the session log holds them as orders, and its replay has the same faults and the same record to the last digit. What would be
     wrong if not: an instructor who cannot fail the DP live, or a log that does not bring back what happened."""
     result = subprocess.run([sys.executable, __file__, str(tmp_path)], capture_output=True, text=True, timeout=600)
     if result.returncode == NO_WINDOW:
@@ -88,6 +88,8 @@ def walkthrough(tmp_path: Path) -> None:
         press(key.L, "l")
         press(key.Q, "q")
         press(key.RIGHT, None)
+        for symbol, text in ((key.UP, None), (key.UP, None), (key.V, "v")):
+            press(symbol, text)
         for _ in range(30):
             viewer.tick(0.1)
         viewer.draw()
@@ -95,6 +97,9 @@ def walkthrough(tmp_path: Path) -> None:
         faults = sim.voyage.orders.faults
         assert faults == {"thruster:bow tunnel 1", "reference drift"}, faults
         assert math.isclose(math.degrees(sim.voyage.orders.course), 35.0), sim.voyage.orders.course
+        heading = math.radians(35.0)  # two metres ahead and one to starboard of her new heading
+        assert math.isclose(sim.voyage.orders.north, 2.0 * math.cos(heading) - math.sin(heading), abs_tol=1e-5)
+        assert math.isclose(sim.voyage.orders.east, 2.0 * math.sin(heading) + math.cos(heading), abs_tol=1e-5)
         record = sim.frame(np.arange(0.0, 5.0, 0.1))
     finally:
         viewer.close()

@@ -31,6 +31,8 @@ HELM_STEP_DEG = 5.0
 """LEFT / RIGHT: the rudder order this much to port / starboard (a vessel on station: her heading)."""
 COURSE_STEPS_DEG = (1.0, 10.0)
 """U / I and 9 / 0: the autopilot's course this much to port / starboard."""
+SET_POINT_STEP_M = 1.0
+"""How far a key moves a DP's position set point (m): the reference model takes her there at 0.3 m/s."""
 TIME_SCALES = (0.125, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0)
 VISIBILITY_STEP = 2.0  # each press: visibility / 2 (fog thickens) or x 2 (it lifts)
 TIME_STEP_H = 1.0
@@ -188,6 +190,7 @@ class Controls:
                 keys["L"] = self.next_fault
                 if ship.dp is not None:
                     keys["Q"] = order(fault="reference drift")
+                    keys |= self._set_point_keys(order, orders)
             return keys
         hard = math.degrees(ship.steering.max_angle)
         rudder = math.degrees(orders.rudder) if not orders.autopilot else c["rudder_order_deg"]
@@ -204,6 +207,19 @@ class Controls:
                 "UP": telegraph(1), "DOWN": telegraph(-1),
                 "P": order(autopilot=not orders.autopilot),
                 "U": steer(-small), "I": steer(small), "_9": steer(-large), "_0": steer(large)}
+
+    def _set_point_keys(self, order, orders) -> dict[str, Callable[[], None]]:
+        """The DP operator's set point moved :data:`SET_POINT_STEP_M` ahead or astern (UP/DOWN) and to port or
+        starboard (Z/V) of her heading set point."""
+        psi = orders.course
+
+        def move(ahead: float, starboard: float) -> Callable[[], None]:
+            north = orders.north + ahead * math.cos(psi) - starboard * math.sin(psi)
+            east = orders.east + ahead * math.sin(psi) + starboard * math.cos(psi)
+            return order(set_north_m=round(north, 6), set_east_m=round(east, 6))
+
+        step = SET_POINT_STEP_M
+        return {"UP": move(step, 0.0), "DOWN": move(-step, 0.0), "Z": move(0.0, -step), "V": move(0.0, step)}
 
     def next_fault(self) -> None:
         """The instructor fails the next thruster still working (a vessel on DP) or parts the next line still
@@ -330,6 +346,7 @@ HELP = [
     "F / G          instructor: fog thickens / lifts (visibility / 2, x 2)",
     "J / K          instructor: cloud cover -/+ 1 okta    Y / T   clock -/+ 1 h (scenarios with time_utc)",
     "O              instructor: rain none / light / heavy / violent showers",
+    "UP/DOWN Z/V    on DP: set point 1 m ahead / astern, to port / starboard",
     "L / Q          instructor (DP, moorings): next thruster lost or line parted / position reference drifts",
     "R              start / stop recording the motions (CSV, as marinesim export)",
     "TAB            HUD: compact strip / full panels (motions, charts, every criterion)",
