@@ -23,7 +23,7 @@ from pathlib import Path
 from marinesim.atomic import note_input
 from marinesim.errors import FileFormatError, ParameterError
 
-KINDS = {"rao": "RAO", "mesh": "mesh"}  # kind -> what the messages call a file of that kind
+KINDS = {"rao": "RAO", "mesh": "mesh", "drift": "mean drift"}  # kind -> what the messages call a file of that kind
 HEAD_BYTES = 4096
 
 
@@ -175,6 +175,12 @@ register(Format("aqwa", "rao", "ANSYS AQWA listing (.lis): position RAOs of stru
 register(Format("nemoh", "rao", "NEMOH v2/v3 project, given by its Nemoh.cal: Motion/RAO.dat, or RAOs solved from "
                 "its forces, coefficients and mass", (".cal",), "marinesim.vessel.nemoh:read_nemoh",
                 "marinesim.vessel.nemoh:sniff", options=("rigid_body",)))
+register(Format("wamit-drift", "drift", "WAMIT .8 (momentum) or .9 (pressure) mean drift", (".8", ".9"),
+                "marinesim.vessel.wamit_drift:read_drift", options=("ulen",)))
+register(Format("aqwa-drift", "drift", "ANSYS AQWA listing (.lis): its wave-drift loads of structure 1", (".lis",),
+                "marinesim.vessel.aqwa_drift:read_aqwa_drift", options=("axisymmetric",)))
+register(Format("nemoh-drift", "drift", "NEMOH v3 QTF module's OUT_QTFM_N.dat (its diagonal)", (".dat",),
+                "marinesim.vessel.nemoh_drift:read_nemoh_drift", options=("axisymmetric",)))
 register(Format("gdf", "mesh", "WAMIT low-order panels, .gdf", (".gdf",), "marinesim.hull.gdf:read_gdf_mesh"))
 register(Format("pnl", "mesh", "HAMS panel mesh, .pnl", (".pnl",), "marinesim.hull.pnl:read_pnl_mesh"))
 register(Format("nemoh-mesh", "mesh", "NEMOH mesh, .dat (or Capytaine's .mar)", (".dat", ".mar"),

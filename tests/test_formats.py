@@ -125,6 +125,18 @@ def check_tanker_report(path: Path, name: str) -> None:
     np.testing.assert_allclose(table.values, numeric.values[:, :, picked], rtol=0.01, atol=1e-4)
 
 
+DRIFT = ROOT / "tests" / "data" / "drift"
+
+
+def check_drift(path: Path, name: str) -> None:
+    """A mean drift table read through the registry pushes the body astern in head seas in the upper half of its
+    frequencies (the AQWA cylinder and the NEMOH spar turned round the circle: each covers few headings)."""
+    fmt = formats.get(name, "drift")
+    table = formats.reader(fmt)(path, **({"axisymmetric": True} if "axisymmetric" in fmt.options else {}))
+    omega = table.omega[len(table.omega) * 2 // 3]
+    assert table(np.array([omega]), np.array([np.pi]))[0, 0] < 0.0
+
+
 SAMPLES: dict[str, tuple[Callable[[Path], Path], Callable[[Path, str], None]]] = {
     "wamit": (lambda folder: TANKER_RAO, check_rao),
     "wamit-forces": (lambda folder: TANKER_RAO.with_suffix(".3"), check_rao),
@@ -137,6 +149,9 @@ SAMPLES: dict[str, tuple[Callable[[Path], Path], Callable[[Path, str], None]]] =
     "orcaflex": (lambda folder: ROOT / "tests" / "data" / "orcaflex" / "cylinder_vessel_type.yml", check_rao),
     "aqwa": (lambda folder: ROOT / "tests" / "data" / "aqwa" / "cylinder_excerpt.LIS", check_rao),
     "nemoh": (lambda folder: ROOT / "tests" / "data" / "nemoh" / "oc3_hywind" / "Nemoh.cal", check_rao),
+    "wamit-drift": (lambda folder: ROOT / "rao" / "tanker" / "tanker.9", check_drift),
+    "aqwa-drift": (lambda folder: DRIFT / "aqwa_cylinder_drift.LIS", check_drift),
+    "nemoh-drift": (lambda folder: DRIFT / "nemoh_oc3" / "results" / "QTF" / "OUT_QTFM_N_0.dat", check_drift),
     "gdf": (lambda folder: ROOT / "hulls" / "tanker.gdf", check_tanker_gdf),
     "pnl": (lambda folder: ROOT / "tests" / "data" / "hams" / "cylinder" / "Input" / "HullMesh.pnl",
             check_hams_cylinder),

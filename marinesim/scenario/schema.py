@@ -35,7 +35,7 @@ from marinesim.station.moorings import Moorings
 from marinesim.station.vessel import Calm, Station
 from marinesim.station.wind import WindLoads
 from marinesim.vessel.drift import DriftTable
-from marinesim.vessel.wamit_drift import read_drift
+from marinesim.vessel.aqwa_drift import has_drift
 from marinesim.sea.build import wave_system
 from marinesim.sea.seastate import SeaState
 from marinesim.vessel.body import RigidBody
@@ -256,9 +256,8 @@ def _station(path: Path, options: StationOptions, vessel: Vessel, depth: float) 
         loads = _checked("station.vessel", lambda: WindLoads.blendermann(
             wind.vessel_type, wind.frontal_area_m2, wind.lateral_area_m2, file.length_m, wind.lateral_centroid_m))
     drift_path = (_checked("station.vessel", lambda: _file(file_path, file.drift)) if file.drift is not None
-                  else _beside(vessel.rao_path, DRIFT_FILES))
-    drift = None if drift_path is None else _checked("station.vessel", lambda: read_drift(
-        drift_path, ulen=file.drift_ulen_m))
+                  else _checked("vessel.rao", lambda: _drift_beside(vessel.rao_path)))
+    drift = None if drift_path is None else _checked("station.vessel", lambda: _read_drift(drift_path, file))
     if drift_path is not None:
         files["drift"] = drift_path
     if options.mode == "dp" and not file.thrusters:
@@ -275,20 +274,29 @@ def _station(path: Path, options: StationOptions, vessel: Vessel, depth: float) 
     return StationSetup(options, file, file_path, loads, drift, moorings, files)
 
 
-DRIFT_FILES = (".8", ".9")
-"""A WAMIT RAO set's mean drift files, the momentum one (better for a ship) first."""
+def _drift_beside(rao_path: Path) -> Path | None:
+    """Her RAO set's own mean drift table, where it has one: a WAMIT run's .8 (momentum, better for a ship) or .9
+    beside its .4, an AQWA listing's wave-drift pages, a NEMOH project's results/QTF/OUT_QTFM_N.dat."""
+    suffix = rao_path.suffix.lower()
+    if suffix == ".4":
+        candidates = [rao_path.with_suffix(".8"), rao_path.with_suffix(".9")]
+    elif suffix == ".cal":
+        candidates = [rao_path.parent / "results" / "QTF" / "OUT_QTFM_N.dat"]
+    elif suffix == ".lis":
+        candidates = [rao_path] if has_drift(rao_path) else []
+    else:
+        candidates = []
+    found = next((c for c in candidates if c.is_file()), None)
+    if found is not None:
+        formats.check_file(found)
+    return found
 
 
-def _beside(rao_path: Path, suffixes: tuple[str, ...]) -> Path | None:
-    """The first of a WAMIT run's files with ``suffixes`` beside its ``.4`` (None for another format or none)."""
-    if rao_path.suffix != ".4":
-        return None
-    for suffix in suffixes:
-        candidate = rao_path.with_suffix(suffix)
-        if candidate.is_file():
-            formats.check_file(candidate)
-            return candidate
-    return None
+def _read_drift(path: Path, file: StationFile) -> DriftTable:
+    """The drift table at ``path`` by its format, with the station file's options for it."""
+    fmt = formats.detect(path, "drift")
+    given = {"ulen": file.drift_ulen_m, "axisymmetric": file.drift_axisymmetric}
+    return formats.reader(fmt)(path, **{key: value for key, value in given.items() if key in fmt.options})
 
 
 def _station_vessel(setup: StationSetup, vessel: Vessel) -> Station:

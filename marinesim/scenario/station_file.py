@@ -90,9 +90,12 @@ class StationFile(Section):
     mass_matrix: Matrix3 | None = Field(None, description="low-frequency mass with added mass (kg, kg m, kg m^2)")
     damping_matrix: Matrix3 | None = Field(None, description="linear damping (N s/m, N s, N m s)")
     wind: WindOptions
-    drift: str | None = Field(None, description="mean drift coefficients (WAMIT .8 or .9), relative to this file")
+    drift: str | None = Field(None, description="mean drift table (WAMIT .8 or .9, AQWA .lis, NEMOH OUT_QTFM_N.dat), "
+                                                "relative to this file; absent: her RAO set's own where it has one")
     drift_ulen_m: Annotated[float | None, Quantity("m", gt=0.0, le=1000.0)] = Field(
-        None, description="their ULEN; absent: the .gdf's beside them")
+        None, description="a WAMIT table's ULEN; absent: the .gdf's beside it")
+    drift_axisymmetric: bool = Field(False, description="an AQWA or NEMOH table of a few headings of a body symmetric "
+                                                        "about the vertical (a buoy, a spar): turned round the circle")
     thrusters: Annotated[list[ThrusterOptions], Field(max_length=MAX_THRUSTERS)] = Field(default_factory=list)
     dp: DpOptions = Field(default_factory=DpOptions)
 

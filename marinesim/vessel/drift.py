@@ -4,18 +4,23 @@ A :class:`DriftTable` holds ``D(omega, beta)`` for surge X, sway Y and yaw N in 
 :mod:`marinesim.manoeuvring.state` (x forward, y to starboard, z down; N positive turning the bow to starboard),
 so that a regular wave ``a cos(omega t)`` of relative propagation heading ``beta`` (docs/CONVENTIONS.md: 0
 following sea, pi head sea, +pi/2 travelling towards port) pushes the vessel with the mean force ``|a|^2 D``.
-Readers convert their program's axes once (e.g. :mod:`marinesim.vessel.wamit_drift`); :func:`make_drift_table`
-sorts, completes half-range tables by the port/starboard mirror and checks the headings cover the circle.
+Readers convert their program's axes once (:mod:`~marinesim.vessel.wamit_drift`, :mod:`~marinesim.vessel.aqwa_drift`,
+:mod:`~marinesim.vessel.nemoh_drift`); :func:`make_drift_table` sorts, completes half-range tables by the
+port/starboard mirror and checks the headings cover the circle. What the readers share is here too:
+:class:`DriftLoads` (a reader's table before the heading checks), :func:`turned_round` (one heading made into the
+whole circle for a body symmetric about the vertical axis) and :func:`drift_table` (the :class:`DriftTable`, with
+``make_drift_table``'s refusals as :class:`FileFormatError`).
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from pathlib import Path
 
 import numpy as np
 
-from marinesim.errors import ParameterError
+from marinesim.errors import FileFormatError, ParameterError
 from marinesim.vessel.rao import MAX_HEADING_GAP
 
 DRIFT_DOFS = ("X", "Y", "N")
@@ -135,3 +140,78 @@ def make_drift_table(omega: np.ndarray, beta: np.ndarray, coefficients: np.ndarr
     for array in (omega, wrapped, values):
         array.setflags(write=False)
     return DriftTable(omega, wrapped, values, str(source), tuple(notes))
+
+
+TURN_STEP_DEG = 5.0
+"""Heading step of the table :func:`turned_round` makes (linear interpolation of the turning force vector
+between steps of 5 deg is within 0.1 % of its magnitude)."""
+
+
+@dataclass(frozen=True)
+class DriftLoads:
+    """Mean drift loads as a reader found them, before the heading checks of :func:`make_drift_table`:
+    ``omega`` (n_w,) rad/s increasing, ``headings_deg`` (n_b,) relative propagation heading in [-180, 180]
+    increasing (one of -180 and 180), ``values`` (n_w, n_b, 3) in the manoeuvring axes (X, Y in N/m^2, N in
+    N m/m^2) and ``notes``."""
+
+    omega: np.ndarray
+    headings_deg: np.ndarray
+    values: np.ndarray
+    notes: tuple[str, ...]
+
+
+def turned_round(headings_deg: np.ndarray, values: np.ndarray, step_deg: float = TURN_STEP_DEG) -> tuple[
+        np.ndarray, np.ndarray, str]:
+    """Headings (rad, every ``step_deg`` on [-180, 180)) and loads (n_w, n_step, 3) of a body symmetric about the
+    vertical axis through its moment reference point, from its loads ``values`` (n_w, n_b, 3; manoeuvring axes)
+    at the distinct ``headings_deg`` (n_b,), and a note.
+
+    For such a body the horizontal drift force turns with the waves and the yaw moment does not change: the
+    loads at heading ``b`` turned back to heading 0 are ``X0 = X cos b - Y sin b``, ``Y0 = X sin b + Y cos b``
+    (waves turned towards port turn the force towards port, which is ``-Y``), ``N0 = N``. The headings given
+    are turned back to 0 and averaged (one heading is taken as it is), then turned round the circle; the note
+    gives how far the headings given differ from their average, as a share of the largest force.
+    """
+    headings = np.radians(np.asarray(headings_deg, dtype=float))
+    values = np.asarray(values, dtype=float)
+    c, s = np.cos(headings), np.sin(headings)
+    x, y, n = values[..., 0], values[..., 1], values[..., 2]
+    back = np.stack([x * c - y * s, x * s + y * c, n], axis=-1)  # (n_w, n_b, 3) at heading 0
+    mean = back.mean(axis=1)
+    force = max(float(np.abs(mean[:, :2]).max()), 1e-300)
+    spread = float(np.abs(back[..., :2] - mean[:, None, :2]).max()) / force
+    grid = np.radians(np.arange(-180.0, 180.0, float(step_deg)))
+    cg, sg = np.cos(grid), np.sin(grid)
+    x0, y0, n0 = mean[:, 0:1], mean[:, 1:2], mean[:, 2:3]
+    turned = np.stack([x0 * cg + y0 * sg, -x0 * sg + y0 * cg, np.broadcast_to(n0, (mean.shape[0], grid.size))],
+                      axis=-1)
+    given = ", ".join(f"{h:g}" for h in np.asarray(headings_deg, dtype=float))
+    note = (f"axisymmetric body: the loads at heading(s) {given} deg turned to 0 deg"
+            + (f" and averaged (they differ from the average by up to {spread:.3g} of the largest force)"
+               if headings.size > 1 else "")
+            + f", then turned round the circle every {step_deg:g} deg; yaw moment kept as given")
+    return grid, turned, note
+
+
+def drift_table(path: Path, loads: DriftLoads, *, axisymmetric: bool = False) -> DriftTable:
+    """The :class:`DriftTable` of ``loads`` read from ``path``: turned round the circle for an ``axisymmetric``
+    body, else as given (a half range is mirrored by :func:`make_drift_table`); its refusal (headings that
+    leave a gap) becomes a :class:`FileFormatError` naming the headings the file covers."""
+    beta, values, notes = np.radians(loads.headings_deg), loads.values, loads.notes
+    if axisymmetric:
+        beta, values, note = turned_round(loads.headings_deg, loads.values)
+        notes = notes + (note,)
+    try:
+        return make_drift_table(loads.omega, beta, values, source=str(path), notes=notes)
+    except ParameterError as error:
+        covered = ", ".join(f"{h:g}" for h in loads.headings_deg)
+        hint = "" if axisymmetric else "; for a body symmetric about the vertical axis pass axisymmetric=True"
+        raise FileFormatError(path, None, f"{error} (the file covers heading(s) {covered} deg{hint})") from None
+
+
+def wrapped_heading(direction_deg: float, shown: dict[float, float]) -> float:
+    """``direction_deg`` (-360..360) as a heading in [-180, 180], the same number for the same heading: the first
+    of -180 and 180 met is kept for both (``shown`` remembers it), so a half range 0..180 or -180..0 stays one
+    for :func:`make_drift_table`'s mirror and a full circle printing both ends keeps one."""
+    key = round((direction_deg + 180.0) % 360.0 - 180.0, 9)  # [-180, 180), 1e-9 deg: 0.1 stays 0.1
+    return shown.setdefault(key, 180.0 if key == -180.0 and direction_deg > 0.0 else key)
