@@ -127,7 +127,7 @@ def test_the_voyage_is_the_same_whoever_asks_and_in_what_order(transit):
 def test_a_vessel_on_station_turns_to_an_ordered_heading_in_place(tmp_path):
     """The semisubmersible held on station: a heading order from 250 to 280 deg turns her at the DP rate (10
     deg/min) about her own origin; she does not move, and she takes no helm or engine orders."""
-    scenario = load_scenario(ROOT / "configs" / "training" / "helideck_landing.toml")
+    scenario = load_scenario(ROOT / "configs" / "semisub_swell.toml")
     sim = Simulation(scenario, wake=False)
     sim.order(course_deg=280.0)
     record = sim.frame(np.arange(0.0, 600.0, 1.0))

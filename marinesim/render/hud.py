@@ -44,6 +44,8 @@ orbit camera puts the vessel in the middle of the picture, and the charts must n
 AXIS_FLOOR = 0.1
 """The smallest half-range of a chart's y axis, in the chart's unit (m, deg): a flat signal stays flat."""
 
+FOOTPRINT_MIN_WIDTH = 960
+"""The narrowest target (px) the footprint plot is drawn on: the DP line and the offset chart tell the rest."""
 TEXT_COLOR = (0.95, 0.95, 0.95, 1.0)
 DIM_TEXT_COLOR = (0.65, 0.68, 0.72, 1.0)
 PANEL_COLOR = (0.0, 0.0, 0.0, 0.55)
@@ -249,7 +251,8 @@ class Hud:
         the top-centre, below the top panels if they leave no room between them; ``banners`` along the
         bottom, right of the charts, the first lowest (the middle of the picture, where the orbit camera puts
         the vessel, stays free); ``slider`` along the bottom, right of the charts (:meth:`slider_rect`);
-        ``footprint`` a square position plot at the right, under the criteria panel (:meth:`_footprint`).
+        ``footprint`` a square position plot at the right, under the criteria panel (:meth:`_footprint`), on a
+        target at least :data:`FOOTPRINT_MIN_WIDTH` wide (on a smaller one it would cover the vessel).
         Charts that would take more than :data:`CHART_SHARE` of the height are left out (the last first), all of
         them while a banner has no room beside them, and a line longer than the target is wide is cut with ``~``.
 
@@ -283,7 +286,7 @@ class Hud:
             if right_x < 2 * self.margin + left[0]:  # no room beside the text block: under it, on the left (the
                 right_x, right_y = self.margin, 2 * self.margin + left[1]  # middle, the vessel's, stays free)
             self._text_block(base, right_x, right_y, rows, self.pad, PANEL_COLOR)
-        if footprint is not None:
+        if footprint is not None and width >= FOOTPRINT_MIN_WIDTH:
             side = 2 * self.chart_size[1]
             below = right_y + right[1] + self.margin if panel and right_y == self.margin else self.margin
             self._footprint(base, footprint, width - self.margin - side, below, side)

@@ -22,8 +22,8 @@ from marinesim.gl import is_software
 from marinesim.render import CAMERAS, HUDS
 from marinesim.render.camera import BridgeCamera, FreeCamera, OrbitCamera
 from marinesim.render.clock import FrameClock
-from marinesim.render.hud import (ALARM_COLOR, LEVEL_COLORS, Banner, Footprint, Hud, Slider, StripChart,
-                                  StripHistory, font_px_for)
+from marinesim.render.hud import (ALARM_COLOR, FOOTPRINT_MIN_WIDTH, LEVEL_COLORS, Banner, Footprint, Hud, Slider,
+                                  StripChart, StripHistory, font_px_for)
 from marinesim.render.renderer import Renderer, RenderOptions
 from marinesim.scenario import Scenario
 from marinesim.session.exercise import Exercise, quiet
@@ -151,7 +151,7 @@ class Scene:
                 self.hud.release()
                 self.hud = Hud(self.ctx, font_px_for(size))
             if self.panels:
-                lines, panel = self.hud_lines(), self.criteria_panel()
+                lines, panel = self.hud_lines(size[0]), self.criteria_panel()
             else:
                 lines, panel = self.strip_lines(size[0]), self.criteria_strip()
             self.hud.draw(size, lines, self.charts(), help_lines, panel, self.exercise.messages(), self.banners(),
@@ -263,7 +263,9 @@ class Scene:
                 f"{c['rpm']:.0f} rpm {engine}  SOG {c['speed_over_ground_kn']:.1f} kn  "
                 f"COG {c['course_over_ground_deg']:05.1f}")
 
-    def hud_lines(self) -> list[str]:
+    def hud_lines(self, width: int | None = None) -> list[str]:
+        """The panels' text block; a vessel keeping station adds her DP line on a target ``width`` px wide enough
+        for it beside the vessel (:data:`~marinesim.render.hud.FOOTPRINT_MIN_WIDTH`; None: always)."""
         lines = self.sim.describe()[:1]
         pose = self.sim.pose()
         if self.sim.vessel is not None:
@@ -272,7 +274,7 @@ class Scene:
             lines.append(f"surge {m[0]:+6.2f}  sway {m[1]:+6.2f}  heave {m[2]:+6.2f} m")
             lines.append(f"roll {math.degrees(m[3]):+6.2f}  pitch {math.degrees(m[4]):+6.2f}  "
                          f"yaw {math.degrees(m[5]):+6.2f} deg")
-            if self.sim.station is not None:
+            if self.sim.station is not None and (width is None or width >= FOOTPRINT_MIN_WIDTH):
                 lines.append(self.station_line())
         if self.sim.vessel is not None and self.renderer.mesh is None:
             lines.append(NOT_DRAWN)

@@ -57,6 +57,8 @@ MAX_CRITERIA = 64
 MAX_MESSAGE = 500
 """The most characters in an event's message."""
 MAX_RAIN_MM_H = 200.0
+FOOTPRINT_M = 5.0
+"""The footprint the plots draw when a scenario gives none (m)."""
 MAX_CURRENT_M_S = 5.0
 """The strongest current a scenario may set (m/s: 10 kn, beyond any tidal race a vessel keeps station in)."""
 """The heaviest rain drawn (mm/h): cloudburst."""
@@ -560,9 +562,9 @@ class StationOptions(Section):
     pull_kn: Annotated[float, Quantity("kN", ge=0.0, le=5000.0)] = Field(
         0.0, description="moored: a constant pull astern on her own engines, as a shuttle tanker keeps her hawser "
                          "taut (20 to 50 t)")
-    footprint_m: Annotated[float, Quantity("m", gt=0.0, le=500.0)] = Field(
-        5.0, description='the alarm radius around the set point: a criterion "footprint" (offset_max_m) unless '
-                         "the scenario names one")
+    footprint_m: Annotated[float | None, Quantity("m", gt=0.0, le=500.0)] = Field(
+        None, description='the alarm radius around the set point: a criterion "footprint" (offset_max_m) unless '
+                          f"the scenario names one; absent: no alarm, the plots' circle {FOOTPRINT_M:g} m")
 
     @model_validator(mode="after")
     def _moorings_when_moored(self) -> StationOptions:

@@ -25,9 +25,9 @@ from marinesim.manoeuvring.ship import Ship
 from marinesim.manoeuvring.station import StationKeeping
 from marinesim.resources import resource_dir
 from marinesim.scenario.ship_file import load_ship, ship_from_hull
-from marinesim.scenario.model import (HULL_OPTIONS, VISUAL_MESH_OPTIONS, WAVE_PARAMETERS, WEATHER, CriterionOptions,
-                                      EnvironmentOptions, EventOptions, OceanOptions, RunOptions, ScenarioFile,
-                                      SeaOptions, StationOptions, VesselOptions, validate, wind_of)
+from marinesim.scenario.model import (FOOTPRINT_M, HULL_OPTIONS, VISUAL_MESH_OPTIONS, WAVE_PARAMETERS, WEATHER,
+                                      CriterionOptions, EnvironmentOptions, EventOptions, OceanOptions, RunOptions,
+                                      ScenarioFile, SeaOptions, StationOptions, VesselOptions, validate, wind_of)
 from marinesim.scenario.moorings_file import load_moorings
 from marinesim.scenario.station_file import StationFile, load_station
 from marinesim.station.dp import Dp
@@ -186,7 +186,8 @@ class StationSetup:
 
     @property
     def footprint_m(self) -> float:
-        return self.options.footprint_m
+        """The footprint's radius (m): the scenario's alarm radius, else the plots' :data:`FOOTPRINT_M`."""
+        return self.options.footprint_m if self.options.footprint_m is not None else FOOTPRINT_M
 
 
 def load_scenario(path: str | Path) -> Scenario:
@@ -231,7 +232,8 @@ def _build(path: Path, file: ScenarioFile) -> Scenario:
         vessel = dataclasses.replace(vessel, ship=_station_vessel(station, vessel))
     events = tuple(_event(f"events[{i}]", e, depth, vessel) for i, e in enumerate(file.events))
     criteria = tuple(_criterion(c) for c in file.criteria)
-    if station is not None and not any(c.quantity in STATION_QUANTITIES for c in criteria):
+    if station is not None and station.options.footprint_m is not None and not any(
+            c.quantity in STATION_QUANTITIES for c in criteria):
         taken = {c.label for c in criteria}
         name = FOOTPRINT if FOOTPRINT not in taken else f"{FOOTPRINT} {station.footprint_m:g} m"
         criteria += (Criterion("offset_max_m", station.footprint_m, name=name),)

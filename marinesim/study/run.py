@@ -17,6 +17,7 @@ import numpy as np
 
 from marinesim import __version__
 from marinesim.criteria import spectral
+from marinesim.criteria.quantities import STATION_QUANTITIES
 from marinesim.errors import ParameterError, ScenarioError
 from marinesim.scenario import Scenario
 from marinesim.sea.kinds import BREAKING_DEPTH_RATIO, BREAKING_STEEPNESS
@@ -51,7 +52,9 @@ class Study:
 
     @property
     def criteria(self):
-        return self.scenario.criteria
+        """The scenario's criteria on the wave-frequency motions: a station-keeping footprint is the simulation's
+        (her low-frequency excursions), not the spectra's."""
+        return motion_criteria(self.scenario)
 
     @property
     def names(self) -> list[str]:
@@ -63,14 +66,19 @@ class Study:
         return SeaState((WaveSystem(spectrum, math.radians(heading_deg), self.system.spreading),), self.depth_m)
 
 
+def motion_criteria(scenario: Scenario) -> tuple:
+    """``scenario``'s criteria less a station-keeping vessel's (:data:`STATION_QUANTITIES`)."""
+    return tuple(c for c in scenario.criteria if c.quantity not in STATION_QUANTITIES)
+
+
 def prepare(scenario: Scenario, scatter_path: Path, headings_deg: np.ndarray, duration_h: float) -> Study:
     """The study of ``scenario`` over the scatter file at ``scatter_path``; refuses a scenario without a
     vessel, a criterion without a limit, or a sea without a spectrum."""
     if scenario.vessel is None:
         raise ScenarioError(f"{scenario.path}: an operability study needs a [vessel]")
-    if not scenario.criteria:
+    if not motion_criteria(scenario):
         raise ScenarioError(f"{scenario.path}: no [[criteria]]: nothing limits the operation")
-    unlimited = [c.label for c in scenario.criteria if c.limit is None]
+    unlimited = [c.label for c in motion_criteria(scenario) if c.limit is None]
     if unlimited:
         raise ScenarioError(f"{scenario.path}: criteria without a limit: {', '.join(unlimited)}")
     systems = scenario.sea.spectral_systems
