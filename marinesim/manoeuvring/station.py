@@ -1,10 +1,10 @@
 """A vessel without a manoeuvring model: kept on station, or on a steady passage.
 
-Until dynamic positioning is modelled (thrusters, observer, environment), a vessel kept on station (the
-semisubmersible) holds her position exactly, and a heading order turns her at no more than ``rate_limit`` about
-her own origin, the rate of turn following the autopilot's reference model
-(:mod:`marinesim.manoeuvring.autopilot`): ``r -> clip(omega (course - psi), +-rate_limit)`` with
-``time_constant_s``. A vessel under way with no model (no hull, no manoeuvring file) keeps the scenario's course
+A vessel kept on station this way (``manoeuvring = "station"``; a scenario's ``[station]`` puts her on dynamic
+positioning or moorings under the weather instead: :mod:`marinesim.station`) holds her position exactly, and a
+heading order turns her at no more than ``rate_limit`` about her own origin, the rate of turn following the
+autopilot's reference model (:mod:`marinesim.manoeuvring.autopilot`): ``r -> clip(omega (course - psi),
++-rate_limit)`` with ``time_constant_s``. A vessel under way with no model (no hull, no manoeuvring file) keeps the scenario's course
 and speed and takes no orders. Axes as :mod:`marinesim.manoeuvring.state`.
 """
 
@@ -37,7 +37,7 @@ class StationKeeping:
     def describe(self) -> str:
         if self.speed > 0.0:
             return "no manoeuvring model: a steady course and speed"
-        return "on station: position held, heading by order (no dynamic positioning yet)"
+        return "on station: position held exactly, heading by order (a [station] puts her on DP or moorings)"
 
     @property
     def label(self) -> str:
