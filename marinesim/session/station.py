@@ -21,7 +21,7 @@ from marinesim.manoeuvring.voyage import Voyage
 from marinesim.sea.ocean import Components
 from marinesim.station.drift import SlowDrift
 from marinesim.station.environment import Weather, current_vector
-from marinesim.station.vessel import EXTRA, Station
+from marinesim.station.vessel import Station
 from marinesim.station.wind import Gusts
 from marinesim.vessel.response import Response, Track
 
