@@ -43,7 +43,11 @@ CONVENTIONS = ("body frame x forward, y port, z up, origin at the RAO reference 
                "the bow (manoeuvring heading less the yaw); course_over_ground_deg, speed_over_ground_kn, "
                "drift_angle_deg (heading less course, + bow to starboard of the track): the manoeuvring motion's; "
                "rate_of_turn_deg_min, rudder_deg, rudder_order_deg: positive to starboard; propeller_rpm: negative "
-               "astern (docs/CONVENTIONS.md)")
+               "astern; a vessel keeping station: set_point_offset_m, north_of_set_point_m, east_of_set_point_m her "
+               "origin from her DP set point (moored: her start), wind_speed_m_s and wind_from_deg the wind at 10 m "
+               "she feels (gusts in), wind_force_x_kn, wind_force_y_kn, wind_moment_knm its load (x forward, y to "
+               "starboard, the moment turning the bow to starboard), thruster_<name>_pct each thruster's thrust in "
+               "% of its rating, line_<name>_tension_kn each mooring line's fairlead tension (docs/CONVENTIONS.md)")
 """What the columns mean, as the sidecar states it."""
 OUTSIDE_TABLE = ("share of each DOF's displacement variance (sum |H a|^2 / 2 over the wave components) from wave "
                  "frequencies below the RAO table (the long-wave model) and above it (the RAO tapered to zero at "
