@@ -12,6 +12,7 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from datetime import timedelta
+from pathlib import Path
 from typing import Annotated, Any, Literal, TypeVar, get_args, get_origin
 
 from pydantic import (AfterValidator, AwareDatetime, BaseModel, ConfigDict, Field, ValidationError, WrapValidator,
@@ -24,8 +25,8 @@ from marinesim.criteria.monitor import (CAUTION, MAX_WINDOW_ROWS, Criterion, che
                                        parse_condition, watched)
 from marinesim.criteria.quantities import QUANTITIES, STATION_QUANTITIES
 from marinesim.criteria.sickness import MAX_WF_DT_S
-from marinesim.errors import ParameterError, ScenarioError
-from marinesim.formats import extensions, formats
+from marinesim.errors import FileFormatError, ParameterError, ScenarioError
+from marinesim.formats import check_file, extensions, formats
 from marinesim.hull.mesh import UNITS
 from marinesim.manoeuvring.actuators import TELEGRAPH
 from marinesim.sea.seastate import SeaState
@@ -675,6 +676,18 @@ class ScenarioFile(Section):
 
 
 M = TypeVar("M", bound=BaseModel)
+
+
+def read_small_file(path: Path, what: str, max_bytes: int) -> bytes:
+    """The bytes of the ``what`` at ``path`` (a regular file of at most ``max_bytes``: a scenario's side file, read
+    whole), or :class:`ScenarioError` naming it."""
+    try:
+        check_file(path, what)
+        if path.stat().st_size > max_bytes:
+            raise FileFormatError(path, None, f"more than {max_bytes} bytes: not a {what}")
+        return path.read_bytes()
+    except (FileFormatError, OSError) as error:
+        raise ScenarioError(str(error)) from None
 
 
 def validate(model: type[M], data: Any, where: str = "") -> M:

@@ -21,9 +21,8 @@ from typing import Annotated
 from pydantic import AfterValidator, Field, model_validator
 from pydantic_core import PydanticCustomError
 
-from marinesim import formats
-from marinesim.errors import FileFormatError, MarinesimError, ScenarioError
-from marinesim.scenario.model import Quantity, Section, _expecting, _refuse, validate
+from marinesim.errors import MarinesimError, ScenarioError
+from marinesim.scenario.model import Quantity, Section, _expecting, _refuse, read_small_file, validate
 from marinesim.station.moorings import DIAMETER_RANGE_M, Line, Moorings, materials
 
 MAX_FILE_BYTES = 1 << 20
@@ -120,13 +119,7 @@ def load_moorings(path: Path, depth: float) -> Moorings:
     """Read, validate and build the mooring file ``path`` in water ``depth`` (m). Errors (:class:`ScenarioError`)
     name the file and the key, or the line."""
     path = Path(path)
-    try:
-        formats.check_file(path, "mooring file")
-        if path.stat().st_size > MAX_FILE_BYTES:
-            raise FileFormatError(path, None, f"more than {MAX_FILE_BYTES} bytes: not a mooring file")
-        data = path.read_bytes()
-    except (FileFormatError, OSError) as error:
-        raise ScenarioError(str(error)) from None
+    data = read_small_file(path, "mooring file", MAX_FILE_BYTES)
     return _load(str(path), hashlib.sha256(data).hexdigest(), data, float(depth))
 
 

@@ -17,10 +17,9 @@ from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
-from marinesim import formats
 from marinesim.constants import KNOT, G
 from marinesim.hull import Hull, hydrostatics
-from marinesim.errors import FileFormatError, MarinesimError, ParameterError, ScenarioError
+from marinesim.errors import MarinesimError, ParameterError, ScenarioError
 from marinesim.manoeuvring.actuators import SOLAS_RUDDER_DEG, SOLAS_RUDDER_RATE_DEG_S, TELEGRAPH, Engine, SteeringGear
 from marinesim.manoeuvring.autopilot import tuned
 from marinesim.manoeuvring.clarke import Clarke
@@ -28,7 +27,7 @@ from marinesim.manoeuvring.container import SonNomotoContainer
 from marinesim.manoeuvring.mmg import Mmg
 from marinesim.manoeuvring.ship import Ship
 from marinesim.manoeuvring.trials import hard_over
-from marinesim.scenario.model import MAX_SPEED_KN, Quantity, Section, _refuse, validate
+from marinesim.scenario.model import MAX_SPEED_KN, Quantity, Section, _refuse, read_small_file, validate
 
 MAX_FILE_BYTES = 1 << 20
 """The largest manoeuvring file read (bytes)."""
@@ -275,13 +274,7 @@ def load_ship(path: str | Path) -> tuple[ShipFile, Ship]:
     """Read, validate and build the manoeuvring file ``path``; a model unstable at hard-over from its approach speed
     is refused. Errors (:class:`ScenarioError`) name the file and the key."""
     path = Path(path)
-    try:
-        formats.check_file(path, "manoeuvring file")
-        if path.stat().st_size > MAX_FILE_BYTES:
-            raise FileFormatError(path, None, f"more than {MAX_FILE_BYTES} bytes: not a manoeuvring file")
-        data = path.read_bytes()
-    except (FileFormatError, OSError) as error:
-        raise ScenarioError(str(error)) from None
+    data = read_small_file(path, "manoeuvring file", MAX_FILE_BYTES)
     return _load(str(path), hashlib.sha256(data).hexdigest(), data)
 
 

@@ -20,10 +20,9 @@ from typing import Annotated, Literal
 import numpy as np
 from pydantic import Field, model_validator
 
-from marinesim import formats
 from marinesim.constants import G
-from marinesim.errors import FileFormatError, MarinesimError, ScenarioError
-from marinesim.scenario.model import Quantity, Section, _refuse, validate
+from marinesim.errors import MarinesimError, ScenarioError
+from marinesim.scenario.model import Quantity, Section, _refuse, read_small_file, validate
 from marinesim.station.dp import Tuning
 from marinesim.station.thrusters import KINDS, Thruster, Thrusters
 
@@ -147,13 +146,7 @@ def load_station(path: str | Path) -> StationFile:
     """Read and validate the station-keeping file ``path``; errors (:class:`ScenarioError`) name the file and the
     key."""
     path = Path(path)
-    try:
-        formats.check_file(path, "station-keeping file")
-        if path.stat().st_size > MAX_FILE_BYTES:
-            raise FileFormatError(path, None, f"more than {MAX_FILE_BYTES} bytes: not a station-keeping file")
-        data = path.read_bytes()
-    except (FileFormatError, OSError) as error:
-        raise ScenarioError(str(error)) from None
+    data = read_small_file(path, "station-keeping file", MAX_FILE_BYTES)
     return _load(str(path), hashlib.sha256(data).hexdigest(), data)
 
 
