@@ -399,46 +399,32 @@ class Simulation:
 
     def _along(self, index: int, times: np.ndarray, dt: float | None) -> np.ndarray:
         """Set ``index``'s response at ``times``: straight runs by :class:`Response`, manoeuvres by
-        :func:`~marinesim.vessel.along.linear_along`."""
+        :func:`~marinesim.vessel.along.linear_along`, a vessel keeping station on her heading
+        (:meth:`_along_station`)."""
         out = np.empty((times.size, 19 + len(self.vessel.points)))
         if not times.size:
             return out
-        vessel = self.vessel
         if self.station is not None:
-            return self._along_station(index, times, dt)
+            return self._along_station(index, times, dt, out)
+        vessel = self.vessel
         for lo, hi, run in self.voyage.runs(times):
             if run is None:
                 out[lo:hi] = linear_along(vessel.rao, self.components(index), vessel.points, self.voyage.path,
                                           times[lo:hi])
-                continue
-            response = self._straight_response(index, run)
-            if dt is None or hi - lo < 2:
-                out[lo:hi] = response.linear(times[lo:hi])
             else:
-                out[lo:hi] = np.concatenate([o for _, o in response.linear_steps(float(times[lo]), dt, hi - lo)])
+                out[lo:hi] = _linear(self._straight_response(index, run), times[lo:hi], dt)
         return out
 
-    def _along_station(self, index: int, times: np.ndarray, dt: float | None) -> np.ndarray:
-        """Set ``index``'s response for a vessel keeping station: on her heading of each time, to the nearest
-        :data:`STATION_HEADING_DEG`, at rest at the set point (her excursions, metres, hardly shift the waves'
-        phases)."""
-        vessel = self.vessel
+    def _along_station(self, index: int, times: np.ndarray, dt: float | None, out: np.ndarray) -> np.ndarray:
+        """Set ``index``'s response into ``out`` for a vessel keeping station: on her heading of each time, to the
+        nearest :data:`STATION_HEADING_DEG`, at rest at the set point (her excursions, metres, hardly shift the
+        waves' phases)."""
         headings = np.round(np.degrees(self.voyage.path(times).heading) / STATION_HEADING_DEG) * STATION_HEADING_DEG
-        out = np.empty((times.size, 19 + len(vessel.points)))
         bounds = np.r_[0, np.flatnonzero(np.diff(headings)) + 1, times.size]
         for lo, hi in zip(bounds[:-1], bounds[1:]):
-            key = (index, "station", float(headings[lo]))
-            response = self._straight.get(key)
-            if response is None:
-                response = Response(vessel.rao, self.components(index), Track(math.radians(key[2]), 0.0),
-                                    vessel.points, strict=False)
-                if len(self._straight) >= RESPONSES_KEPT:
-                    self._straight.pop(next(iter(self._straight)))
-                self._straight[key] = response
-            if dt is None or hi - lo < 2:
-                out[lo:hi] = response.linear(times[lo:hi])
-            else:
-                out[lo:hi] = np.concatenate([o for _, o in response.linear_steps(float(times[lo]), dt, hi - lo)])
+            heading = float(headings[lo])
+            response = self._kept((index, "station", heading), index, Track(math.radians(heading), 0.0))
+            out[lo:hi] = _linear(response, times[lo:hi], dt)
         return out
 
     def _straight_response(self, index: int, run: ShipPath | None) -> Response:
@@ -450,13 +436,16 @@ class Simulation:
             run = self.voyage.path(np.array([0.0]))
         t0 = float(run.times[0])
         heading, speed = float(run.heading[0]), float(run.speed[0])
-        key = (index, t0, float(run.x[0]), float(run.y[0]), heading, speed)
+        x0, y0 = float(run.x[0]) - speed * math.cos(heading) * t0, float(run.y[0]) - speed * math.sin(heading) * t0
+        return self._kept((index, t0, float(run.x[0]), float(run.y[0]), heading, speed), index,
+                          Track(heading, speed, x0, y0))
+
+    def _kept(self, key: tuple, index: int, track: Track) -> Response:
+        """Set ``index``'s response on ``track``, kept by ``key`` (the :data:`RESPONSES_KEPT` newest)."""
         response = self._straight.get(key)
         if response is None:
-            x0, y0 = float(run.x[0]) - speed * math.cos(heading) * t0, float(run.y[0]) - speed * math.sin(heading) * t0
             vessel = self.vessel
-            response = Response(vessel.rao, self.components(index), Track(heading, speed, x0, y0), vessel.points,
-                                strict=False)
+            response = Response(vessel.rao, self.components(index), track, vessel.points, strict=False)
             if len(self._straight) >= RESPONSES_KEPT:
                 self._straight.pop(next(iter(self._straight)))
             self._straight[key] = response
@@ -556,6 +545,13 @@ class Simulation:
             lines.append(f"speed {self.speed_m_s / KNOT:4.1f} kn   heading {self.heading_deg:5.1f} deg   "
                          + self.wake_status())
         return lines
+
+
+def _linear(response: Response, times: np.ndarray, dt: float | None) -> np.ndarray:
+    """``response``'s linear outputs at ``times`` (s; a grid of step ``dt`` where given: the block product)."""
+    if dt is None or times.size < 2:
+        return response.linear(times)
+    return np.concatenate([o for _, o in response.linear_steps(float(times[0]), dt, times.size)])
 
 
 def record_columns(points: dict[str, tuple[float, float, float]], ship=None) -> list[str]:
