@@ -104,18 +104,12 @@ class Thrusters:
             hi += [top] * t.width
         return np.array(lo), np.array(hi)
 
-    def stuck(self, name: str, direction: float) -> np.ndarray:
-        """The virtual forces (m,) of thruster ``name`` stuck at full thrust towards ``direction`` (rad, body: 0
-        ahead, pi/2 to starboard; a tunnel or main propeller takes the sign of its own axis), the others zero."""
+    def stuck(self, name: str) -> np.ndarray:
+        """The virtual forces (m,) of thruster ``name`` stuck at full thrust along its own axis (a main propeller or
+        an azimuth ahead, a tunnel thruster to starboard), the others zero."""
         f = np.zeros(self.width)
         i = self.index(name)
-        t, part = self.units[i], self.slices()[i]
-        if t.kind == "azimuth":
-            f[part] = t.max_thrust * math.cos(direction), t.max_thrust * math.sin(direction)
-        elif t.kind == "main":
-            f[part] = t.max_thrust if math.cos(direction) >= 0.0 else -t.astern * t.max_thrust
-        else:
-            f[part] = math.copysign(t.max_thrust, math.sin(direction))
+        f[self.slices()[i].start] = self.units[i].max_thrust  # an azimuth's first virtual force is its Fx
         return f
 
     def allocate(self, tau: np.ndarray, lost: frozenset[str] = frozenset(),

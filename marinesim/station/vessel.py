@@ -43,6 +43,16 @@ EXTRA = ("z_north", "z_east", "z_psi", "xi1_north", "xi1_east", "xi1_psi", "xi2_
 (wave model, estimated position and velocity, bias: :meth:`Dp.observe`), the set point the reference model has
 reached, the position reference's drift (m, a fault) and the wind feed-forward (N, N, N m: the wind sensor's
 load, filtered over :data:`WIND_FILTER_S`); then the virtual thrust forces (N)."""
+
+
+def _span(first: str, last: str) -> slice:
+    return slice(EXTRA.index(first), EXTRA.index(last) + 1)
+
+
+INTEGRAL, OBSERVER, BIAS = _span("z_north", "z_psi"), _span("xi1_north", "b_psi"), _span("b_north", "b_psi")
+SET_POINT, REFERENCE_DRIFT = _span("ref_north", "ref_psi"), _span("drift_north", "drift_east")
+FEED_FORWARD = _span("ff_x", "ff_n")
+"""Where the DP computer's states lie in ``extra``: the observer's in :meth:`Dp.observe`'s order."""
 WIND_FILTER_S = 10.0
 """The DP's wind feed-forward follows the measured wind's load with this time constant (s): a gust shorter than
 it moves her before her thrusters answer, as on a real DP."""
@@ -107,6 +117,7 @@ class Station:
         if self.thrusters is None and self.moorings is None:
             raise ParameterError(f"{self.name}: a vessel keeping station needs thrusters (DP) or moorings")
         object.__setattr__(self, "_m_inv", np.linalg.inv(np.asarray(self.m, float)))
+        object.__setattr__(self, "_d", np.asarray(self.d, float))
 
     @property
     def label(self) -> str:
@@ -132,16 +143,13 @@ class Station:
         extra[EXTRA.index("eta_psi")] = extra[EXTRA.index("ref_psi")] = psi
         if self.dp is not None:
             env = self.environment
-            cn, ce = env.current(0.0)
-            current = np.asarray(self.d, float) @ np.array([cn * math.cos(psi) + ce * math.sin(psi),
-                                                             -cn * math.sin(psi) + ce * math.cos(psi), 0.0])
+            current = np.asarray(self.d, float) @ _in_body(env.current(0.0), psi)
             load = env.loads(0.0, 0.0, 0.0, psi, 0.0, 0.0, 0.0) + current
-            turn = rotation(psi)
-            at = EXTRA.index
-            extra[at("b_north"):at("b_psi") + 1] = turn @ load
-            extra[at("z_north"):at("z_psi") + 1] = turn @ (load - env.wind_load(0.0, psi, 0.0, 0.0)) / self.dp.ki
             wind = env.wind_load(0.0, psi, 0.0, 0.0)
-            extra[at("ff_x"):at("ff_n") + 1] = wind
+            turn = rotation(psi)
+            extra[BIAS] = turn @ load
+            extra[INTEGRAL] = turn @ (load - wind) / self.dp.ki
+            extra[FEED_FORWARD] = wind
             extra[len(EXTRA):] = self.thrusters.allocate(-load)
         return ShipState(psi=psi, extra=tuple(extra.tolist())), Orders(autopilot=self.dp is not None, course=psi,
                                                                        engine=self.label.lower())
@@ -197,7 +205,7 @@ class Station:
         f_order, lag = f_now, None
         if self.dp is not None:
             f_order, lag, extra[:n_dp] = self._dp_cycle(s, orders, extra[:n_dp], f_now, h, t)
-        m_inv, d, env = self._m_inv, np.asarray(self.d, float), self.environment
+        m_inv, d, env = self._m_inv, self._d, self.environment
 
         def thrust(tau: float) -> np.ndarray:
             if lag is None:
@@ -206,10 +214,9 @@ class Station:
 
         def rates(tau: float, y: np.ndarray) -> np.ndarray:
             north, east, psi, u, v, r = y
-            cn, ce = env.current(t + tau)
             c, sn = math.cos(psi), math.sin(psi)
-            nu_r = np.array([u - (cn * c + ce * sn), v - (-cn * sn + ce * c), r])
-            force = thrust(tau) + env.loads(t + tau, north, east, psi, u, v, r) - d @ nu_r
+            force = thrust(tau) + env.loads(t + tau, north, east, psi, u, v, r) - d @ (
+                np.array([u, v, r]) - _in_body(env.current(t + tau), psi))
             if self.pull:
                 force = force - np.array([self.pull, 0.0, 0.0])
             if lines is not None:
@@ -233,24 +240,23 @@ class Station:
         """One cycle of the DP computer at ``t``: (the thrusters' orders (m,), their time constants (m,), its
         states ``h`` s on (len(EXTRA),))."""
         computer, thrusters, env = self.dp, self.thrusters, self.environment
-        z, est, ref, drift, feed = dp[0:3], dp[3:18], dp[18:21], dp[21:23], dp[23:26]
+        z, est, ref, drift, feed = dp[INTEGRAL], dp[OBSERVER], dp[SET_POINT], dp[REFERENCE_DRIFT], dp[FEED_FORWARD]
         wave = env.wave_motion(t)
         measured = np.array([s.north + wave[0] + drift[0], s.east + wave[1] + drift[1], s.psi + wave[2]])
         tau = computer.command(est, ref, z, feed)
         lost = frozenset(f.partition(":")[2] for f in orders.faults if f.startswith("thruster:"))
-        stuck = {name: thrusters.stuck(name, 0.0 if thrusters.units[thrusters.index(name)].kind != "tunnel"
-                                       else 0.5 * math.pi)
+        stuck = {name: thrusters.stuck(name)
                  for name in (f.partition(":")[2] for f in orders.faults if f.startswith("drive-off:"))}
         f_order = thrusters.allocate(tau, lost - stuck.keys(), stuck)
         saturated = np.any(np.abs(thrusters.b @ f_order - tau) > 1e-3 * np.abs(tau).max() + 1.0)
         out = dp.copy()
-        out[3:18] = computer.observe(est, measured, thrusters.b @ f_now, h)
+        out[OBSERVER] = computer.observe(est, measured, thrusters.b @ f_now, h)
         if not saturated:
-            out[0:3] = z + h * computer.error(est, ref)
-        out[18:21] = computer.reference(ref, (orders.north, orders.east, _unwrapped(orders.course, ref[2])), h)
+            out[INTEGRAL] = z + h * computer.error(est, ref)
+        out[SET_POINT] = computer.reference(ref, (orders.north, orders.east, _unwrapped(orders.course, ref[2])), h)
         if "reference drift" in orders.faults:
-            out[21] = drift[0] + REFERENCE_DRIFT_M_S * h
-        out[23:26] = feed + (env.wind_load(t, s.psi, s.u, s.v) - feed) * (1.0 - math.exp(-h / WIND_FILTER_S))
+            out[REFERENCE_DRIFT.start] = drift[0] + REFERENCE_DRIFT_M_S * h
+        out[FEED_FORWARD] = feed + (env.wind_load(t, s.psi, s.u, s.v) - feed) * (1.0 - math.exp(-h / WIND_FILTER_S))
         return f_order, thrusters.lag(), out
 
     def _lines(self, faults: frozenset[str]) -> Moorings | None:
@@ -282,10 +288,14 @@ class Station:
     def set_point(self, extra: np.ndarray) -> np.ndarray:
         """The set point the reference model has reached (T, 3: north m, east m, psi rad) from ``extra`` (T, k)."""
         extra = np.atleast_2d(extra)
-        at = EXTRA.index("ref_north")
         if self.dp is None:
             return np.zeros((len(extra), 3))
-        return extra[:, at:at + 3]
+        return extra[:, SET_POINT]
+
+
+def _in_body(current: tuple[float, float], psi: float) -> np.ndarray:
+    """A current (north, east m/s) in body axes on heading ``psi`` (rad): (u_c, v_c, 0)."""
+    return rotation(psi).T @ np.array([current[0], current[1], 0.0])
 
 
 def _unwrapped(course: float, near: float) -> float:
