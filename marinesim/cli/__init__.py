@@ -15,11 +15,12 @@ from typing import NoReturn
 
 from marinesim import __version__
 from marinesim.atomic import inputs_kept, signals_held
-from marinesim.cli import (assess, capability, export, hull, operability, rao, render, replay, report, run, sea,
-                           trials, wake)
+from marinesim.cli import (assess, capability, examples, export, hull, operability, rao, render, replay, report, run,
+                           sea, trials, wake)
 from marinesim.errors import MarinesimError
 
-COMMANDS = (run, render, export, assess, replay, report, trials, capability, operability, rao, hull, wake, sea)
+COMMANDS = (run, examples, render, export, assess, replay, report, trials, capability, operability, rao, hull, wake,
+            sea)
 """The command modules, in the order ``--help`` lists them."""
 
 

@@ -18,7 +18,7 @@ def add(commands: argparse._SubParsersAction) -> None:
         description="Render a scenario without a window (EGL). A video gets the motions over its length "
         "beside it (the same file `marinesim export --duration SECONDS` writes).",
     )
-    p.add_argument("scenario", type=Path, help="scenario TOML file")
+    p.add_argument("scenario", nargs="?", type=Path, help="scenario TOML file (default: the shipped default.toml)")
     p.add_argument("--out", type=Path, help="video file (.mp4); its motions go beside it as .csv")
     p.add_argument("--seconds", type=float, default=20.0, help="video length, s of simulated time (default 20)")
     p.add_argument("--fps", type=float, default=30.0, help="frames per second (default 30)")
@@ -33,12 +33,13 @@ def add(commands: argparse._SubParsersAction) -> None:
 def handle(args: argparse.Namespace) -> int:
     from marinesim.progress import reporting
     from marinesim.render.offscreen import parse_size, render_video, screenshot
+    from marinesim.resources import default_scenario
     from marinesim.scenario import load_scenario
 
     size = parse_size(args.size)
     if (args.out is None) == (args.screenshot is None):
         raise ParameterError("give either --out VIDEO.mp4 or --screenshot SHOT.png")
-    scenario = load_scenario(args.scenario)
+    scenario = load_scenario(args.scenario or default_scenario())
     refuse_overwriting(args.screenshot, "--screenshot")
     refuse_overwriting(args.out, "--out")
     refuse_overwriting(None if args.out is None else args.out.with_suffix(".csv"), "--out", sidecar=True)

@@ -24,6 +24,7 @@ from marinesim.hull import Hull, VisualMesh, hydrostatics, load_hull, load_visua
 from marinesim.manoeuvring.ship import Ship
 from marinesim.manoeuvring.station import StationKeeping
 from marinesim.resources import resource_dir
+from marinesim.scenario import examples
 from marinesim.scenario.ship_file import load_ship, ship_from_hull
 from marinesim.scenario.model import (FOOTPRINT_M, HULL_OPTIONS, VISUAL_MESH_OPTIONS, WAVE_PARAMETERS, WEATHER,
                                       CriterionOptions, EnvironmentOptions, EventOptions, OceanOptions, RunOptions,
@@ -191,8 +192,9 @@ class StationSetup:
 
 
 def load_scenario(path: str | Path) -> Scenario:
-    """Read and validate ``path``; raise :class:`ScenarioError` naming the file and the key."""
-    path = Path(path)
+    """Read and validate ``path`` (a file, or a shipped scenario by name: ``crane_lift``); raise
+    :class:`ScenarioError` naming the file and the key."""
+    path = examples.resolve(path)
     try:
         formats.check_file(path, "scenario file")
         data = tomllib.loads(path.read_text(encoding="utf-8-sig"))  # a byte-order mark is no TOML error
@@ -203,7 +205,7 @@ def load_scenario(path: str | Path) -> Scenario:
     except RecursionError:  # tomllib reads nested arrays and tables recursively
         raise ScenarioError(f"{path}: not valid TOML: arrays or tables nested too deeply") from None
     try:
-        return _build(path, validate(ScenarioFile, data))
+        return build_scenario(path, validate(ScenarioFile, data))
     except ScenarioError as error:
         raise ScenarioError(f"{path}: {error}") from None
 
@@ -216,7 +218,9 @@ def with_run(scenario: Scenario, duration: float | None = None, dt: float | None
     return dataclasses.replace(scenario, run=run)
 
 
-def _build(path: Path, file: ScenarioFile) -> Scenario:
+def build_scenario(path: Path, file: ScenarioFile) -> Scenario:
+    """The scenario of the validated ``file``, its relative paths read from the folder of ``path`` (the scenario
+    file, or where a scenario made from options is saved)."""
     depth = math.inf if file.ocean.depth_m is None else file.ocean.depth_m
     vessel = None if file.vessel is None else _vessel(path, file.vessel)
     if vessel is not None:
@@ -309,15 +313,19 @@ def _station_vessel(setup: StationSetup, vessel: Vessel) -> Station:
     return Station(setup.file.name, m, d, Calm(), thrusters, dp, setup.moorings, setup.options.pull_kn * 1e3)
 
 
-def _named_file(scenario: Path, name: str, folder: str) -> Path:
-    """A shipped file by its name (``configs/<folder>/<name>.toml``), else the file ``name`` relative to the
-    scenario."""
+def _named_file(scenario: Path, name: str, folder: str, expected: str = "a shipped file") -> Path:
+    """The side file ``name`` of a scenario: a bare name (no folder, no ``.toml``) is ``<folder>/<name>.toml`` of the
+    scenario's own configuration tree (beside the scenario or its folder, as ``configs/`` ships and as ``marinesim
+    examples copy`` lays out a copy, so that a copy's edits count), else of the shipped ones; anything else is a file
+    relative to the scenario. ``expected`` says what a bare name may be, in the error that none is."""
+    if "/" in name or "\\" in name or name.endswith(".toml"):
+        return _file(scenario, name)
+    here = scenario.resolve().parent
+    for root in (here, here.parent, resource_dir("configs")):
+        if (root / folder / f"{name}.toml").is_file():
+            return root / folder / f"{name}.toml"
     shipped = sorted(p.stem for p in (resource_dir("configs") / folder).glob("*.toml"))
-    if name in shipped:
-        return resource_dir("configs") / folder / f"{name}.toml"
-    if "/" not in name and "\\" not in name and not name.endswith(".toml"):
-        raise ScenarioError(f"{name!r}: expected a shipped file ({', '.join(shipped)}) or a file (.toml)")
-    return _file(scenario, name)
+    raise ScenarioError(f"{name!r}: expected {expected} ({', '.join(shipped)}) or a file (.toml)")
 
 
 def _sea(where: str, options: list[SeaOptions], depth: float, whole: str) -> SeaState:
@@ -426,25 +434,13 @@ def _ship(path: Path, options: VesselOptions, hull: Hull | None, speed: float) -
             raise ScenarioError(f"a vessel held on station has no speed: vessel.speed_kn is {options.speed_kn:g}")
         return StationKeeping("the vessel")
     if options.manoeuvring is not None:
-        _, ship = load_ship(_ship_file(path, options.manoeuvring))
+        _, ship = load_ship(_named_file(path, options.manoeuvring, "vessels", '"station", a shipped vessel'))
     elif hull is not None:
         ship = ship_from_hull(Path(options.hull).stem, hull, speed)
     else:
         return StationKeeping("the vessel", speed)
     ship.rps_for_speed(speed)
     return ship
-
-
-def _ship_file(scenario: Path, name: str) -> Path:
-    """A shipped vessel's manoeuvring file by its name (``configs/vessels/<name>.toml``), else the file ``name``
-    relative to the scenario."""
-    shipped = sorted(p.stem for p in (resource_dir("configs") / "vessels").glob("*.toml"))
-    if name in shipped:
-        return resource_dir("configs") / "vessels" / f"{name}.toml"
-    if "/" not in name and "\\" not in name and not name.endswith(".toml"):
-        raise ScenarioError(f"{name!r}: expected \"station\", a shipped vessel ({', '.join(shipped)}) or a "
-                            "manoeuvring file (.toml)")
-    return _file(scenario, name)
 
 
 def _mesh(path: Path, options: VesselOptions, key: str, names: dict[str, str],
