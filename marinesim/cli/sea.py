@@ -6,13 +6,8 @@ import argparse
 import math
 from pathlib import Path
 
-from marinesim.cli.common import json_text
+from marinesim.cli.common import add_sea_options, json_text, wave_systems
 from marinesim.errors import ParameterError
-from marinesim.sea.kinds import APPLIES_TO, SPECTRUM_TYPES, SPREADING_TYPES, refusal
-
-DEFAULTS = {"hs": 3.0, "tp": 9.0, "fetch_km": 100.0, "height": 2.0, "period": 10.0}
-"""The wave-system options' defaults, each given only to the kinds of wave system that take it."""
-
 
 NEEDS = ("marinesim.sea", "marinesim.sea.build", "marinesim.sea.summary")
 """The modules the command loads before it starts (Ctrl-C is held until they are in)."""
@@ -24,34 +19,10 @@ def add(commands: argparse._SubParsersAction) -> None:
         "mean direction from the spectrum and measured on the surface. Directions are compass "
         "degrees the waves come FROM.",
     )
-    g = p.add_argument_group("wave system")
-    g.add_argument("--spectrum", choices=SPECTRUM_TYPES, default="jonswap", help="spectrum type (default jonswap)")
-    g.add_argument("--hs", type=float, help="significant wave height, m (default 3)")
-    g.add_argument("--tp", type=float, help="peak period, s (default 9)")
-    g.add_argument("--gamma", type=float, help="JONSWAP peak enhancement (default: DNV from Hs, Tp)")
-    g.add_argument("--u10", type=float, help="wind speed at 10 m, m/s: JONSWAP from wind and fetch")
-    g.add_argument("--fetch-km", type=float, help="fetch, km (with --u10; default 100)")
-    g.add_argument("--height", type=float, help="regular wave height, m (default 2)")
-    g.add_argument("--period", type=float, help="regular wave period, s (default 10)")
-    g.add_argument("--from-deg", type=float, default=0.0, help="compass direction waves come from (default 0)")
-    g.add_argument("--spreading", choices=SPREADING_TYPES,
-                   help="directional spreading (default cos2s with --spreading-s, else long-crested)")
-    g.add_argument("--spreading-s", type=float,
-                   help="spreading exponent: s of cos-2s, s at the peak for mitsuyasu, n for cos2n-halfplane")
-    s = p.add_argument_group("swell (a second system, JONSWAP)")
-    s.add_argument("--swell-hs", type=float, help="swell Hs, m (adds a swell system)")
-    s.add_argument("--swell-tp", type=float, default=14.0, help="swell peak period, s (default 14)")
-    s.add_argument("--swell-gamma", type=float, help="swell peak enhancement (default: DNV)")
-    s.add_argument("--swell-from-deg", type=float, default=0.0, help="compass direction the swell comes from")
-    s.add_argument("--swell-spreading-s", type=float, help="cos-2s s of the swell (default long-crested)")
-    o = p.add_argument_group("ocean")
-    o.add_argument("--depth", type=float, default=math.inf, help="water depth, m (default infinite)")
-    o.add_argument("--tiles", type=int, default=4, help="number of FFT cascades (default 4)")
-    o.add_argument("--resolution", type=int, default=256, help="samples per tile side N, a power of two (default 256)")
+    o = add_sea_options(p)["ocean"]
     o.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
     o.add_argument("--deterministic-amplitudes", action="store_true",
                    help="amplitudes sqrt(2 S dk^2) with random phases instead of complex Gaussian")
-    o.add_argument("--choppiness", type=float, default=1.0, help="horizontal displacement factor (default 1)")
     o.add_argument("--time", type=float, default=0.0, help="time of the surface measurement, s (default 0)")
     out = p.add_argument_group("output")
     out.add_argument("--json", action="store_true", help="print the summary as one JSON object")
@@ -65,16 +36,11 @@ def sea_from_args(args: argparse.Namespace):
     from marinesim.sea import SeaState
     from marinesim.sea.build import wave_system
 
-    given = {name: getattr(args, name) for name in APPLIES_TO if getattr(args, name, None) is not None}
-    for name, value in DEFAULTS.items():
-        if name not in given and refusal(args.spectrum, name, given) is None:
-            given[name] = value
-    systems = [wave_system(args.spectrum, from_deg=args.from_deg, depth=args.depth, **given)]
-    if args.swell_hs is not None:
+    wave, *swell = wave_systems(args)
+    systems = [wave_system(depth=args.depth, **wave)]
+    for system in swell:
         try:
-            systems.append(wave_system("jonswap", from_deg=args.swell_from_deg, hs=args.swell_hs,
-                                       tp=args.swell_tp, gamma=args.swell_gamma,
-                                       spreading_s=args.swell_spreading_s))
+            systems.append(wave_system(**system))
         except ParameterError as error:
             raise ParameterError(f"swell: {error}") from None
     return SeaState(tuple(systems), depth=args.depth)
