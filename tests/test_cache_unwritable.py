@@ -17,6 +17,7 @@ from staging import tmpfs
 
 WAKE = ["wake", str(ROOT / "hulls" / "wigley.stl"), "--speed-kn", "20", "--nx", "256", "--ny", "128", "--quiet"]
 HEADLESS_OUTPUTS = {"sea.png", "motions.csv", "motions.csv.json", "motions.png", "rao.png", "wake.png", "video.mp4"}
+"""What ``run --headless --video`` writes for a vessel with a hull at a speed whose wake is drawn."""
 
 
 @pytest.fixture(params=["file in place of the folder", "read-only file system", "full disk"])
@@ -66,7 +67,7 @@ def test_headless_run_goes_on_without_the_cache(unwritable_cache, tmp_path):
                         .replace("speed_kn = 4.0", "speed_kn = 12.0")  # Fn 0.2: a wake to compute and draw
                         .replace("tiles = 4", "tiles = 2").replace("resolution = 256", "resolution = 64"))
     done = _marinesim(["run", str(scenario), "--headless", "--duration", "1", "--out", str(tmp_path / "out"),
-                       "--quiet"], unwritable_cache, tmp_path)
+                       "--quiet", "--video"], unwritable_cache, tmp_path)
     assert done.returncode == 0, done.stderr
     _one_warning(done.stderr)
     assert {p.name for p in (tmp_path / "out").iterdir()} == HEADLESS_OUTPUTS

@@ -5,15 +5,16 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from marinesim.cli.common import add_view_options, bars, render_options
+from marinesim.cli.common import add_motion_options, add_view_options, bars, motion_scenario, render_options
 
 HEADLESS_VIDEO = {"seconds": 10.0, "size": (640, 360), "fps": 25.0}
-"""The video a headless ``run`` renders: short and small, so that a software renderer makes it in a minute."""
+"""The video a headless ``run --video`` renders: short and small, so that a software renderer makes it in about
+half a minute."""
 DESCRIBED = {"sea_plot": "the sea state picture", "motions": "the vessel's 6-DOF motions",
              "sidecar": "their metadata", "motions_plot": "a plot of the motions", "rao_plot": "the RAOs",
              "elevation": "the wave elevation at (0, 0)", "elevation_plot": "a plot of it",
              "wake_plot": "the Kelvin wake", "video": "a video of the first seconds",
-             "assessment": "the exercise's criteria and events"}
+             "assessment": "the exercise's criteria and events", "session_log": "its session log"}
 """What each file of a headless run is, as the closing lines say."""
 
 
@@ -25,17 +26,24 @@ def add(commands: argparse._SubParsersAction) -> None:
         "run", help="open the viewer on a scenario (default: the shipped configs/default.toml)",
         description="Open the viewer on a scenario: the vessel moving in the rendered sea with its wake "
         "(H in the window lists the keys). Without a display it runs headless instead: plots of the sea, "
-        "the motions and the RAOs, the motion CSV over the scenario's run, and a 10 s video, and says where "
-        "they are.",
+        "the motions and the RAOs, the motion CSV over the scenario's run (an exercise's assessment and session "
+        "log too), with --video a 10 s video, and says where they are.",
     )
-    p.add_argument("scenario", nargs="?", type=Path, help="scenario TOML file (default: the shipped default.toml)")
+    p.add_argument("scenario", nargs="?", type=Path, help="scenario TOML file (default: the shipped default.toml); "
+                                                         "or --rao FILE and the sea options")
     p.add_argument("--out", type=Path, help="output folder of a headless run (default out/<scenario name>)")
     p.add_argument("--duration", type=float, help="run length, s (default: the scenario's); the video is the "
                                                   "first 10 s of it at most")
+    p.add_argument("--dt", type=float, help="time step, s (default: the scenario's)")
+    p.add_argument("--seed", type=int, help="random seed (default: the scenario's)")
+    p.add_argument("--video", action="store_true", help="a headless run also renders the first 10 s as a "
+                                                        "640x360 video (video.mp4)")
     p.add_argument("--headless", action="store_true", help="do not open a window even if there is a display")
     p.add_argument("--quiet", action="store_true", help="no progress bar")
     p.add_argument("--log", type=Path, help="the viewer session's log, written when the window closes "
-                                            "(default sessions/<scenario name>-NNN.jsonl, the next free number)")
+                                            "(default sessions/<scenario name>-NNN.jsonl, the next free number; "
+                                            "a headless run of an exercise writes session.jsonl in its --out)")
+    add_motion_options(p, "<out>/<RAO name>.toml: the run's output folder, --out or out/<RAO name>")
     add_view_options(p)
     p.set_defaults(handler=handle)
 
@@ -43,11 +51,11 @@ def add(commands: argparse._SubParsersAction) -> None:
 def handle(args: argparse.Namespace) -> int:
     from marinesim.progress import reporting
     from marinesim.resources import default_scenario
-    from marinesim.scenario import load_scenario, with_run
     from marinesim.session.assembly import Assembly
     from marinesim.session.headless import run_headless
 
-    scenario = with_run(load_scenario(args.scenario or default_scenario()), duration=args.duration)
+    scenario = motion_scenario(args, lambda rao: (args.out or Path("out") / rao.stem) / f"{rao.stem}.toml",
+                               default_scenario(), make_folder=True)
     print(f"scenario {scenario.path}: {len(scenario.sea.systems)} wave system(s), Hs {scenario.sea.hs:.2f} m, "
           f"Tp {scenario.sea.tp:.2f} s, {scenario.run.duration_s:g} s at dt {scenario.run.dt_s:g} s, "
           f"seed {scenario.run.seed}")
@@ -76,10 +84,15 @@ def handle(args: argparse.Namespace) -> int:
         headless = run_headless(Assembly(scenario), out_dir, log=print)
         for note in headless.notes:
             print(note)
-        files = headless.files | _video(scenario, out_dir, args)
+        files = headless.files | (_video(scenario, out_dir, args) if args.video else {})
     width = max(len(DESCRIBED[key]) for key in files)
     for key, path in files.items():
         print(f"wrote {DESCRIBED[key] + ':':{width + 1}s} {path}")
+    if "session_log" in files:
+        log = files["session_log"]
+        print(f"debrief it: marinesim report {log}; replay it: marinesim replay {log} --export replay.csv")
+    if not args.video:
+        print("no video: --video adds the first 10 s as video.mp4")
     return 0
 
 

@@ -1,11 +1,13 @@
 """The headless run of a scenario: what ``marinesim run`` writes without a viewer.
 
 Into one folder: ``sea.png`` (spectrum and surface); with a vessel, ``motions.csv`` and its JSON
-sidecar ``motions.csv.json`` (as ``marinesim export``), ``motions.png`` and ``rao.png``, and with a hull and a speed
-``wake.png`` (the Kelvin wake, precomputed into the cache for every scenario speed); without one,
-``wave_elevation.csv`` (elevation at the origin), its sidecar ``wave_elevation.csv.json`` and
-``wave_elevation.png``. A scenario with criteria also gets ``assessment.json``, what ``marinesim
-assess --json`` prints; its events change the run as in the viewer.
+sidecar ``motions.csv.json`` (as ``marinesim export``), ``motions.png`` and ``rao.png``, and with a hull at a speed
+where thin-ship theory holds for it ``wake.png`` (the Kelvin wake at her speed, from the cache or computed into it;
+no wake is computed that would not be drawn); without a vessel, ``wave_elevation.csv`` (elevation at the origin),
+its sidecar ``wave_elevation.csv.json`` and ``wave_elevation.png``. An exercise (a scenario with criteria or events)
+also gets ``assessment.json``, what ``marinesim assess --json`` prints, and its session log ``session.jsonl``, which
+``marinesim replay`` and ``marinesim report`` read as they read a viewer's; its events change the run as in the
+viewer.
 Same scenario and seed: bit-identical tables. The ocean is built once, for all of them.
 """
 
@@ -18,13 +20,13 @@ from pathlib import Path
 import numpy as np
 
 from marinesim.atomic import atomic_path, json_text
-from marinesim.constants import KNOT
 from marinesim.progress import task
 from marinesim.sea.plot import plot_sea, plot_series
 from marinesim.session.assembly import Assembly
 from marinesim.session.exercise import last_row, quiet
 from marinesim.session.export import export_motions
-from marinesim.session.sidecar import run_sidecar, write_table
+from marinesim.session.log import write_log
+from marinesim.session.sidecar import column_units, run_sidecar, write_table
 from marinesim.vessel.plot import plot_motions, plot_rao
 
 ELEVATION_CHUNK = 1000
@@ -59,6 +61,9 @@ def run_headless(assembly: Assembly, out_dir: Path, log: Callable[[str], None] =
         result.files["assessment"] = out_dir / "assessment.json"
         with atomic_path(result.files["assessment"]) as temp:
             temp.write_text(json_text(export.exercise.assessment()), encoding="utf-8")
+    if scenario.criteria or scenario.events:
+        export.exercise.note("end")  # the session ran to its end: a log without this entry reads as cut short
+        result.files["session_log"] = write_log(out_dir / "session.jsonl", export.exercise)
     vessel = scenario.vessel
     with atomic_path(result.files["motions_plot"]) as temp:
         plot_motions(pd.read_csv(export.table), temp,
@@ -66,29 +71,26 @@ def run_headless(assembly: Assembly, out_dir: Path, log: Callable[[str], None] =
                      f"{vessel.heading_deg:g} deg, seed {scenario.run.seed}")
     with atomic_path(result.files["rao_plot"]) as temp:
         plot_rao(vessel.rao, temp, [180.0, 135.0, 90.0, 45.0, 0.0], vessel.speed_m_s)
-    if vessel.hull is not None and vessel.wake_speeds_m_s:
-        _wakes(assembly, out_dir, result)
+    if vessel.hull is not None:
+        _wake(assembly, out_dir, result)
     return result
 
 
-def _wakes(assembly: Assembly, out_dir: Path, result: Headless) -> None:
-    """Precompute (or read from the cache) the wakes of every scenario speed; draw the one at the vessel's."""
-    from marinesim.wake.cache import precompute_wakes
-    from marinesim.wake.compute import MIN_FROUDE, QUALITATIVE_BELOW_FROUDE
+def _wake(assembly: Assembly, out_dir: Path, result: Headless) -> None:
+    """Draw the Kelvin wake at the vessel's speed (read from the cache, or computed into it) where thin-ship theory
+    holds for her hull; below that speed none is computed, and a note says why."""
+    from marinesim.wake.cache import cached_wake
+    from marinesim.wake.compute import QUALITATIVE_BELOW_FROUDE
     from marinesim.wake.plot import plot_wake
 
-    vessel, statics = assembly.scenario.vessel, assembly.hydrostatics
-    speeds = [u for u in vessel.wake_speeds_m_s if statics.froude(u) >= MIN_FROUDE]
-    for skipped in sorted(set(vessel.wake_speeds_m_s) - set(speeds)):
-        result.notes.append(f"no wake at {skipped / KNOT:.3g} kn: Fn {statics.froude(skipped):.3f} is below {MIN_FROUDE}")
-    wakes = precompute_wakes(vessel.hull, speeds)
-    froude = statics.froude(vessel.speed_m_s)
+    vessel = assembly.scenario.vessel
+    froude = assembly.hydrostatics.froude(vessel.speed_m_s)
     if froude < QUALITATIVE_BELOW_FROUDE:
         if vessel.speed_m_s > 0:
             result.notes.append(f"no wake drawn at {vessel.speed_kn:.3g} kn: Fn {froude:.3f} is below "
                                 f"{QUALITATIVE_BELOW_FROUDE}, where thin-ship theory does not hold for this hull")
         return
-    wake = next(w for w, _ in wakes if w.info["speed_m_s"] == vessel.speed_m_s)
+    wake, _ = cached_wake(vessel.hull, vessel.speed_m_s)
     path = out_dir / "wake.png"
     with atomic_path(path) as temp:
         plot_wake(wake, temp)
@@ -113,7 +115,8 @@ def _wave_elevation(assembly: Assembly, out_dir: Path) -> dict[str, Path]:
     files["sidecar"] = write_table(
         files["elevation"],
         lambda temp: pd.DataFrame({"time_s": times, "wave_elevation_m": elevation}).to_csv(temp, index=False),
-        lambda: run_sidecar(assembly, run.duration_s, run.dt_s, components) | {"point_m": [0.0, 0.0]})
+        lambda: run_sidecar(assembly, run.duration_s, run.dt_s, components)
+        | {"point_m": [0.0, 0.0], "units": column_units(["time_s", "wave_elevation_m"])})
     with atomic_path(files["elevation_plot"]) as temp:
         plot_series(times, elevation, "elevation [m]", f"wave elevation at (0, 0), {scenario.name}, seed {run.seed}",
                     temp)
