@@ -35,7 +35,9 @@ import trimesh
 from conftest import ROOT
 
 HANG_S = 60.0
-PROGRESS = re.compile(r"\d+%\|")  # a progress bar's line (tqdm), not a message
+PROGRESS = re.compile(r"\d+%\||: (\d+% \(\d+/\d+ \w+\)|done \(\d+ \w+, [\d.]+ s\)"
+                      r"|stopped at \d+% \(\d+/\d+ \w+, [\d.]+ s\))$")
+"""A progress line, not a message: a bar's (tqdm, on a terminal) or a plain one (stderr not a terminal)."""
 VOLATILE = {"seconds", "seconds_computing", "cached"}  # what a wake's JSON may say differently from the cache
 WORKERS = 3
 PER_CATEGORY = 6

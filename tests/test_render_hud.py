@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from conftest import DEFAULT, ROOT
+from conftest import DEFAULT, ROOT, VESSEL_SCENARIO, write
 
 from marinesim.render.hud import AXIS_FLOOR, MARGIN, PAD, TRACE_COLOR, Hud, StripChart, StripHistory, axis_limit
 
@@ -261,3 +261,31 @@ def test_the_hud_leaves_the_vessel_in_view_with_an_alarm_up():
             assert red[size[1] // 2:].sum() > 20 * red[:size[1] // 2].sum(), "the alarm banner is not at the bottom"
             assert not hud[:, -2:].any(), f"{size} {name}: the HUD runs into the right edge (a line cut off)"
         assert covered["strip"] <= 0.6 * covered["panels"], covered
+
+
+def test_key_hints_are_shown_in_the_window_only(tmp_path):
+    """A headless render (a video, a screenshot) of the tanker with one criterion far above its limit (an alarm up)
+    and one far within it: no 'TAB: panels' in the strip, no 'ENTER: acknowledge' on the alarm's banner, no
+    'TAB: all' on the criteria's row; the window's scene (``interactive``, as the viewer sets it) shows all
+    three. What would be wrong: the keys of a window nobody can press were burnt into every video. The banner
+    gives the value and limit as the assessment does."""
+    from marinesim.criteria.monitor import value_and_limit
+    from marinesim.render.offscreen import Offscreen
+    from marinesim.scenario import load_scenario
+
+    criteria = '\n[[criteria]]\nname = "roll"\nquantity = "roll_max_deg"\nlimit = {limit}\nwindow_s = 10.0\n'
+    for limit, hints in ((1e-6, ("TAB: panels", "ENTER: acknowledge")), (1e6, ("TAB: panels", "TAB: all"))):
+        scenario = load_scenario(write(tmp_path, VESSEL_SCENARIO + criteria.format(limit=limit)))
+        with Offscreen(scenario, (640, 360), solver="off") as view:
+            view.go_to(5.0)
+            scene = view.scene
+
+            def shown() -> str:
+                return "\n".join(scene.strip_lines(3840) + [banner.text for banner in scene.banners()]
+                                 + [text for text, _ in scene.criteria_strip()])
+            assert len(scene.exercise.unacknowledged()) == (limit < 1.0)
+            for alarm in scene.exercise.unacknowledged():  # its value and limit in the digits that tell them apart
+                assert " > ".join(value_and_limit(alarm.value, alarm.limit)) in shown()
+            assert "TAB" not in shown() and "ENTER" not in shown(), shown()
+            scene.interactive = True
+            assert all(hint in shown() for hint in hints), shown()

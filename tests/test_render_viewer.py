@@ -84,6 +84,7 @@ def walkthrough(tmp_path: Path) -> None:
         hs = sim.sea.hs
         conning = viewer.scene.conning_line()
         assert conning.startswith("HDG 260.0  AUTO 260.0  RUD mid  ROT +0/min") and "(for 4.0 kn)" in conning, conning
+        assert "TAB: panels" in "   ".join(viewer.scene.strip_lines(3840))  # the window says what its keys do
         press(key.R, "r")                                 # record the rest of the session
         press(key.BRACKETRIGHT, "]")                      # waves up by 10 % over CHANGE_RAMP_S
         press(key.RIGHT)                                  # the helm 5 deg to starboard: hand steering, at once

@@ -1,8 +1,10 @@
 """Motion export (marinesim.session.export): the CSV is exactly the computed series and reproducible,
-Parquet holds the same table, and every shipped scenario exports."""
+Parquet holds the same table, every shipped scenario exports, and the sidecar reads on its own (units, conventions,
+paths relative to its folder)."""
 
 import json
 import math
+import re
 
 import numpy as np
 import pandas as pd
@@ -14,6 +16,7 @@ from marinesim.manoeuvring.voyage import SHIP_COLUMNS
 from marinesim.scenario import load_scenario, with_run
 from marinesim.session.assembly import Assembly
 from marinesim.session.export import export_motions
+from marinesim.session.sidecar import column_units, sha256
 from marinesim.vessel import motion_columns
 
 
@@ -64,3 +67,51 @@ def test_shipped_scenarios_load_and_export(tmp_path, config):
     result = export_motions(Assembly(with_run(scenario, duration=10.0)), tmp_path / "m.csv")
     frame = pd.read_csv(result.table)
     assert np.all(np.isfinite(frame.to_numpy())) and frame["heave_m"].std() > 0.01
+    meta = json.loads(result.sidecar.read_text())
+    assert list(meta["units"]) == list(frame.columns), "a column without its unit in the sidecar"
+    assert meta["units"]["speed_over_ground_kn"] == "kn" and meta["units"].get("wind_force_x_kn", "kN") == "kN"
+    assert not _absolute(meta), f"an absolute path in the sidecar: {_absolute(meta)}"
+
+
+def _absolute(value) -> list[str]:
+    """The strings in a sidecar that are absolute paths (POSIX, a Windows drive or share)."""
+    if isinstance(value, dict):
+        return [s for item in value.values() for s in _absolute(item)]
+    if isinstance(value, list):
+        return [s for item in value for s in _absolute(item)]
+    return [value] if isinstance(value, str) and re.match(r"/|[A-Za-z]:[\\/]|\\\\", value) else []
+
+
+def test_the_sidecar_reads_without_the_checkout_and_moves_with_its_files(tmp_path):
+    """The sidecar names the table, scenario, RAO and hull files relative to its own folder (each one resolves
+    there to the file whose hash it gives), holds no absolute path (it broke when the folder was moved or
+    shared), gives every column of the table read back its unit, and states the frames, signs and phase
+    convention itself instead of citing docs/CONVENTIONS.md, which an installed wheel does not carry."""
+    scenario = load_scenario(write(tmp_path, SCENARIO))
+    result = export_motions(Assembly(with_run(scenario, duration=10.0)), tmp_path / "out" / "m.csv")
+    meta = json.loads(result.sidecar.read_text())
+    folder = result.sidecar.parent
+    assert not _absolute(meta), _absolute(meta)
+    assert (folder / meta["file"]).resolve() == result.table.resolve()
+    assert sha256(folder / meta["file"]) == meta["data_sha256"]
+    for name, path, digest in (("scenario", meta["scenario"], meta["scenario_sha256"]),
+                               ("rao", meta["vessel"]["rao"], meta["vessel"]["rao_sha256"]),
+                               ("hull", meta["vessel"]["hull"], meta["vessel"]["hull_sha256"])):
+        assert sha256(folder / path) == digest, f"the sidecar's {name} {path} is not the file it hashed"
+    assert (folder / meta["scenario"]).resolve() == scenario.path.resolve()
+    frame = pd.read_csv(result.table)
+    assert set(frame.columns) == set(meta["units"]) and all(meta["units"].values())
+    assert meta["units"]["roll_vel_deg_s"] == "deg/s" and meta["units"]["bow_az_m_s2"] == "m/s^2"
+    assert meta["units"]["time_s"] == "s" and meta["units"]["rate_of_turn_deg_min"] == "deg/min"
+    text = result.sidecar.read_text()
+    assert "CONVENTIONS.md" not in text
+    assert {"frames", "signs", "directions", "waves", "columns"} <= set(meta["conventions"])
+    assert "leading the wave" in meta["conventions"]["waves"] and "bow down" in meta["conventions"]["signs"]
+
+
+def test_a_column_without_a_unit_in_its_name_is_refused():
+    """A column added to the record without a unit ending would be written with none in the sidecar."""
+    assert column_units(["wind_force_x_kn", "speed_over_ground_kn", "wind_moment_knm"]) == {
+        "wind_force_x_kn": "kN", "speed_over_ground_kn": "kn", "wind_moment_knm": "kN m"}
+    with pytest.raises(ValueError, match="'heading'"):
+        column_units(["heading"])

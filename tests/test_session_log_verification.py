@@ -208,20 +208,24 @@ def test_a_log_signed_on_another_installation_cannot_be_checked_here(copy, tmp_p
     assert read_log(copy).verification.verified
 
 
-def test_the_same_session_gives_the_same_log_bytes_on_every_installation(session, tmp_path, monkeypatch):
+def test_the_same_session_gives_the_same_log_bytes_on_every_installation(session, monkeypatch):
     """The key goes in the sidecar's signature only: the log written on another installation is the same bytes,
-    and on this one the sidecar is too. What would be wrong: a key (or a clock) in the log's bytes."""
+    and on this one the sidecar is too. What would be wrong: a key (or a clock) in the log's bytes. Each is written
+    where the session's was (the sidecar names its files relative to its own folder), the session's own last."""
     log, exercise = session
-    again = write_log(tmp_path / "here" / log.name, exercise)
-    assert again.read_bytes() == log.read_bytes()
-    assert again.with_name(log.name + ".json").read_bytes() == log.with_name(log.name + ".json").read_bytes()
-    monkeypatch.setenv("MARINESIM_CONFIG_DIR", str(tmp_path / "elsewhere"))
-    there = write_log(tmp_path / "there" / log.name, exercise)
-    assert there.read_bytes() == log.read_bytes()
-    here_side, there_side = (json.loads(p.with_name(log.name + ".json").read_text()) for p in (log, there))
-    assert here_side["signature"] != there_side["signature"]
+    sidecar = log.with_name(log.name + ".json")
+    original = log.read_bytes(), sidecar.read_bytes()
+    monkeypatch.setenv("MARINESIM_CONFIG_DIR", str(log.parent / "elsewhere"))
+    write_log(log, exercise)
+    there = log.read_bytes(), json.loads(sidecar.read_text())
+    monkeypatch.undo()
+    write_log(log, exercise)
+    assert (log.read_bytes(), sidecar.read_bytes()) == original
+    assert there[0] == original[0]
+    here_side = json.loads(original[1])
+    assert here_side["signature"] != there[1]["signature"]
     assert {k: v for k, v in here_side.items() if k != "signature"} == \
-           {k: v for k, v in there_side.items() if k != "signature"}
+           {k: v for k, v in there[1].items() if k != "signature"}
 
 
 def test_the_key_is_made_once_and_never_replaced(tmp_path, monkeypatch):

@@ -52,14 +52,18 @@ def handle(args: argparse.Namespace) -> int:
 def table(result: dict) -> list[str]:
     """The assessment as text lines: one per criterion, then the verdict; a run stopped early says how much of it
     ran, and the level of each criterion it could not judge is marked so."""
+    from marinesim.criteria.monitor import value_and_limit
     from marinesim.session.exercise import ran_words
 
     rows = [("criterion", "worst", "limit", "unit", "level", "above limit", "first above")]
     for c in result["criteria"]:
-        worst = "settling" if c["value"] is None else f"{c['value']:.3g}"
+        if c["value"] is None:
+            worst, limit = "settling", f"{c['limit']:.3g}"
+        else:
+            worst, limit = value_and_limit(c["value"], c["limit"])
         first = "-" if c["first_exceeded_s"] is None else f"{c['first_exceeded_s']:.0f} s"
         level = c["level"] if c["judged"] else f"{c['level']} (not judged)"
-        rows.append((c["name"], worst, f"{c['limit']:.3g}", c["unit"] or "-", level,
+        rows.append((c["name"], worst, limit, c["unit"] or "-", level,
                      f"{c['time_exceeded_s']:.0f} s", first))
     widths = [max(len(row[i]) for row in rows) for i in range(len(rows[0]))]
     lines = [f"{result['scenario']}: {result['duration_s']:g} s at dt {result['dt_s']:g} s, seed {result['seed']}"]

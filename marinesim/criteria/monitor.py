@@ -71,6 +71,17 @@ class Criterion:
         return "exceeded" if value > self.limit else "caution"
 
 
+def value_and_limit(value: float, limit: float) -> tuple[str, str]:
+    """``value`` and ``limit`` (in the criterion's unit) as text with the same significant digits: the fewest, 3
+    to 6, that tell them apart where they differ, so that a value just above its limit never reads as the limit
+    (4.004 against 4 reads 4.004, not 4)."""
+    for digits in range(3, 7):
+        shown = f"{value:.{digits}g}", f"{limit:.{digits}g}"
+        if shown[0] != shown[1] or value == limit:
+            break
+    return shown
+
+
 def default_name(quantity: str, point: str | None) -> str:
     return quantity if point is None else f"{point}.{quantity}"
 

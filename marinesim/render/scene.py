@@ -16,7 +16,7 @@ import moderngl
 import numpy as np
 
 from marinesim.angles import wave_compass_from_beta
-from marinesim.criteria.monitor import LEVELS
+from marinesim.criteria.monitor import LEVELS, value_and_limit
 from marinesim.errors import ParameterError
 from marinesim.gl import is_software
 from marinesim.render import CAMERAS, HUDS
@@ -100,6 +100,9 @@ class Scene:
         """The window's frame clock (measured frame time and real-time factor); None (a headless render):
         no clock time in the picture, so that the same scenario gives the same pixels."""
         self.status: list[str] = []
+        self.interactive = False
+        """The window's scene (set by the viewer): the HUD shows what keys do (TAB, ENTER); a headless render (a
+        video, a screenshot) shows no such hints."""
         self.replay: Replay | None = None
         """The session log the clock follows (a replay), or None (live)."""
         self.slider: Slider | None = None
@@ -185,9 +188,14 @@ class Scene:
         for alarm in self.exercise.unacknowledged():
             state = "" if alarm.cleared_s is None else " (back within limit)"
             background = ALARM_COLOR if bright else (0.45, 0.04, 0.04, 0.92)
-            out.append(Banner(f"ALARM  {alarm.name}: {alarm.value:.3g} > {alarm.limit:.3g}{state}   "
-                              f"ENTER: acknowledge", background))
+            value, limit = value_and_limit(alarm.value, alarm.limit)
+            out.append(Banner(f"ALARM  {alarm.name}: {value} > {limit}{state}" + self.hint("ENTER: acknowledge"),
+                              background))
         return out
+
+    def hint(self, keys: str) -> str:
+        """``keys`` (what a key does) after three spaces, in the window; nothing in a headless render."""
+        return f"   {keys}" if self.interactive else ""
 
     def criteria_panel(self, levels: tuple[str, ...] = LEVELS) -> list[tuple[str, str]]:
         """(text, level) rows of the criteria panel, those at ``levels``: name, latest value / limit and unit,
@@ -197,9 +205,11 @@ class Scene:
         readings = [reading for reading in self.exercise.readings() if reading[2] in levels]
         width = max((len(c.label) for c, _, _ in readings), default=0)
         for criterion, value, level in readings:
-            shown = ("      --" if value is None else f"{0:8d}" if abs(value) < 1e-4 * abs(criterion.limit)
-                     else f"{value:8.3g}")
-            rows.append((f"{criterion.label:<{width}}  {shown} / {criterion.limit:<6.3g}"
+            if value is None or abs(value) < 1e-4 * abs(criterion.limit):
+                shown, limit = "--" if value is None else "0", f"{criterion.limit:.3g}"
+            else:
+                shown, limit = value_and_limit(value, criterion.limit)
+            rows.append((f"{criterion.label:<{width}}  {shown:>8} / {limit:<6}"
                          f"{criterion.measure.unit:<8}{level}", level))
         return rows
 
@@ -211,7 +221,7 @@ class Scene:
         if alert or not levels:
             return alert
         counts = ", ".join(f"{levels.count(level)} {level}" for level in LEVELS if level in levels)
-        return [(f"criteria: {counts}   TAB: all", max(levels, key=LEVELS.index))]
+        return [(f"criteria: {counts}" + self.hint("TAB: all"), max(levels, key=LEVELS.index))]
 
     def strip_lines(self, width: int) -> list[str]:
         """The compact strip for a target ``width`` px wide: time, sea, course, motions, camera, weather, clock
@@ -228,7 +238,9 @@ class Scene:
         segments.append(self.weather_line())
         if self.clock is not None:
             segments.append(self.clock.line())
-        lines = self.hud.pack(segments + ["TAB: panels"] + self.status, width)
+        if self.interactive:
+            segments.append("TAB: panels")
+        lines = self.hud.pack(segments + self.status, width)
         if sim.vessel is not None and self.renderer.mesh is None:
             lines.append(NOT_DRAWN)
         return lines

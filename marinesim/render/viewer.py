@@ -120,6 +120,7 @@ class Viewer:
     def _new_scene(self) -> Scene:
         scene = Scene(*self._scene_args, log=print)
         scene.clock = FrameClock()
+        scene.interactive = True
         if self.replay_log is not None:
             scene.replay = Replay(scene.exercise, self.replay_log)
         return scene

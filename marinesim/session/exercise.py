@@ -34,7 +34,7 @@ from typing import Any
 
 import numpy as np
 
-from marinesim.criteria.monitor import Criterion, Monitor, Tally, watched
+from marinesim.criteria.monitor import Criterion, Monitor, Tally, value_and_limit, watched
 from marinesim.errors import ParameterError
 from marinesim.progress import task
 from marinesim.scenario import Scenario
@@ -79,7 +79,8 @@ class Alarm:
     cleared_s: float | None = None
 
     def line(self) -> str:
-        return f"t {self.raised_s:7.1f} s  ALARM {self.name}: {self.value:.3g} above the limit {self.limit:.3g}"
+        value, limit = value_and_limit(self.value, self.limit)
+        return f"t {self.raised_s:7.1f} s  ALARM {self.name}: {value} above the limit {limit}"
 
 
 CHANGE_KEYS = frozenset({"hs_factor", "tp_factor", "turn_waves_deg", "speed_kn", "heading_deg", "ramp_s"})

@@ -3,7 +3,8 @@
 The rows come from the run as an exercise (:class:`~marinesim.session.exercise.Exercise`): the
 scenario's events change the sea, speed and heading as they do in the viewer and in ``assess``.
 
-Columns and sidecar as docs/CONVENTIONS.md ("Time series and files"). The table streams to
+Columns and sidecar as docs/CONVENTIONS.md ("Time series and files"); the sidecar carries each column's unit and
+the conventions needed to read them (:data:`CONVENTIONS`). The table streams to
 disk in blocks, so memory stays flat with duration; it and its sidecar are written to temporary
 files renamed into place together at the end (:func:`~marinesim.session.sidecar.write_table`), so
 an interrupted export leaves the previous pair or the new one, never a partial file or a mix.
@@ -28,27 +29,39 @@ from marinesim.scenario.model import MAX_ROWS
 from marinesim.progress import Bar, task
 from marinesim.session.assembly import Assembly
 from marinesim.session.exercise import Exercise, last_row, quiet
-from marinesim.session.sidecar import run_sidecar, sha256, write_table
+from marinesim.session.sidecar import column_units, run_sidecar, sha256, write_table
 from marinesim.session.timeline import Simulation, record_columns
 
 FORMATS = ("csv", "parquet")
 EXTENSIONS = {".csv": "csv", ".parquet": "parquet", ".pq": "parquet"}
 """The table format an export file's extension implies."""
-CONVENTIONS = ("body frame x forward, y port, z up, origin at the RAO reference point; "
-               "roll/pitch/yaw positive about x/y/z (pitch bow down, yaw bow to port), degrees; "
-               "points: position in the steady vessel frame, R = Rz(yaw) Ry(pitch) Rx(roll); "
-               "<point>_relative_m = point's vertical motion minus the incident wave elevation there; "
-               "wave_elevation_m: incident wave at the reference point; roll_deg includes the heel of a turn; "
-               "north_m, east_m: the manoeuvring model's origin from the start; heading_deg: compass heading of "
-               "the bow (manoeuvring heading less the yaw); course_over_ground_deg, speed_over_ground_kn, "
-               "drift_angle_deg (heading less course, + bow to starboard of the track): the manoeuvring motion's; "
-               "rate_of_turn_deg_min, rudder_deg, rudder_order_deg: positive to starboard; propeller_rpm: negative "
-               "astern; a vessel keeping station: set_point_offset_m, north_of_set_point_m, east_of_set_point_m her "
-               "origin from her DP set point (moored: her start), wind_speed_m_s and wind_from_deg the wind at 10 m "
-               "she feels (gusts in), wind_force_x_kn, wind_force_y_kn, wind_moment_knm its load (x forward, y to "
-               "starboard, the moment turning the bow to starboard), thruster_<name>_pct each thruster's thrust in "
-               "% of its rating, line_<name>_tension_kn each mooring line's fairlead tension (docs/CONVENTIONS.md)")
-"""What the columns mean, as the sidecar states it."""
+CONVENTIONS = {
+    "frames": "Earth frame: x east, y north, z up, origin on the mean free surface. Body frame: x forward, y to port, "
+              "z up, origin at the RAO reference point (vessel.rao_reference_point_m). A named point's position "
+              "(<point>_x_m, _y_m, _z_m) is in the steady vessel frame (the body frame carried along the ship's track "
+              "without the wave motions): (surge, sway, heave) + R p, R = Rz(yaw) Ry(pitch) Rx(roll), p its body "
+              "position (vessel.points_m).",
+    "signs": "surge forward, sway to port, heave up; roll, pitch and yaw right-handed about x, y and z: roll starboard "
+             "down, pitch bow down, yaw bow to port; roll_deg includes the heel of a turn. rudder_deg, "
+             "rudder_order_deg and rate_of_turn_deg_min are positive to starboard; drift_angle_deg is heading less "
+             "course over ground (+ bow to starboard of the track); propeller_rpm is negative astern.",
+    "directions": "compass degrees, clockwise from north (0 north, 90 east): heading_deg the bow's (the manoeuvring "
+                  "heading less the yaw), course_over_ground_deg, wind_from_deg where the wind comes from.",
+    "waves": "wave_elevation_m is the incident wave at the reference point, up from the mean free surface: "
+             "Re{a exp(i w t)} summed over the wave components. A motion responds as Re{H a exp(i w t)} with H its "
+             "RAO: a positive phase of H is a response leading the wave (WAMIT's convention); <point>_relative_m is "
+             "the point's vertical motion less the incident wave elevation at its mean position.",
+    "columns": "one row per time step dt_s from time_s 0; north_m, east_m: the manoeuvring model's origin from the "
+               "start; course_over_ground_deg, speed_over_ground_kn and drift_angle_deg are the manoeuvring "
+               "motion's (the wave-frequency surge and sway have columns of their own). A vessel keeping station: "
+               "set_point_offset_m, north_of_set_point_m, east_of_set_point_m her origin from her DP set point "
+               "(moored: her start); wind_speed_m_s and wind_from_deg the wind at 10 m she feels (gusts in); "
+               "wind_force_x_kn, wind_force_y_kn, wind_moment_knm its load (x forward, y to starboard, the moment "
+               "turning the bow to starboard); thruster_<name>_pct each thruster's thrust in % of its rating; "
+               "line_<name>_tension_kn each mooring line's fairlead tension.",
+}
+"""What the columns mean, as the sidecar states it (from docs/CONVENTIONS.md, which the sidecar's reader may not
+have)."""
 OUTSIDE_TABLE = ("share of each DOF's displacement variance (sum |H a|^2 / 2 over the wave components) from wave "
                  "frequencies below the RAO table (the long-wave model) and above it (the RAO tapered to zero at "
                  "1.5 times its highest frequency), per leg of the run from its start time")
@@ -110,24 +123,27 @@ def export_motions(assembly: Assembly, out: Path, file_format: str | None = None
 
 
 def motions_sidecar(exercise: Exercise, rows: int, duration_s: float) -> dict:
-    """What a motion table's sidecar says after its format: its rows and columns, what they mean, the run
-    (:func:`run_sidecar`), the vessel's files and course, the share of the response from outside the RAO table
-    (:func:`outside_table`), the events that happened and the live actions."""
+    """What a motion table's sidecar says after its format: its rows and columns, their units and what they mean,
+    the run (:func:`run_sidecar`), the vessel's files (paths made relative by
+    :func:`~marinesim.session.sidecar.write_table`) and course, the share of the response from outside the RAO
+    table (:func:`outside_table`), the events that happened and the live actions."""
     assembly = exercise.sim.assembly
     scenario = assembly.scenario
     vessel, rao, response = scenario.vessel, scenario.vessel.rao, assembly.response
+    columns = record_columns(vessel.points, vessel.ship)
     return {
         "rows": rows,
-        "columns": record_columns(vessel.points, vessel.ship),
+        "columns": columns,
+        "units": column_units(columns),
         "conventions": CONVENTIONS,
         **run_sidecar(assembly, duration_s, scenario.run.dt_s, response.components),
         "vessel": {
-            "rao": str(vessel.rao_path),
+            "rao": vessel.rao_path,
             "rao_sha256": sha256(vessel.rao_path),
             "rao_format": rao.source_format,
             "rao_notes": list(rao.notes),
             "rao_reference_point_m": list(rao.reference_point),
-            "hull": str(vessel.hull_path) if vessel.hull_path else None,
+            "hull": vessel.hull_path,
             "hull_sha256": sha256(vessel.hull_path) if vessel.hull_path else None,
             "speed_kn": vessel.speed_kn,
             "heading_deg": vessel.heading_deg,

@@ -138,7 +138,7 @@ def write_log(path: Path, exercise: Exercise) -> Path:
         paths = {"scenario": scenario.path} | vessel_files(scenario)
         hashes = {"scenario": head["scenario_sha256"]} | head["vessel_sha256"]
         return {"format": FORMAT, "entries": len(exercise.journal), "end_s": exercise.sim.time,
-                "files": {key: {"path": str(p), "sha256": hashes[key]} for key, p in paths.items()}} | signed
+                "files": {key: {"path": p, "sha256": hashes[key]} for key, p in paths.items()}} | signed
 
     Path(path).parent.mkdir(parents=True, exist_ok=True)
     write_table(Path(path), lambda temp: temp.write_bytes(data), describe)

@@ -4,21 +4,16 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
-from typing import Mapping
+from typing import TYPE_CHECKING, Mapping
 
 import numpy as np
 
+from marinesim.constants import KNOT
 from marinesim.vessel.rao import DOFS, ROTATIONS, RaoTable
 from marinesim.vessel.summary import resonance_periods
 
-
-def _pyplot():
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    return plt
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
 
 
 PERIOD_SHOWN_S = 30.0
@@ -35,44 +30,64 @@ def period_axis_end(table: RaoTable) -> float:
     return min(max(PERIOD_SHOWN_S, 1.5 * max(resonances, default=0.0)), longest)
 
 
-def plot_rao(table: RaoTable, path: Path, headings_deg: list[float], speed: float = 0.0) -> None:
-    """Amplitude (m/m, deg/m) and phase (deg, lead) of all six DOFs against period (to
-    :func:`period_axis_end`), one curve per relative heading (deg, waves towards: 180 head seas), at ``speed``
-    (m/s)."""
-    plt = _pyplot()
+PHASE_SHOWN_FROM = 0.05
+"""An RAO's phase is drawn where its amplitude is at least this fraction of the DOF's peak over the headings
+plotted: the phase of a response near zero is noise."""
+
+
+def rao_figure(table: RaoTable, headings_deg: list[float], speed_m_s: float = 0.0) -> Figure:
+    """Amplitude (m/m, deg/m) and phase (deg, lead) of all six DOFs against period (to :func:`period_axis_end`), one
+    curve per relative heading (deg, waves towards: 180 head seas), at ``speed_m_s`` (m/s; the title gives kn).
+    The phase is unwrapped along frequency from the long waves and drawn only where the amplitude reaches
+    :data:`PHASE_SHOWN_FROM` of the DOF's peak."""
+    from matplotlib.figure import Figure
+    from matplotlib.ticker import MaxNLocator
+
     omega = np.geomspace(table.omega[0], table.omega[-1], 400)
     period = 2 * math.pi / omega
-    fig, axes = plt.subplots(6, 2, figsize=(11, 14), sharex=True)
-    for heading in headings_deg:
-        h = table(omega, np.full(omega.size, math.radians(heading)), speed)
-        for j, dof in enumerate(DOFS):
-            scale = 180 / math.pi if j in ROTATIONS else 1.0
-            axes[j, 0].plot(period, np.abs(h[:, j]) * scale, label=f"{heading:g} deg")
-            amp = np.abs(h[:, j])
-            phase = np.where(amp > 0.01 * amp.max(), np.degrees(np.angle(h[:, j])), np.nan)  # noise where ~0
+    h = np.array([table(omega, np.full(omega.size, math.radians(heading)), speed_m_s) for heading in headings_deg])
+    peak = np.abs(h).max(axis=(0, 1))
+    fig = Figure(figsize=(11, 14))
+    axes = fig.subplots(6, 2, sharex=True)
+    for i, heading in enumerate(headings_deg):
+        for j in range(len(DOFS)):
+            amp = np.abs(h[i, :, j])
+            axes[j, 0].plot(period, amp * (180 / math.pi if j in ROTATIONS else 1.0), label=f"{heading:g} deg")
+            shown = amp >= PHASE_SHOWN_FROM * peak[j]
+            phase = np.full(omega.size, np.nan)
+            phase[shown] = np.degrees(np.unwrap(np.angle(h[i, shown, j])))
             axes[j, 1].plot(period, phase, lw=0.8)
     for j, dof in enumerate(DOFS):
         axes[j, 0].set_ylabel(f"{dof} [{'deg/m' if j in ROTATIONS else 'm/m'}]")
         axes[j, 1].set_ylabel(f"{dof} phase [deg]")
-        axes[j, 1].set_ylim(-180, 180)
+        axes[j, 1].yaxis.set_major_locator(MaxNLocator(nbins=8, steps=[1.8, 4.5, 9.0]))
         for ax in axes[j]:
             ax.grid(alpha=0.3)
     axes[0, 0].legend(title="heading (180 = head)", fontsize=8)
+    axes[0, 0].set_title("amplitude", fontsize=9)
+    axes[0, 1].set_title(f"phase lead, unwrapped; where the amplitude is {PHASE_SHOWN_FROM:.0%} of the DOF's peak "
+                         "or more", fontsize=9)
     for ax in axes[-1]:
         ax.set_xlabel("wave period [s]")
         ax.set_xlim(0.0, period_axis_end(table))
-    fig.suptitle(f"RAOs: {Path(table.source).name} ({table.source_format}), {speed:.3g} m/s")
+    fig.suptitle(f"RAOs: {Path(table.source).name} ({table.source_format}), {speed_m_s / KNOT:.3g} kn")
     fig.tight_layout()
-    fig.savefig(path, dpi=90, format="png")
-    plt.close(fig)
+    return fig
+
+
+def plot_rao(table: RaoTable, path: Path, headings_deg: list[float], speed_m_s: float = 0.0) -> None:
+    """:func:`rao_figure` as a PNG at ``path`` (``speed_m_s`` in m/s)."""
+    rao_figure(table, headings_deg, speed_m_s).savefig(path, dpi=90, format="png")
 
 
 def plot_motions(frame: Mapping[str, np.ndarray], path: Path, title: str) -> None:
     """Wave elevation, heave, roll and pitch against time (columns of a motion frame)."""
-    plt = _pyplot()
+    from matplotlib.figure import Figure
+
     rows = [("wave_elevation_m", "wave elevation [m]"), ("heave_m", "heave [m]"), ("roll_deg", "roll [deg]"),
             ("pitch_deg", "pitch [deg]")]
-    fig, axes = plt.subplots(len(rows), 1, figsize=(12, 9), sharex=True)
+    fig = Figure(figsize=(12, 9))
+    axes = fig.subplots(len(rows), 1, sharex=True)
     for ax, (column, label) in zip(axes, rows):
         ax.plot(frame["time_s"], frame[column], lw=0.7)
         ax.set_ylabel(label)
@@ -81,4 +96,3 @@ def plot_motions(frame: Mapping[str, np.ndarray], path: Path, title: str) -> Non
     axes[0].set_title(title)
     fig.tight_layout()
     fig.savefig(path, dpi=90, format="png")
-    plt.close(fig)
