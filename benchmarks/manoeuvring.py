@@ -1,4 +1,4 @@
-"""Benchmark: own-ship dynamics (issue 34).
+"""Benchmark: own-ship dynamics.
 
 1. The manoeuvring step per frame: the S175 (4 DOF) and the KVLCC2 (MMG) in a hard-over turn, the viewer's
    clock moving 1/60 s a frame (the voyage steps at 0.1 s, so one frame in six steps the ship): the mean time a

@@ -1,4 +1,4 @@
-"""Benchmark: update of all ocean fields for 4 cascades x 256^2 per frame (issue 2).
+"""Benchmark: update of all ocean fields for 4 cascades x 256^2 per frame.
 
 Prints milliseconds per update and the ratio to the floor: the same batch of planned pyfftw
 inverse transforms (4 per tile, one plan on every CPU) timed alone. Two ways of calling:

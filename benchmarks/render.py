@@ -1,4 +1,4 @@
-"""Benchmark: the viewer's frame, with the cascades synthesised on the CPU and on the GPU (issues 6, 23).
+"""Benchmark: the viewer's frame, with the cascades synthesised on the CPU and on the GPU.
 
 The underway default scenario (the WAMIT tanker at 14 kn, so the Kelvin wake is drawn) with
 4 x 256^2 cascades, the wake, optionally the 512^2 local solver (``--solver``), orbit camera, HUD on;

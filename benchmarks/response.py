@@ -1,4 +1,4 @@
-"""Benchmark: vessel response for one hour at 20 Hz, and the memory of long streaming exports (issue 3).
+"""Benchmark: vessel response for one hour at 20 Hz, and the memory of long streaming exports.
 
 1. The default scenario's components (99.9 % of the elevation variance), 72,000 steps, 6 DOF
    displacement/velocity/acceleration + 3 points + wave elevations: seconds for the linear

@@ -1,4 +1,4 @@
-"""Benchmark: local wave solver sub-steps per second at 256^2, 512^2 and 1024^2 (issue 5).
+"""Benchmark: local wave solver sub-steps per second at 256^2, 512^2 and 1024^2.
 
 For each grid size: the GPU solver on whatever OpenGL 4.3 context EGL gives (a real GPU when
 there is one, Mesa's llvmpipe otherwise) and the NumPy reference in the same run, both stepping a

@@ -1,4 +1,4 @@
-"""Benchmark: a vessel keeping station (issue 39).
+"""Benchmark: a vessel keeping station.
 
 1. The DP vessel's share of a 60 Hz frame: the supply vessel on DP in configs/supply_dp.toml's weather (gusts,
    current, the DP computer, the measured wave motion), the clock moving 1/60 s a frame (a 0.1 s step every sixth

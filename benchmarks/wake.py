@@ -1,4 +1,4 @@
-"""Benchmark: the Kelvin wake of the WAMIT tanker at 15 kn on a 1024 x 2048 field (issue 4).
+"""Benchmark: the Kelvin wake of the WAMIT tanker at 15 kn on a 1024 x 2048 field.
 
 1. Seconds for A(theta) (Michell resistance quadrature plus the samples the field interpolates)
    and for the field, best of ``--repeats``; the whole ``compute_wake`` call, Kelvin-angle and

@@ -1,15 +1,18 @@
-"""Debian's Chromium, headless, for the tests that look at a page as a person would: a screenshot of a
-file:// page and its DOM once the page's scripts ran. Chromium must be installed (``.ci/run`` installs
-it); a test that needs it fails, never skips, where it is missing."""
+"""Chromium, headless, for the tests that look at a page as a person would: a screenshot of a file:// page and its
+DOM once the page's scripts ran. Found as ``$CHROMIUM``, else by its usual names on the PATH (Debian's ``chromium``,
+Ubuntu's ``chromium-browser``, Google's ``google-chrome``); the README's test command installs Debian's where none is
+found, as ``.ci/run`` does. A test that needs it fails, never skips, where it is missing."""
 
 from __future__ import annotations
 
+import os
 import shutil
 import subprocess
 import tempfile
 from pathlib import Path
 
-CHROMIUM = shutil.which("chromium") or "/usr/bin/chromium"
+NAMES = ("chromium", "chromium-browser", "google-chrome", "google-chrome-stable")
+CHROMIUM = os.environ.get("CHROMIUM") or next(filter(None, map(shutil.which, NAMES)), "/usr/bin/chromium")
 FLAGS = ("--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
          "--disable-background-networking", "--disable-component-update", "--disable-sync",
          "--disable-default-apps", "--disable-extensions", "--mute-audio", "--hide-scrollbars",
@@ -22,7 +25,8 @@ TIMEOUT_S = 120.0
 def _run(args: list[str], timeout: float = TIMEOUT_S) -> subprocess.CompletedProcess:
     """Chromium with :data:`FLAGS` and a fresh profile of its own, then ``args``; raises if it fails."""
     if not Path(CHROMIUM).exists():
-        raise FileNotFoundError(f"{CHROMIUM} is missing: apt-get install chromium")
+        raise FileNotFoundError(f"no Chromium: none of {', '.join(NAMES)} is on the PATH and $CHROMIUM is not set "
+                                f"(apt-get install chromium)")
     with tempfile.TemporaryDirectory(prefix="chromium-profile-") as profile:
         return subprocess.run([CHROMIUM, *FLAGS, f"--user-data-dir={profile}", *args], capture_output=True,
                               text=True, timeout=timeout, check=True, stdin=subprocess.DEVNULL)

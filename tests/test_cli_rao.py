@@ -34,7 +34,7 @@ def test_rao_reports_limits_and_resonances_plots_and_refuses_bad_input(tmp_path)
 
 def test_the_rao_plot_shows_the_periods_where_the_waves_and_the_resonances_are():
     """The tanker's table runs to 160 s: its plot ends at 30 s, where the 5-25 s of ocean waves fill the axis
-    (issue 22: the useful band was squeezed into the left edge); the semisubmersible's pitch resonance near 37 s
+    (not squeezed into the left edge); the semisubmersible's pitch resonance near 37 s
     keeps its plot running past it (1.5 times the period)."""
     from marinesim.vessel import read_rao
     from marinesim.vessel.plot import period_axis_end

@@ -162,7 +162,7 @@ def streak_foam(scenario, wind_m_s: float) -> np.ndarray:
 def test_a_rising_wind_lays_more_foam_in_streaks_along_it(default):
     """Beaufort 6 (10 m/s) blows no streaks; from 7 on foam lies in streaks along the wind (runs along it several
     times longer than across), and a storm (22 m/s, Beaufort 9) covers more of the sea with them than a near gale
-    (16 m/s). A storm drawn as a moderate swell was what issue 22 found."""
+    (16 m/s): a storm is not drawn as a moderate swell."""
     cover = {wind: streak_foam(default, wind) for wind in (10.0, 16.0, 22.0)}
     assert cover[10.0].mean() < 0.002
     assert 0.02 < cover[16.0].mean() < cover[22.0].mean()

@@ -169,8 +169,8 @@ TANKER = ROOT / "rao" / "tanker" / "tanker.4"
 ])
 def test_the_model_refuses_each_value_with_key_range_and_unit(tmp_path, change, message):
     """A value outside its key's range (or of the wrong type) is refused in one line naming the file, the
-    key's path, the range with its unit, and the value as written. If this fails, the model lost a range,
-    words it differently from the README's reference, or reports a key other than the one at fault."""
+    key's path, the range with its unit, and the value as written. If this fails, the model lost a range, words it
+    differently from the scenario reference (docs/SCENARIOS.md), or reports a key other than the one at fault."""
     path = write(tmp_path, GOOD.replace(*change))
     with pytest.raises(ScenarioError) as info:
         load_scenario(path)
@@ -185,11 +185,11 @@ def test_ints_are_accepted_where_numbers_are_expected(tmp_path):
     assert scenario.sea.systems[0].spectrum.hs == 3.0 and isinstance(scenario.run.duration_s, float)
 
 
-def test_readme_scenario_reference_is_the_models():
-    """README's scenario reference is the table generated from the model. If this fails, a key, range,
-    unit or default changed in marinesim/scenario/model.py and README.md was not regenerated
-    (python -m marinesim.scenario README.md)."""
-    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+def test_scenario_reference_is_the_models():
+    """docs/SCENARIOS.md's scenario reference is the table generated from the model. If this fails, a key, range,
+    unit or default changed in marinesim/scenario/model.py and the page was not regenerated
+    (python -m marinesim.scenario docs/SCENARIOS.md)."""
+    readme = (ROOT / "docs" / "SCENARIOS.md").read_text(encoding="utf-8")
     assert readme == with_reference(readme)
     assert "| `[vessel]` | `speed_kn` | float | kn | 0..40 | `0.0` |" in reference()
 

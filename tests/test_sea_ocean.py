@@ -1,4 +1,4 @@
-"""The ocean on FFT cascades: synthesis, statistics, kinematics, reproducibility (issue 2)."""
+"""The ocean on FFT cascades: synthesis, statistics, kinematics, reproducibility."""
 
 import json
 import math

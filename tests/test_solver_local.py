@@ -1,4 +1,4 @@
-"""The local wave solver (issue 5) on Mesa's software OpenGL and in NumPy: the GPU solver equals
+"""The local wave solver on Mesa's software OpenGL and in NumPy: the GPU solver equals
 the reference; deep-water dispersion; the Kelvin angle of a moving pressure point; the sponge; the
 rings of a heaving hull; stability, scrolling and resets. The hull's displaced depth is in
 test_solver_footprint.py."""

@@ -141,7 +141,7 @@ def test_frequencies_capytaine_leaves_without_waves_or_values_are_dropped_with_a
 
 def test_a_single_heading_dataset_is_a_partial_table(barge, tmp_path):
     """Capytaine run for head seas only (one wave_direction): a table covering 165..195 deg whose RAOs there are
-    the full dataset's (issue 19: a single heading is allowed, the table says what it covers)."""
+    the full dataset's (a single heading is allowed; the table says what it covers)."""
     dataset, _ = barge
     path = tmp_path / "head.nc"
     capytaine.export_dataset(path, dataset.sel(wave_direction=[math.pi]))
@@ -220,7 +220,7 @@ def test_a_centre_of_gravity_moved_by_the_scenario_moves_the_weights_restoring_a
 def test_the_scenarios_mass_moorings_and_damping_give_capytaines_own_raos(barge, tmp_path):
     """The barge's mass given as a scenario gives it (mass, centre of gravity, radii of gyration) replaces the
     dataset's inertia to the same RAOs; a mooring stiffness in surge, sway and yaw and a linear damping in roll
-    (issue 19, item 11) give the RAOs Capytaine's own post_pro.rao gives with the same matrices, a second
+    give the RAOs Capytaine's own post_pro.rao gives with the same matrices, a second
     implementation. A failure means the parallel-axis mass matrix or the external matrices' signs or places are
     wrong (the moored surge falls by orders of magnitude in long waves, so a missing stiffness shows)."""
     from marinesim.vessel.body import RigidBody

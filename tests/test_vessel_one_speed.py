@@ -1,4 +1,4 @@
-"""A table of one speed used far from it is noted, not refused (issue 37).
+"""A table of one speed used far from it is noted, not refused.
 
 The S175's VERES file holds five speeds (0, 5, 10, 15, 20 kn). Cut to its zero-speed block it is a table of one
 speed, which serves every speed with the encounter frequency shifted but its values unchanged: at 15 kn its

@@ -258,7 +258,7 @@ def test_command_line_refuses_a_broken_set_in_one_line(tmp_path):
 
 def test_the_scenarios_mass_and_external_damping_stand_in_for_the_frc(tmp_path):
     """The tanker's .1/.3/.hst without its .frc, with the mass, centre of gravity and radii of gyration of the
-    .frc's matrix and its external damping given as a scenario gives them (issue 19, item 6): surge, heave and
+    .frc's matrix and its external damping given as a scenario gives them: surge, heave and
     pitch equal WAMIT's own .4 as the .frc's do (within PEAK_SHARE), and without the damping the beam-sea roll
     peak grows as above. Sway, roll and yaw differ (1.7, 1.1 and 9 % of their peaks) because the tanker's .frc
     leaves out couplings a rigid body has (sway-yaw m x_g, the product m x_g z_g). A failure means the

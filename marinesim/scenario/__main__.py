@@ -1,4 +1,4 @@
-"""``python -m marinesim.scenario README.md``: rewrite the README's scenario reference from the model."""
+"""``python -m marinesim.scenario docs/SCENARIOS.md``: rewrite the scenario reference from the model."""
 
 import sys
 from pathlib import Path

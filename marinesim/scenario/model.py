@@ -1,5 +1,5 @@
 """The scenario file's schema: one pydantic model that validates a TOML scenario, holds every key's
-type, unit, range and default, words the errors, and writes the README's scenario reference.
+type, unit, range and default, words the errors, and writes the scenario reference (docs/SCENARIOS.md).
 
 Each numeric key carries one :class:`Quantity` (unit and range); the loader
 (:mod:`marinesim.scenario.schema`) builds the sea, the vessel and the run from the validated model.
@@ -519,7 +519,8 @@ class CriterionOptions(Section):
     name: Annotated[str | None, Field(min_length=1, max_length=80)] = Field(
         None, description="what the panel and the report call it; absent: point.quantity")
     point: str | None = Field(None, description="a [vessel.points] name; absent for the vessel's own motions")
-    quantity: Literal[tuple(QUANTITIES)] = Field(description="what is measured (README: How the criteria are computed)")
+    quantity: Literal[tuple(QUANTITIES)] = Field(
+        description="what is measured (docs/FORMULAS.md: How the criteria are computed)")
     limit: Annotated[float, Quantity(gt=0.0)] = Field(description="upper limit, in the quantity's unit")
     window_s: Annotated[float | None, Quantity("s", ge=10.0, le=MAX_DURATION_S)] = Field(
         None, description="running window; absent: 600 s, helideck quantities 1200 s")
@@ -748,7 +749,7 @@ def _model_in(annotation: Any) -> Any:
 
 
 def reference() -> str:
-    """The scenario keys as a markdown table, generated from the model (README's scenario reference)."""
+    """The scenario keys as a markdown table, generated from the model (docs/SCENARIOS.md)."""
     rows = ["| section | key | type | unit | range | default | meaning |", "|---|---|---|---|---|---|---|"]
     for name, section_field in ScenarioFile.model_fields.items():
         title = f"[[{name}]]" if get_origin(section_field.annotation) is list else f"[{name}]"

@@ -32,9 +32,6 @@ Source convention, converted here once (:func:`aqwa_to_internal`):
 
 ``FREQ`` is printed to 3 decimals and ``PERIOD`` to 2: the frequency is taken from whichever of the two
 is the more precise (the period below 0.79 rad/s), so no frequency is off by more than 0.06 %.
-
-Not in the format registry yet: the real files at hand cover one or two headings, and an RAO table must
-cover the circle (mirrored 0-180 deg at least) until partial heading sets are allowed (issue 19).
 """
 
 from __future__ import annotations

@@ -36,9 +36,6 @@ rotations right-handed (pitch positive bow down), as marinesim's. The RAOs are s
 ``(-w^2 (M + A^T) + i w (B^T + B_add) + C + K_m) H = conj(F)`` (``A^T``: force rows, motion columns) and
 referred to the wave at the rotation centre ``r`` (NEMOH refers it to ``(XEFF, YEFF)``):
 ``H_r = H exp(i k . (r - eff))``.
-
-Not in the format registry yet: the real files at hand cover one or two headings, and an RAO table must
-cover the circle (mirrored 0-180 deg at least) until partial heading sets are allowed (issue 19).
 """
 
 from __future__ import annotations
