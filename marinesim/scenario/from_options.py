@@ -11,20 +11,21 @@ import os
 import tomllib
 from pathlib import Path
 
+import tomlkit
+
 from marinesim.errors import ScenarioError
 from marinesim.scenario.model import WAVE_PARAMETERS, ScenarioFile, validate
 from marinesim.scenario.schema import Scenario, build_scenario
 
 Value = str | bool | int | float | Path
-"""A key's value; a :class:`~pathlib.Path` is a file the scenario reads."""
+"""A key's value; a :class:`~pathlib.Path` is a file the scenario reads (floats by their shortest repr: ``inf`` and
+``nan`` too, which the model refuses as it refuses a file's)."""
 Table = dict[str, Value | None]
 """A section's keys (None: the key is left out)."""
 
 KEYS = {parameter: key for key, parameter in WAVE_PARAMETERS.items()}
 """A :func:`~marinesim.sea.build.wave_system` parameter -> the ``[[sea]]`` key that gives it."""
-HEADER = "# A marinesim scenario written from command-line options; relative paths start at this file's folder.\n"
-_ESCAPES = {'"': '\\"', "\\": "\\\\", "\b": "\\b", "\t": "\\t", "\n": "\\n", "\f": "\\f", "\r": "\\r"}
-"""TOML's short escapes in a basic string; the other control characters are written ``\\uXXXX``."""
+HEADER = "A marinesim scenario written from command-line options; relative paths start at this file's folder."
 
 
 def sea_table(kind: str, from_deg: float, **parameters: float | str) -> Table:
@@ -36,14 +37,25 @@ def sea_table(kind: str, from_deg: float, **parameters: float | str) -> Table:
 def scenario_text(sections: dict[str, Table | list[Table]], folder: Path) -> str:
     """The scenario file of ``sections`` (a section's name -> its keys, or a list of tables such as ``[[sea]]``),
     in their order; a section with no keys is left out. A path is written relative to ``folder`` (where the file
-    goes), absolute where no relative path leads to it (another drive)."""
-    parts = [HEADER]
+    goes), absolute where no relative path leads to it (another drive). Written by tomlkit, which quotes and
+    escapes what a file name may hold."""
+    document = tomlkit.document()
+    document.add(tomlkit.comment(HEADER))
     for name, section in sections.items():
-        for table in section if isinstance(section, list) else [section]:
-            keys = [f"{key} = {_value(value, folder)}\n" for key, value in table.items() if value is not None]
-            if keys or isinstance(section, list):
-                parts += [f"\n[[{name}]]\n" if isinstance(section, list) else f"\n[{name}]\n", *keys]
-    return "".join(parts)
+        if isinstance(section, list):
+            tables = tomlkit.aot()
+            for table in section:
+                tables.append(tomlkit.item(_keys(table, folder)))
+            document.add(name, tables)
+        elif keys := _keys(section, folder):
+            document.add(name, tomlkit.item(keys))
+    return tomlkit.dumps(document)
+
+
+def _keys(table: Table, folder: Path) -> dict[str, str | bool | int | float]:
+    """The keys of ``table`` that are given, a path as a name relative to ``folder``."""
+    return {key: _relative(value, folder) if isinstance(value, Path) else value
+            for key, value in table.items() if value is not None}
 
 
 def load_text(text: str, path: Path) -> Scenario:
@@ -54,20 +66,6 @@ def load_text(text: str, path: Path) -> Scenario:
         return build_scenario(path, validate(ScenarioFile, tomllib.loads(text)))
     except ScenarioError as error:
         raise ScenarioError(f"the scenario of the options: {error}") from None
-
-
-def _value(value: Value, folder: Path) -> str:
-    """``value`` as TOML (a float by its shortest repr: ``inf`` and ``nan`` too, which the model refuses as it
-    refuses a file's)."""
-    if isinstance(value, Path):
-        return _string(_relative(value, folder))
-    if isinstance(value, str):
-        return _string(value)
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, int):
-        return str(value)
-    return repr(float(value))
 
 
 def _relative(path: Path, folder: Path) -> str:
@@ -82,8 +80,3 @@ def _relative(path: Path, folder: Path) -> str:
     except UnicodeEncodeError:
         raise ScenarioError(f"{path}: a file name that is not UTF-8 cannot be written in a scenario file") from None
     return name
-
-
-def _string(text: str) -> str:
-    """``text`` as a TOML basic string."""
-    return '"' + "".join(_ESCAPES.get(c, f"\\u{ord(c):04X}" if c < " " or c == "\x7f" else c) for c in text) + '"'
