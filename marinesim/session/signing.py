@@ -16,6 +16,8 @@ import re
 import secrets
 from pathlib import Path
 
+import platformdirs
+
 from marinesim.errors import MarinesimError
 
 KEY_FILE = "session-log.key"
@@ -24,15 +26,16 @@ KEY_FILE = "session-log.key"
 
 def config_root() -> Path:
     """Where marinesim keeps what is this installation's own and cannot be made again (unlike the cache):
-    ``$MARINESIM_CONFIG_DIR``, else ``$XDG_CONFIG_HOME/marinesim``, else ``~/.config/marinesim``."""
+    ``$MARINESIM_CONFIG_DIR``, else the user's configuration folder as :func:`platformdirs.user_config_path` finds it
+    (``$XDG_CONFIG_HOME/marinesim`` where that is set, else ``~/.config/marinesim`` on Linux,
+    ``~/Library/Application Support/marinesim`` on macOS, ``%LOCALAPPDATA%\\marinesim`` on Windows)."""
     if os.environ.get("MARINESIM_CONFIG_DIR"):
         return Path(os.environ["MARINESIM_CONFIG_DIR"])
-    if os.environ.get("XDG_CONFIG_HOME"):
-        return Path(os.environ["XDG_CONFIG_HOME"]) / "marinesim"
-    try:
-        return Path.home() / ".config" / "marinesim"
-    except RuntimeError:  # no HOME and no passwd entry (some containers)
-        raise MarinesimError("no home folder to keep the session-log key in: set MARINESIM_CONFIG_DIR") from None
+    with contextlib.suppress(RuntimeError):  # no HOME and no passwd entry (some containers)
+        folder = platformdirs.user_config_path("marinesim", appauthor=False)
+        if folder.is_absolute():  # older platformdirs leave an unknown home as "~"
+            return folder
+    raise MarinesimError("no home folder to keep the session-log key in: set MARINESIM_CONFIG_DIR")
 
 
 def installation_key(create: bool = False) -> bytes | None:
