@@ -19,6 +19,11 @@ class ParameterError(MarinesimError, ValueError):
     """A parameter value is out of range or not a number; the message names the parameter."""
 
 
+class HeadingError(ParameterError):
+    """The headings of an RAO table are unusable (none, not finite, or one given twice after wrapping to
+    0..360 deg); a file reader catching it adds the headings its file covers."""
+
+
 class ScenarioError(MarinesimError):
     """A scenario file is unreadable, has an unknown key or an invalid value (names the key)."""
 

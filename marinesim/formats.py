@@ -1,9 +1,12 @@
-"""The registry of file formats: RAO tables and hull/visual meshes, each read by one module.
+"""The registry of file formats (RAO tables, mean drift tables, hull and visual meshes, each read by one module),
+and the check every reader makes of a path first (:func:`check_file`, with the size limits of :data:`SIZE_LIMITS`).
 
 A :class:`Format` names its reader (and its optional content sniffer) as ``"module:function"``
 strings imported on first use, so listing the formats imports no reader and none of their
-dependencies. The built-in formats are declared in the table at the end of this module; a new
-format is one reader module plus one ``register`` line there.
+dependencies. The formats are registered by the packages that read them, on their import:
+:mod:`marinesim.vessel` the RAO and drift formats, :mod:`marinesim.hull` the mesh formats; whoever
+looks formats up imports the owning package first. A new format is one reader module plus one
+``register`` line in its package.
 
 Reader contracts: an RAO reader is ``reader(path: Path, **options) -> RaoTable`` taking the
 keyword options its format declares; a mesh reader is ``reader(path: Path) -> trimesh.Trimesh``
@@ -25,6 +28,23 @@ from marinesim.errors import FileFormatError, ParameterError
 
 KINDS = {"rao": "RAO", "mesh": "mesh", "drift": "mean drift"}  # kind -> what the messages call a file of that kind
 HEAD_BYTES = 4096
+MIB = 2**20
+
+SIZE_LIMITS: dict[str, int] = {
+    "RAO file": 64 * MIB,  # OrcaFlex YAML, HydroStar .rao, HAMS: a 360-heading, 1000-frequency table is about 8 MB
+    "WAMIT report": 256 * MIB,  # .out: a few hundred periods and headings with drift forces stay far below
+    "gmsh mesh": 512 * MIB,  # .msh, held whole in memory by meshio: some ten million elements
+    "session log": 64 * MIB,  # a day of a busy session is well under 1 MB
+    "session log sidecar": MIB,  # a log's is under 2 kB
+    "scenario file": MIB,  # TOML: the longest shipped exercise is under 10 kB
+    "manoeuvring file": MIB,  # the scenario's side files (TOML): a few dozen lines each
+    "mooring file": MIB,
+    "station-keeping file": MIB,
+    "wind coefficient file": MIB,  # a few hundred rows
+}
+"""The largest file (bytes) read of each kind, by the name :func:`check_file` is given for it: each is read
+whole into memory, so a bigger file is refused before reading rather than exhausting the memory. Kinds not
+listed (scenario files, the other RAO and mesh formats) have no limit here."""
 
 
 @dataclass(frozen=True)
@@ -113,21 +133,30 @@ def detect(path: Path, kind: str, what: str | None = None) -> Format:
 def check_file(path: Path, what: str = "file") -> None:
     """Refuse (:class:`FileFormatError`, ``what`` naming the kind of file) a path that is not a regular file
     (after symbolic links): a missing file, a folder, a FIFO or device (reading it could block for ever), a
-    symbolic-link loop, a name with a NUL byte. Every reader calls this first: the file is noted as one of
-    the running command's inputs, never to be written over (:func:`~marinesim.atomic.note_input`)."""
+    symbolic-link loop, a name with a NUL byte; and one larger than the limit :data:`SIZE_LIMITS` gives for
+    ``what``, if any. Every reader calls this first: the file is noted as one of the running command's inputs,
+    never to be written over (:func:`~marinesim.atomic.note_input`)."""
     try:
-        mode = os.stat(path).st_mode
+        found = os.stat(path)
     except FileNotFoundError:
         raise FileFormatError(path, None, f"no such {what}") from None
     except OSError as error:
         raise FileFormatError(path, None, f"cannot read: {error.strerror}") from None
     except ValueError:  # os.stat refuses a NUL byte in the name
         raise FileFormatError(repr(str(path)), None, "a file name cannot contain a NUL byte") from None
-    if stat.S_ISDIR(mode):
+    if stat.S_ISDIR(found.st_mode):
         raise FileFormatError(path, None, f"is a folder, not a {what}")
-    if not stat.S_ISREG(mode):
+    if not stat.S_ISREG(found.st_mode):
         raise FileFormatError(path, None, f"not a regular file (a FIFO or device): give a {what}")
+    if found.st_size > SIZE_LIMITS.get(what, found.st_size):
+        raise FileFormatError(path, None, f"{_size_text(found.st_size)} is more than the "
+                                          f"{_size_text(SIZE_LIMITS[what])} one {what} may have here")
     note_input(path)
+
+
+def _size_text(size: int) -> str:
+    """``size`` (bytes) in words, e.g. ``"70.3 MiB (73,715,302 bytes)"`` (bytes only below 1 MiB)."""
+    return f"{size / MIB:.3g} MiB ({size:,} bytes)" if size >= MIB else f"{size:,} bytes"
 
 
 def reader(fmt: Format | str) -> Callable:
@@ -148,50 +177,3 @@ def _head(path: Path) -> bytes:
             return handle.read(HEAD_BYTES)
     except OSError as error:
         raise FileFormatError(path, None, f"cannot read: {error.strerror}") from None
-
-
-register(Format("wamit", "rao", "WAMIT .4 motion RAOs (numeric output)", (".4",),
-                "marinesim.vessel.wamit:read_wamit", "marinesim.vessel.wamit:sniff", options=("ulen", "body")))
-register(Format("veres", "rao", "VERES/ShipX .re1 motion transfer functions", (".re1",),
-                "marinesim.vessel.veres:read_veres", "marinesim.vessel.veres:sniff"))
-register(Format("capytaine", "rao", "Capytaine NetCDF dataset (.nc) with hydrodynamic coefficients", (".nc",),
-                "marinesim.vessel.capytaine:read_capytaine", "marinesim.vessel.capytaine:sniff",
-                options=("roll_damping", "body", "rigid_body")))
-register(Format("native", "rao", "marinesim table (.csv, .txt, .rao; see marinesim/vessel/native.py)",
-                (".csv", ".txt", ".rao"), "marinesim.vessel.native:read_native", "marinesim.vessel.native:sniff"))
-register(Format("wamit-forces", "rao", "WAMIT .1, .3, .hst and .frc side by side: RAOs solved from forces and mass",
-                (".3", ".1", ".hst", ".frc"), "marinesim.vessel.wamit_forces:read_wamit_forces",
-                "marinesim.vessel.wamit_forces:sniff", options=("ulen", "rigid_body", "body")))
-register(Format("wamit-out", "rao", "WAMIT report (.out, or any name: found by its banner, as other programs "
-                "write .out too): its motions, or RAOs solved from its forces and the scenario's mass", (),
-                "marinesim.vessel.wamit_out:read_wamit_out",
-                "marinesim.vessel.wamit_out:sniff", options=("ulen", "rigid_body")))
-register(Format("hydrostar", "rao", "HydroStar/HAMS .rao motion RAOs (one DOF per file, the six side by side)",
-                (".rao",), "marinesim.vessel.hydrostar:read_hydrostar", "marinesim.vessel.hydrostar:sniff"))
-register(Format("orcaflex", "rao", "OrcaFlex vessel type displacement RAOs (.yml, .yaml)", (".yml", ".yaml"),
-                "marinesim.vessel.orcaflex:read_orcaflex", "marinesim.vessel.orcaflex:sniff"))
-register(Format("aqwa", "rao", "ANSYS AQWA listing (.lis): position RAOs of structure 1", (".lis",),
-                "marinesim.vessel.aqwa:read_aqwa", "marinesim.vessel.aqwa:sniff"))
-register(Format("nemoh", "rao", "NEMOH v2/v3 project, given by its Nemoh.cal: Motion/RAO.dat, or RAOs solved from "
-                "its forces, coefficients and mass", (".cal",), "marinesim.vessel.nemoh:read_nemoh",
-                "marinesim.vessel.nemoh:sniff", options=("rigid_body",)))
-register(Format("wamit-drift", "drift", "WAMIT .8 (momentum) or .9 (pressure) mean drift", (".8", ".9"),
-                "marinesim.vessel.wamit_drift:read_drift", options=("ulen",)))
-register(Format("aqwa-drift", "drift", "ANSYS AQWA listing (.lis): its wave-drift loads of structure 1", (".lis",),
-                "marinesim.vessel.aqwa_drift:read_aqwa_drift", options=("axisymmetric",)))
-register(Format("nemoh-drift", "drift", "NEMOH v3 QTF module's OUT_QTFM_N.dat (its diagonal)", (".dat",),
-                "marinesim.vessel.nemoh_drift:read_nemoh_drift", options=("axisymmetric",)))
-register(Format("gdf", "mesh", "WAMIT low-order panels, .gdf", (".gdf",), "marinesim.hull.gdf:read_gdf_mesh"))
-register(Format("pnl", "mesh", "HAMS panel mesh, .pnl", (".pnl",), "marinesim.hull.pnl:read_pnl_mesh"))
-register(Format("nemoh-mesh", "mesh", "NEMOH mesh, .dat (or Capytaine's .mar)", (".dat", ".mar"),
-                "marinesim.hull.nemoh_mesh:read_nemoh_mesh_file", "marinesim.hull.nemoh_mesh:sniff"))
-register(Format("gmsh", "mesh", "gmsh mesh, .msh (MSH 2.2 or 4.1): its triangles and quadrangles", (".msh",),
-                "marinesim.hull.gmsh_mesh:read_gmsh_mesh"))
-register(Format("stl", "mesh", "STL, .stl (or gzipped, .stl.gz)", (".stl", ".stl.gz"),
-                "marinesim.hull.mesh:read_mesh"))
-register(Format("obj", "mesh", "Wavefront OBJ, .obj (or .obj.gz)", (".obj", ".obj.gz"),
-                "marinesim.hull.mesh:read_mesh"))
-register(Format("ply", "mesh", "Stanford PLY, .ply (or .ply.gz)", (".ply", ".ply.gz"),
-                "marinesim.hull.mesh:read_mesh"))
-register(Format("gltf", "mesh", "glTF 2.0, .glb or .gltf", (".glb", ".gltf"), "marinesim.hull.mesh:read_mesh"))
-register(Format("off", "mesh", "Object File Format, .off", (".off",), "marinesim.hull.mesh:read_mesh"))

@@ -19,7 +19,7 @@ import trimesh
 
 from conftest import ROOT
 from marinesim import formats
-from marinesim.errors import FileFormatError, ParameterError
+from marinesim.errors import FileFormatError, MarinesimError, ParameterError
 from marinesim.hull import hydrostatics, load_hull, load_visual_mesh, wigley_hull
 from marinesim.vessel import read_rao
 from marinesim.vessel.native import write_native
@@ -233,11 +233,43 @@ def test_registering_a_clash_is_refused():
 
 
 def test_listing_formats_imports_no_reader():
-    """Listing the formats (``marinesim --help`` does) must not import numpy, trimesh or any reader:
-    a failure means the registry pulls in the readers' dependencies at import."""
-    code = ("import sys; from marinesim import formats; formats.formats(); formats.extensions('mesh'); "
-            "print(sorted(m for m in sys.modules if m.split('.')[0] in ('numpy', 'trimesh', 'scipy', 'xarray') "
-            "or m.startswith(('marinesim.vessel', 'marinesim.hull'))))")
+    """Listing the formats (``marinesim --help`` does, importing the packages that register them) must import
+    neither numpy, trimesh nor any reader: a failure means a registering package pulls in the readers'
+    dependencies when imported."""
+    code = ("import sys, marinesim.vessel, marinesim.hull; from marinesim import formats; listed = formats.formats(); "
+            "formats.extensions('mesh'); readers = {spec.partition(':')[0] for f in listed for spec in (f.reader, "
+            "f.sniffer) if spec}; print(len(listed), sorted(m for m in sys.modules if m in readers or m.split('.')[0] "
+            "in ('numpy', 'trimesh', 'scipy', 'xarray')))")
     result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True,
                             env=os.environ | {"PYTHONPATH": str(ROOT)})
-    assert result.stdout.strip() == "[]"
+    assert result.stdout.strip() == f"{len(SAMPLES)} []"
+
+
+@pytest.mark.parametrize("kind", sorted(formats.SIZE_LIMITS))
+def test_every_kind_of_input_is_bounded_before_it_is_read(kind, tmp_path):
+    """A file one byte over its kind's limit is refused in one line naming it, its size and the limit, before a
+    byte of it is read (the file is sparse: nothing is allocated); one at the limit passes the check. If this
+    fails, a kind of input can make marinesim read (and hold) a file of any size."""
+    limit = formats.SIZE_LIMITS[kind]
+    path = tmp_path / "input"
+    with open(path, "wb") as file:
+        file.truncate(limit + 1)
+    with pytest.raises(MarinesimError) as refused:
+        formats.check_file(path, kind)
+    message = str(refused.value)
+    assert "\n" not in message and str(path) in message and f"{limit + 1:,} bytes" in message, message
+    assert f"{limit:,} bytes" in message and kind in message, message
+    with open(path, "r+b") as file:
+        file.truncate(limit)
+    formats.check_file(path, kind)
+
+
+def test_a_scenario_file_over_its_limit_is_refused_by_the_loader(tmp_path):
+    """The scenario loader bounds its file too: 2 MiB of TOML is refused before it is parsed."""
+    from marinesim.scenario import load_scenario
+
+    path = tmp_path / "huge.toml"
+    with open(path, "wb") as file:
+        file.truncate(2 * formats.SIZE_LIMITS["scenario file"])
+    with pytest.raises(MarinesimError, match="one scenario file may have"):
+        load_scenario(path)

@@ -13,6 +13,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+import marinesim.vessel  # noqa: F401  registers the RAO formats --rao lists
 from marinesim.atomic import atomic_path, check_replaceable, note_input, refuse_input, sidecar_path
 from marinesim.errors import MarinesimError, ParameterError, require_finite
 from marinesim.formats import check_file, formats

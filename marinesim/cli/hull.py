@@ -5,11 +5,12 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+import marinesim.hull  # noqa: F401  registers the mesh formats listed below
 from marinesim.cli.common import add_hull_options, hull_from_args, json_text
 from marinesim.formats import extensions
 
 
-NEEDS = ("marinesim.hull",)
+NEEDS = ("marinesim.hull.mesh",)
 """The modules the command loads before it starts (Ctrl-C is held until they are in)."""
 
 def add(commands: argparse._SubParsersAction) -> None:

@@ -5,12 +5,13 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+import marinesim.vessel  # noqa: F401  registers the RAO formats listed below
 from marinesim.cli.common import json_text, number_list, refuse_overwriting
 from marinesim.errors import require_finite, require_within
 from marinesim.formats import formats
 
 
-NEEDS = ("marinesim.vessel", "marinesim.vessel.plot", "marinesim.vessel.summary")
+NEEDS = ("marinesim.vessel.read", "marinesim.vessel.plot", "marinesim.vessel.summary")
 """The modules the command loads before it starts (Ctrl-C is held until they are in)."""
 
 def add(commands: argparse._SubParsersAction) -> None:

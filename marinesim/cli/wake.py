@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+import marinesim.hull  # noqa: F401  registers the mesh formats listed below
 from marinesim.cli.common import add_hull_options, bars, hull_from_args, json_text, number_list, refuse_overwriting
 from marinesim.errors import ParameterError
 from marinesim.formats import extensions

@@ -17,9 +17,9 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-import trimesh
 
 from marinesim.errors import FileFormatError
+from marinesim.hull.trimesh_held import trimesh
 from marinesim.hull.wamit_pot import placement
 from marinesim.tokens import Tokens, parse_float, parse_int, read_text
 

@@ -15,12 +15,11 @@ import warnings
 from pathlib import Path
 
 import numpy as np
-import trimesh
 
 from marinesim.errors import FileFormatError
+from marinesim.formats import check_file
+from marinesim.hull.trimesh_held import trimesh
 
-MAX_FILE_BYTES = 512 * 2**20
-"""The largest ``.msh`` read (meshio holds it all in memory): some ten million elements."""
 SURFACE = {"triangle": [[0, 1, 2]], "quad": [[0, 1, 2], [0, 2, 3]]}
 """Surface element types and the triangles of each."""
 
@@ -30,10 +29,7 @@ def read_gmsh_mesh(path: Path) -> trimesh.Trimesh:
     import meshio
 
     path = Path(path)
-    size = path.stat().st_size
-    if size > MAX_FILE_BYTES:
-        raise FileFormatError(path, None, f"{size / 2**20:.0f} MiB is larger than the {MAX_FILE_BYTES // 2**20} MiB "
-                                          "a gmsh mesh may have here")
+    check_file(path, "gmsh mesh")
     try:
         with warnings.catch_warnings(), contextlib.redirect_stdout(io.StringIO()):
             warnings.simplefilter("ignore")

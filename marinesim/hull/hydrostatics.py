@@ -18,11 +18,12 @@ from __future__ import annotations
 
 import math
 from dataclasses import asdict, dataclass
-
-import numpy as np
+from typing import TYPE_CHECKING
 
 from marinesim.constants import RHO_SEAWATER, G
-from marinesim.hull.mesh import Hull
+
+if TYPE_CHECKING:
+    from marinesim.hull.mesh import Hull
 
 
 @dataclass(frozen=True)
@@ -61,6 +62,8 @@ def froude_number(speed_m_s: float, length_m: float, g: float = G) -> float:
 
 def hydrostatics(hull: Hull, rho: float = RHO_SEAWATER) -> Hydrostatics:
     """The hydrostatic summary of ``hull`` floating at z = 0 in water of density ``rho`` (kg/m^3)."""
+    import numpy as np  # here, not above: the package imports this module, and listing its formats imports no numpy
+
     wet = hull.wetted()
     volume = wet.integral(lambda p: p[..., 2], normal=2)
     buoyancy = tuple(wet.integral(f, normal=2) / volume for f in (

@@ -26,10 +26,10 @@ from pathlib import Path
 from typing import Iterator
 
 import numpy as np
-import trimesh
 
 from marinesim import formats
 from marinesim.errors import FileFormatError, ParameterError, require_finite, require_positive
+from marinesim.hull.trimesh_held import trimesh
 from marinesim.hull.wetted import Surface, wetted_surface
 from marinesim.pose import rotation_y
 

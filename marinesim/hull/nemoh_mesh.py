@@ -12,9 +12,9 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
-import trimesh
 
 from marinesim.errors import FileFormatError
+from marinesim.hull.trimesh_held import trimesh
 from marinesim.tokens import parse_float, parse_int, read_text
 
 MAX_ITEMS = 2_000_000

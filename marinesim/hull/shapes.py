@@ -13,10 +13,10 @@ L/B = 10 and B/T = 1.6 (the classic proportions). Both sides are triangulated on
 from __future__ import annotations
 
 import numpy as np
-import trimesh
 
 from marinesim.errors import ParameterError, require_at_least, require_positive
 from marinesim.hull.mesh import Hull, make_hull
+from marinesim.hull.trimesh_held import trimesh
 
 
 def wigley_half_breadth(x: np.ndarray, z: np.ndarray, length: float, beam: float, draft: float) -> np.ndarray:

@@ -16,10 +16,10 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
-import trimesh
 
 from marinesim.errors import ParameterError, require_finite
 from marinesim.hull.mesh import load_mesh, to_body_frame
+from marinesim.hull.trimesh_held import trimesh
 
 
 @dataclass(frozen=True)

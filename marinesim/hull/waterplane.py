@@ -9,10 +9,10 @@ closed one, and a catamaran gives two loops. :func:`inside` is the one polygon m
 from __future__ import annotations
 
 import numpy as np
-import trimesh
 from matplotlib.path import Path as PolygonPath
 
 from marinesim.hull.mesh import Hull
+from marinesim.hull.trimesh_held import trimesh
 
 SECTION_BELOW = 1e-6
 """The section is taken this fraction of the hull's length below z = 0 (exactly at z = 0 a

@@ -679,13 +679,12 @@ class ScenarioFile(Section):
 M = TypeVar("M", bound=BaseModel)
 
 
-def read_small_file(path: Path, what: str, max_bytes: int) -> bytes:
-    """The bytes of the ``what`` at ``path`` (a regular file of at most ``max_bytes``: a scenario's side file, read
-    whole), or :class:`ScenarioError` naming it."""
+def read_small_file(path: Path, what: str) -> bytes:
+    """The bytes of the ``what`` at ``path`` (a regular file within the size limit
+    :data:`~marinesim.formats.SIZE_LIMITS` gives ``what``: a scenario's side file, read whole), or
+    :class:`ScenarioError` naming it."""
     try:
         check_file(path, what)
-        if path.stat().st_size > max_bytes:
-            raise FileFormatError(path, None, f"more than {max_bytes} bytes: not a {what}")
         return path.read_bytes()
     except (FileFormatError, OSError) as error:
         raise ScenarioError(str(error)) from None

@@ -25,8 +25,6 @@ from marinesim.errors import MarinesimError, ScenarioError
 from marinesim.scenario.model import Quantity, Section, _expecting, _refuse, read_small_file, validate
 from marinesim.station.moorings import DIAMETER_RANGE_M, Line, Moorings, materials
 
-MAX_FILE_BYTES = 1 << 20
-"""The largest mooring file read (bytes)."""
 MAX_LINES = 32
 MAX_RADIUS_M = 20_000.0
 """The farthest anchor and the longest line (m)."""
@@ -119,7 +117,7 @@ def load_moorings(path: Path, depth: float) -> Moorings:
     """Read, validate and build the mooring file ``path`` in water ``depth`` (m). Errors (:class:`ScenarioError`)
     name the file and the key, or the line."""
     path = Path(path)
-    data = read_small_file(path, "mooring file", MAX_FILE_BYTES)
+    data = read_small_file(path, "mooring file")
     return _load(str(path), hashlib.sha256(data).hexdigest(), data, float(depth))
 
 

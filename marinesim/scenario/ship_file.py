@@ -29,8 +29,6 @@ from marinesim.manoeuvring.ship import Ship
 from marinesim.manoeuvring.trials import hard_over
 from marinesim.scenario.model import MAX_SPEED_KN, Quantity, Section, _refuse, read_small_file, validate
 
-MAX_FILE_BYTES = 1 << 20
-"""The largest manoeuvring file read (bytes)."""
 AHEAD_FRACTIONS = {"half_ahead": 0.75, "slow_ahead": 0.55, "dead_slow_ahead": 0.35}
 ASTERN_FRACTIONS = {"dead_slow_astern": 0.35, "slow_astern": 0.5, "half_astern": 0.6, "full_astern": 0.7}
 """Telegraph orders not given, as fractions of full ahead's rpm (astern: usual for a fixed-pitch propeller on a
@@ -274,7 +272,7 @@ def load_ship(path: str | Path) -> tuple[ShipFile, Ship]:
     """Read, validate and build the manoeuvring file ``path``; a model unstable at hard-over from its approach speed
     is refused. Errors (:class:`ScenarioError`) name the file and the key."""
     path = Path(path)
-    data = read_small_file(path, "manoeuvring file", MAX_FILE_BYTES)
+    data = read_small_file(path, "manoeuvring file")
     return _load(str(path), hashlib.sha256(data).hexdigest(), data)
 
 

@@ -26,8 +26,6 @@ from marinesim.scenario.model import Quantity, Section, _refuse, read_small_file
 from marinesim.station.dp import Tuning
 from marinesim.station.thrusters import KINDS, Thruster, Thrusters
 
-MAX_FILE_BYTES = 1 << 20
-"""The largest station-keeping file read (bytes)."""
 MAX_THRUSTERS = 16
 
 Matrix3 = Annotated[list[Annotated[list[float], Field(min_length=3, max_length=3)]], Field(min_length=3,
@@ -146,7 +144,7 @@ def load_station(path: str | Path) -> StationFile:
     """Read and validate the station-keeping file ``path``; errors (:class:`ScenarioError`) name the file and the
     key."""
     path = Path(path)
-    data = read_small_file(path, "station-keeping file", MAX_FILE_BYTES)
+    data = read_small_file(path, "station-keeping file")
     return _load(str(path), hashlib.sha256(data).hexdigest(), data)
 
 

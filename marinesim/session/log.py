@@ -37,7 +37,7 @@ from typing import Any
 from marinesim import __version__
 from marinesim.atomic import sidecar_path
 from marinesim.errors import FileFormatError, MarinesimError
-from marinesim.formats import check_file
+from marinesim.formats import SIZE_LIMITS, check_file
 from marinesim.manoeuvring.actuators import TELEGRAPH
 from marinesim.scenario import Scenario
 from marinesim.scenario.model import MAX_DURATION_S
@@ -47,10 +47,6 @@ from marinesim.session.signing import installation_key, key_id, signature
 
 FORMAT = "marinesim session log"
 VERSION = 1
-MAX_LOG_BYTES = 64 << 20
-"""The largest log read (bytes): a day of a busy session is well under 1 MB."""
-MAX_SIDECAR_BYTES = 1 << 20
-"""The largest sidecar read (bytes); a log's is under 2 kB."""
 
 logger = logging.getLogger("marinesim.session")
 
@@ -149,13 +145,7 @@ def read_log(path: Path) -> SessionLog:
     """Read and check a session log (each fault is reported as one line naming the file, line and key) and
     verify it (:attr:`SessionLog.verification`)."""
     path = Path(path)
-    check_file(path, "session log")
-    try:
-        size = path.stat().st_size
-    except OSError as error:
-        raise FileFormatError(path, None, f"cannot read the session log ({error.strerror or error})") from None
-    if size > MAX_LOG_BYTES:
-        raise FileFormatError(path, None, f"{size} bytes is more than a session log holds ({MAX_LOG_BYTES} at most)")
+    check_file(path, "session log")  # its size too (SIZE_LIMITS)
     try:
         data = path.read_bytes()
         text = data.decode("utf-8")
@@ -233,9 +223,9 @@ def _sidecar_problems(path: Path, data: bytes, digest: str) -> list[tuple[str, s
     side = sidecar_path(path)
     try:
         found = os.stat(side)
-        if not stat.S_ISREG(found.st_mode) or found.st_size > MAX_SIDECAR_BYTES:
+        if not stat.S_ISREG(found.st_mode) or found.st_size > SIZE_LIMITS["session log sidecar"]:
             return [("bad sidecar", f"its sidecar {side.name} is not a sidecar (not a file, or over "
-                                    f"{MAX_SIDECAR_BYTES} bytes)")]
+                                    f"{SIZE_LIMITS['session log sidecar']} bytes)")]
         meta = json.loads(side.read_bytes())
     except FileNotFoundError:
         return [("no sidecar", f"its sidecar {side.name} is missing, so nothing shows that the log is the one the "

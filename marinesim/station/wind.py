@@ -52,8 +52,6 @@ GUST_STREAM = 0x57494E44
 their own: ``default_rng(seed)`` would be the ocean's first tile's (``[seed]`` and ``[seed, 0]`` seed alike), the
 gusts' phases then the waves'."""
 
-MAX_FILE_BYTES = 1 << 20
-"""A wind coefficient table is a few hundred rows: a bigger file is not one."""
 MAX_GAP_DEG = 30.0
 """The widest gap between two angles of a coefficient table (deg): linear interpolation over more misses the
 peaks of C_Y and C_N near 60..120 deg."""
@@ -432,8 +430,6 @@ def read_wind_coefficients(path: str | Path) -> TabulatedCoefficients:
 
 def _text(path: Path) -> str:
     try:
-        if path.stat().st_size > MAX_FILE_BYTES:
-            raise FileFormatError(path, None, f"more than {MAX_FILE_BYTES} bytes: not a wind coefficient table")
         return path.read_text(encoding="utf-8-sig")
     except UnicodeDecodeError as error:
         raise FileFormatError(path, None, f"not a text file ({error.reason} at byte {error.start})") from None

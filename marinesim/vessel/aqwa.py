@@ -38,38 +38,20 @@ from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 from marinesim.constants import G, RHO_SEAWATER
-from marinesim.errors import FileFormatError, ParameterError
+from marinesim.errors import FileFormatError, HeadingError, ParameterError
 from marinesim.tokens import parse_float, read_text
-from marinesim.vessel.rao import RaoTable, make_table
+from marinesim.vessel.rao import RaoTable, SolverRaos, make_table
 
 TITLE = "R.A.O.S-VARIATION WITH WAVE DIRECTION"
 MAX_FREQUENCIES = 10_000
 MAX_DIRECTIONS = 1_000
 ROTATION = np.array([False, False, False, True, True, True])
 _SPACED = re.compile(r"\s+")
-
-
-@dataclass(frozen=True)
-class AqwaRaos:
-    """Position RAOs of one structure in marinesim's convention (module docstring): ``omega`` (rad/s,
-    increasing), ``headings_deg`` (wave travel direction from body x, in [0, 360), increasing), ``values``
-    (headings, frequencies, 6; m/m and rad/m, phase lead), ``reference_point`` (CoG, m), ``rho``, ``g``,
-    ``depth`` (m; inf when the listing gives none) and ``notes``."""
-
-    omega: np.ndarray
-    headings_deg: np.ndarray
-    values: np.ndarray
-    reference_point: tuple[float, float, float]
-    rho: float
-    g: float
-    depth: float
-    notes: tuple[str, ...]
 
 
 def sniff(head: bytes) -> bool:
@@ -87,12 +69,11 @@ def read_aqwa(path: str | Path, *, structure: int = 1) -> RaoTable:
         return make_table(raos.omega, np.radians(raos.headings_deg), [0.0], raos.values[None],
                           reference_point=raos.reference_point, rho=raos.rho, g=raos.g, source=str(path),
                           source_format="aqwa", notes=raos.notes, **extra)
+    except HeadingError as error:
+        raise FileFormatError(path, None, f"{error} (the listing covers direction(s) "
+                              + ", ".join(f"{h:g}" for h in raos.headings_deg) + " deg only)") from None
     except ParameterError as error:
-        message = str(error)
-        if "heading" in message:
-            message += (" (the listing covers direction(s) "
-                        + ", ".join(f"{h:g}" for h in raos.headings_deg) + " deg only)")
-        raise FileFormatError(path, None, message) from None
+        raise FileFormatError(path, None, str(error)) from None
 
 
 def aqwa_to_internal(amplitude: np.ndarray, phase_lag_deg: np.ndarray) -> np.ndarray:
@@ -102,7 +83,7 @@ def aqwa_to_internal(amplitude: np.ndarray, phase_lag_deg: np.ndarray) -> np.nda
     return values * np.where(ROTATION, math.pi / 180.0, 1.0)
 
 
-def read_aqwa_raos(path: str | Path, *, structure: int = 1) -> AqwaRaos:
+def read_aqwa_raos(path: str | Path, *, structure: int = 1) -> SolverRaos:
     """The position RAO tables of ``structure`` in marinesim's convention, headings as the listing gives
     them (:func:`read_aqwa` makes the table: a partial one where the headings leave a gap)."""
     path = Path(path)
@@ -139,7 +120,7 @@ def read_aqwa_raos(path: str | Path, *, structure: int = 1) -> AqwaRaos:
                  f"({cog[0]:g}, {cog[1]:g}, {cog[2]:g}) m; phase lag (deg) negated, rotations deg/m -> rad/m; "
                  f"direction = wave travel direction from the global X axis; water depth "
                  + (f"{depth:g} m" if math.isfinite(depth) else "infinite"))
-    return AqwaRaos(omega, headings, values, cog, float(rho), float(g), float(depth), tuple(notes))
+    return SolverRaos(omega, headings, values, cog, float(rho), float(g), float(depth), str(path), tuple(notes))
 
 
 def _squeezed(text: str) -> str:

@@ -58,14 +58,13 @@ from pathlib import Path
 import numpy as np
 
 from marinesim.constants import G, RHO_SEAWATER
-from marinesim.errors import FileFormatError, ParameterError
+from marinesim.errors import FileFormatError, HeadingError, ParameterError
+from marinesim.formats import check_file
 from marinesim.sea.dispersion import k_from_omega
 from marinesim.tokens import parse_float, parse_int, read_text
 from marinesim.vessel.rao import DOFS, ROTATIONS, RaoTable, make_table, refer_phases
 from marinesim.vessel.wamit_rows import read_rows
 
-MAX_FILE_BYTES = 64 * 2**20
-"""Largest ``.rao`` file read (bytes): a 360-heading, 1000-frequency table is about 8 MB."""
 MAX_SIBLINGS = 1000
 """Most ``.rao`` files beside the given one whose headers are examined for the other DOFs."""
 MAX_HEADINGS = 3600
@@ -114,7 +113,7 @@ _HEADER_NUMBER = r"([-+0-9.EeDd]+)"
 
 def read_rao_file(path: Path) -> RaoFile:
     """Parse one HydroStar ``.rao`` file (any RAOTYPE); :class:`FileFormatError` naming the line otherwise."""
-    _check_size(path)
+    check_file(path, "RAO file")
     lines = read_text(path).splitlines()
     header: dict[str, tuple[int, str]] = {}
     headings: list[float] | None = None
@@ -314,7 +313,7 @@ def read_hams_wamit(path: str | Path, *, frequency_type: int | None = None, dept
     and its extra factor ``i`` (module docstring). ``frequency_type`` (HAMS ``Output_frequency_type`` 1-5), ``depth``
     (m; <= 0 infinite) and ``reference_length`` override HAMS's ``Input/ControlFile.in``."""
     path = Path(path)
-    _check_size(path)
+    check_file(path, "RAO file")
     control = _hams_control(path)
     notes: list[str] = []
     kind = frequency_type if frequency_type is not None else control.get("output_frequency_type")
@@ -389,7 +388,7 @@ def _hams_control(path: Path) -> dict:
             break
     else:
         return {}
-    _check_size(candidate)
+    check_file(candidate, "RAO file")
     out: dict = {}
     for number, text in enumerate(read_text(candidate).splitlines(), 1):
         if "end hams control file" in text.lower():
@@ -418,11 +417,11 @@ def _table(path: Path, omega: np.ndarray, headings_deg: np.ndarray, values: np.n
     try:
         return make_table(omega, beta, [0.0], values[None], reference_point=reference, rho=rho, g=g,
                           source=str(path), source_format=source_format, notes=tuple(notes), depth=depth)
+    except HeadingError as error:
+        raise FileFormatError(path, None, f"{error} (the file covers heading(s) "
+                              f"{', '.join(f'{h:g}' for h in headings_deg)} deg)") from None
     except ParameterError as error:
-        message = str(error)
-        if "heading" in message:
-            message += f" (the file covers heading(s) {', '.join(f'{h:g}' for h in headings_deg)} deg)"
-        raise FileFormatError(path, None, message) from None
+        raise FileFormatError(path, None, str(error)) from None
 
 
 def _siblings(path: Path) -> list[Path]:
@@ -508,13 +507,3 @@ def _number(path: Path, line: int, text: str, expected: str) -> float:
     if text.lower() == "nan":
         return math.nan
     return parse_float(path, line, text, expected)
-
-
-def _check_size(path: Path) -> None:
-    try:
-        size = path.stat().st_size
-    except OSError:
-        return  # read_text names the problem
-    if size > MAX_FILE_BYTES:
-        raise FileFormatError(path, None, f"{size / 2**20:.1f} MB is larger than the {MAX_FILE_BYTES // 2**20} MB "
-                                          "an RAO file may have")

@@ -47,35 +47,17 @@ from pathlib import Path
 
 import numpy as np
 
-from marinesim.errors import FileFormatError, ParameterError
+from marinesim.errors import FileFormatError, HeadingError, ParameterError
 from marinesim.formats import check_file
 from marinesim.tokens import Tokens, parse_float, read_text
 from marinesim.vessel.body import RigidBody, gravity_stiffness, rigid_body_mass
-from marinesim.vessel.rao import RaoTable, make_table, refer_phases
+from marinesim.vessel.rao import RaoTable, SolverRaos, make_table, refer_phases
 
 ROTATION = np.array([False, False, False, True, True, True])
 MAX_FREQUENCIES = 100_000
 MAX_HEADINGS = 3_600
 _BETA = re.compile(r"beta\s*=\s*([-+0-9.eEdD]+)", re.IGNORECASE)
 FREQUENCY_KINDS = (("rad/s", "w"), ("hz", "f"), ("(s)", "T"))
-
-
-@dataclass(frozen=True)
-class NemohRaos:
-    """RAOs of one NEMOH body in marinesim's convention (module docstring): ``omega`` (rad/s, increasing),
-    ``headings_deg`` (wave travel direction from body x, increasing), ``values`` (headings, frequencies, 6; m/m,
-    rad/m, lead), ``reference_point`` (rotation centre, m), ``rho``, ``g``, ``depth`` (m, inf = deep),
-    ``source`` (the file read or "equation of motion") and ``notes``."""
-
-    omega: np.ndarray
-    headings_deg: np.ndarray
-    values: np.ndarray
-    reference_point: tuple[float, float, float]
-    rho: float
-    g: float
-    depth: float
-    source: str
-    notes: tuple[str, ...]
 
 
 @dataclass(frozen=True)
@@ -106,12 +88,11 @@ def read_nemoh(path: str | Path, *, rigid_body: RigidBody | None = None) -> RaoT
         return make_table(raos.omega, np.radians(raos.headings_deg), [0.0], raos.values[None],
                           reference_point=raos.reference_point, rho=raos.rho, g=raos.g, source=str(path),
                           source_format="nemoh", notes=raos.notes, **extra)
+    except HeadingError as error:
+        raise FileFormatError(path, None, f"{error} (the NEMOH results cover heading(s) "
+                              + ", ".join(f"{h:g}" for h in raos.headings_deg) + " deg only)") from None
     except ParameterError as error:
-        message = str(error)
-        if "heading" in message:
-            message += (" (the NEMOH results cover heading(s) "
-                        + ", ".join(f"{h:g}" for h in raos.headings_deg) + " deg only)")
-        raise FileFormatError(path, None, message) from None
+        raise FileFormatError(path, None, str(error)) from None
 
 
 def nemoh_to_internal(values: np.ndarray) -> np.ndarray:
@@ -119,7 +100,7 @@ def nemoh_to_internal(values: np.ndarray) -> np.ndarray:
     return np.conj(values)
 
 
-def read_nemoh_raos(path: str | Path, rigid_body: RigidBody | None = None) -> NemohRaos:
+def read_nemoh_raos(path: str | Path, rigid_body: RigidBody | None = None) -> SolverRaos:
     """The RAOs of the project of ``path``: ``Motion/RAO.dat`` if present and the scenario gives no rigid body,
     else solved from the coefficients."""
     root = project_root(Path(path))
@@ -138,8 +119,8 @@ def read_nemoh_raos(path: str | Path, rigid_body: RigidBody | None = None) -> Ne
     order = np.argsort(omega)
     notes = notes + (f"reference point: rotation centre {settings.rotation_centre} m; wave phase referred to it "
                      f"from NEMOH's (XEFF, YEFF) = {settings.wave_point}",)
-    return NemohRaos(omega[order], headings, values[:, order], settings.rotation_centre, settings.rho, settings.g,
-                     settings.depth, source, notes)
+    return SolverRaos(omega[order], headings, values[:, order], settings.rotation_centre, settings.rho, settings.g,
+                      settings.depth, source, notes)
 
 
 def project_root(path: Path) -> Path:

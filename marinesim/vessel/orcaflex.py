@@ -52,12 +52,11 @@ from pathlib import Path
 import numpy as np
 
 from marinesim.constants import G
-from marinesim.errors import FileFormatError, MarinesimError, ParameterError
+from marinesim.errors import FileFormatError, HeadingError, MarinesimError, ParameterError
+from marinesim.formats import check_file
 from marinesim.tokens import parse_float, read_text
 from marinesim.vessel.rao import RaoTable, make_table
 
-MAX_FILE_BYTES = 64 * 2**20
-"""Largest OrcaFlex text file read (bytes)."""
 MAX_ROWS = 1_000_000
 """Most RAO rows (directions x periods) read from one draught."""
 TABLE_KEY = ("RAOPeriodOrFrequency, RAOSurgeAmp, RAOSurgePhase, RAOSwayAmp, RAOSwayPhase, RAOHeaveAmp, "
@@ -142,11 +141,11 @@ def read_orcaflex(path: str | Path, *, vessel_type: str | None = None, draught: 
     try:
         return make_table(omega, np.mod(np.radians(directions), 2 * math.pi), [0.0], values[None],
                           reference_point=origin, source=str(path), source_format="orcaflex", notes=tuple(notes))
+    except HeadingError as error:
+        raise FileFormatError(path, _line(raos), f"{error} (the file covers direction(s) "
+                              f"{', '.join(f'{h:g}' for h in directions)} deg)") from None
     except ParameterError as error:
-        message = str(error)
-        if "heading" in message:
-            message += f" (the file covers direction(s) {', '.join(f'{h:g}' for h in directions)} deg)"
-        raise FileFormatError(path, _line(raos), message) from None
+        raise FileFormatError(path, _line(raos), str(error)) from None
 
 
 def _convert(values: np.ndarray, settings: dict[str, str]) -> np.ndarray:
@@ -272,15 +271,10 @@ def _pick(path: Path, items: list[tuple[str, object]], wanted: str | None, what:
 
 
 def _compose(path: Path):
-    """The YAML node tree of ``path`` (size bounded first); YAML errors name the line."""
+    """The YAML node tree of ``path`` (size bounded first: :data:`~marinesim.formats.SIZE_LIMITS`); YAML errors name
+    the line."""
     yaml = _yaml()
-    try:
-        size = path.stat().st_size
-    except OSError:
-        size = 0
-    if size > MAX_FILE_BYTES:
-        raise FileFormatError(path, None, f"{size / 2**20:.1f} MB is larger than the {MAX_FILE_BYTES // 2**20} MB "
-                                          "an RAO file may have")
+    check_file(path, "RAO file")
     text = read_text(path).lstrip("\ufeff")
     loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
     try:

@@ -29,7 +29,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from marinesim.constants import G, KNOT
-from marinesim.errors import ParameterError, require_positive
+from marinesim.errors import HeadingError, ParameterError, require_positive
 from marinesim.sea.dispersion import k_from_omega
 
 DOFS = ("surge", "sway", "heave", "roll", "pitch", "yaw")
@@ -210,6 +210,25 @@ class RaoTable:
         return float(self.speed[0]), float(self.speed[-1])
 
 
+@dataclass(frozen=True)
+class SolverRaos:
+    """One body's zero-speed RAOs as a solver's output gives them (AQWA, NEMOH), already in the internal convention,
+    before :func:`make_table`: ``omega`` (rad/s, increasing), ``headings_deg`` (wave travel direction from body x,
+    deg, increasing), ``values`` (headings, frequencies, 6; m/m and rad/m, phase lead), ``reference_point`` (m),
+    ``rho`` (kg/m^3), ``g`` (m/s^2), ``depth`` (m, inf = deep or not given), ``source`` (the file read, or
+    "equation of motion" for RAOs solved from coefficients) and ``notes``."""
+
+    omega: np.ndarray
+    headings_deg: np.ndarray
+    values: np.ndarray
+    reference_point: tuple[float, float, float]
+    rho: float
+    g: float
+    depth: float
+    source: str
+    notes: tuple[str, ...]
+
+
 def one_speed_note(table: RaoTable, speed: float, length: float | None, length_from: str = "") -> str | None:
     """A line for the user where ``table`` has one speed and serves ``speed`` (m/s) far from it: Froude numbers
     ``U / sqrt(g L)`` on the ship's ``length`` (m; ``length_from`` says whose) more than :data:`ONE_SPEED_FROUDE`
@@ -277,7 +296,7 @@ def make_table(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: n
     0..pi are completed by the port/starboard mirror (:data:`MIRROR_SIGN`); headings that leave a
     gap wider than :data:`MAX_HEADING_GAP` make a partial table (:attr:`RaoTable.covered`).
     ``depth``: water depth (m, > 0; inf = deep); ``draft`` and ``length``: the vessel's (m, > 0) if the file
-    gives them. Raises :class:`ParameterError` on anything else.
+    gives them. Raises :class:`HeadingError` on unusable headings, :class:`ParameterError` on anything else.
     """
     depth = require_positive("water depth", depth, allow_infinite=True)
     draft = None if draft is None else require_positive("draft", draft)
@@ -295,7 +314,7 @@ def make_table(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: n
     resonances = _check_amplitudes(omega, beta, speed, values, g)
     _check_increasing("speeds", speed, minimum=None)
     if beta.size == 0 or not np.all(np.isfinite(beta)):
-        raise ParameterError("RAO headings must be finite and at least one")
+        raise HeadingError("RAO headings must be finite and at least one")
     order = np.argsort(beta, kind="stable")
     beta, values = beta[order], values[:, order]
     eps = 1e-9
@@ -310,8 +329,8 @@ def make_table(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: n
     beta, values = beta[order], values[:, order]
     same = np.flatnonzero(np.diff(beta) < eps)
     if same.size:
-        raise ParameterError(f"RAO heading {math.degrees(beta[same[0]]):g} deg is given twice "
-                             "(after wrapping to 0..360)")
+        raise HeadingError(f"RAO heading {math.degrees(beta[same[0]]):g} deg is given twice "
+                           "(after wrapping to 0..360)")
     gaps = np.diff(np.append(beta, beta[0] + 2.0 * math.pi))
     wide = gaps > MAX_HEADING_GAP + eps
     covered = None

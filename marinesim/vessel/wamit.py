@@ -31,7 +31,7 @@ from pathlib import Path
 import numpy as np
 
 from marinesim.constants import G, RHO_SEAWATER
-from marinesim.errors import FileFormatError, ParameterError, require_within
+from marinesim.errors import FileFormatError, HeadingError, ParameterError, require_within
 from marinesim.hull.gdf import read_gdf_header
 from marinesim.hull.wamit_pot import Pot, pot_beside, read_cfg
 from marinesim.vessel.wamit_frc import read_frc
@@ -104,11 +104,11 @@ def table_from(path: Path, omega: np.ndarray, headings_deg: np.ndarray, values: 
         return make_table(omega, np.radians(headings_deg), [0.0], values[None], reference_point=(0.0, 0.0, z),
                           rho=rho, g=settings.g, source=str(path), source_format=source_format, notes=notes,
                           **extra)
+    except HeadingError as error:
+        raise FileFormatError(path, None, f"{error} (the file covers heading(s) "
+                              f"{', '.join(f'{h:g}' for h in headings_deg)} deg only)") from None
     except ParameterError as error:
-        message = str(error)
-        if "heading" in message:
-            message += f" (the file covers heading(s) {', '.join(f'{h:g}' for h in headings_deg)} deg only)"
-        raise FileFormatError(path, None, message) from None
+        raise FileFormatError(path, None, str(error)) from None
 
 
 def _same_headings_once(path: Path, headings_deg: np.ndarray, values: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

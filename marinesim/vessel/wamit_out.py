@@ -27,6 +27,7 @@ import numpy as np
 
 from marinesim.constants import RHO_SEAWATER
 from marinesim.errors import FileFormatError
+from marinesim.formats import check_file
 from marinesim.tokens import parse_float, parse_int, read_text
 from marinesim.vessel.body import RigidBody, gravity_stiffness, rigid_body_mass
 from marinesim.vessel.rao import ROTATIONS, RaoTable
@@ -34,8 +35,6 @@ from marinesim.vessel.wamit import Settings, table_from
 from marinesim.vessel.wamit_forces import dimensional, solve_motions
 from marinesim.vessel.wamit_rows import RIGID_MODES, ignored_modes_note
 
-MAX_FILE_BYTES = 256 * 2**20
-"""The largest report read (a few hundred periods and headings with drift forces stay far below)."""
 BANNER = b"WAMIT  Version"
 SECTIONS = {"ADDED-MASS AND DAMPING COEFFICIENTS": "radiation", "DIFFRACTION EXCITING FORCES AND MOMENTS": "diffraction",
             "HASKIND EXCITING FORCES AND MOMENTS": "haskind", "RESPONSE AMPLITUDE OPERATORS": "motions"}
@@ -149,10 +148,7 @@ def _solve(report: Report, omega: np.ndarray, headings: np.ndarray, length: floa
 
 def _parse(path: Path) -> Report:
     """Read the report's header and period blocks (module docstring); any flaw names the line."""
-    size = path.stat().st_size
-    if size > MAX_FILE_BYTES:
-        raise FileFormatError(path, None, f"{size / 2**20:.1f} MB is larger than the {MAX_FILE_BYTES // 2**20} MB "
-                                          "a WAMIT report may have here")
+    check_file(path, "WAMIT report")
     report = Report(path)
     lines = read_text(path).splitlines()
     if not any(BANNER.decode() in line for line in lines[:20]):
