@@ -1,10 +1,11 @@
 """The viewer's controls: keys to actions on a scene, for the trainee, the instructor and a replay.
 
-Kept apart from the window so that they act the same in a test as at the keyboard: a key is
-named as pyglet names it (``pyglet.window.key.symbol_string``), e.g. ``"BRACKETRIGHT"``, ``"_1"``.
-Every key press goes into the session's journal, and every action that changes the exercise goes
-through :meth:`Exercise.act`, so that a replay of the log applies it again at the same time. In a
-replay the timeline is the log's: keys seek, pause and change the pace instead.
+Which key calls which method, and in which context, is the keymap's table (:mod:`marinesim.render.keys`). Kept
+apart from the window so that they act the same in a test as at the keyboard: a key is named as pyglet names it
+(``pyglet.window.key.symbol_string``), e.g. ``"BRACKETRIGHT"``, ``"_1"``. Every key press goes into the session's
+journal, and every action that changes the exercise goes through :meth:`Exercise.act`, so that a replay of the log
+applies it again at the same time. In a replay the timeline is the log's: keys seek, pause and change the pace
+instead.
 """
 
 from __future__ import annotations
@@ -16,30 +17,16 @@ from typing import Callable
 
 import numpy as np
 
-from marinesim.render.hud import LEVEL_COLORS, MESSAGE_COLOR, Slider
-
 from marinesim.errors import MarinesimError
+from marinesim.render.hud import LEVEL_COLORS, MESSAGE_COLOR, Slider
+from marinesim.render.keys import (HELM_STEP_DEG, HS_STEP, RAIN_STEPS_MM_H, TIME_STEP_H, TP_STEP, TURN_STEP_DEG,
+                                   VISIBILITY_STEP, dispatch, help_lines)
 from marinesim.render.scene import Scene
 from marinesim.scenario.model import MAX_VISIBILITY_M, MIN_VISIBILITY_M
 from marinesim.session.recorder import Recorder
 from marinesim.session.timeline import CHANGE_RAMP_S
 
-HS_STEP = 1.1       # each press: heights x 1.1 (or / 1.1)
-TP_STEP = 1.05      # periods x 1.05
-TURN_STEP_DEG = 15.0
-HELM_STEP_DEG = 5.0
-"""LEFT / RIGHT: the rudder order this much to port / starboard (a vessel on station: her heading)."""
-COURSE_STEPS_DEG = (1.0, 10.0)
-"""U / I and 9 / 0: the autopilot's course this much to port / starboard."""
-SET_POINT_STEP_M = 1.0
-"""How far a key moves a DP's position set point (m): the reference model takes her there at 0.3 m/s."""
 TIME_SCALES = (0.125, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0)
-VISIBILITY_STEP = 2.0  # each press: visibility / 2 (fog thickens) or x 2 (it lifts)
-TIME_STEP_H = 1.0
-RAIN_STEPS_MM_H = (0.0, 2.5, 10.0, 50.0)
-"""The instructor's O steps the rain through these: none, light, heavy, violent showers."""
-SEEK_STEP_S = 30.0
-"""A replay's LEFT / RIGHT: back / forward this long (s)."""
 FREE_SPEED_M_S = 40.0
 MESSAGE_S = 8.0
 """A status message stays up this long (s of wall time), then goes."""
@@ -65,6 +52,8 @@ class Controls:
     typing: str | None = None
     """The instructor's message being typed (None: not typing)."""
     restart: Callable[[float], None] | None = None
+    on_quit: Callable[[], None] | None = None
+    """What ESC calls (the viewer's: close the window)."""
     _opened_now: bool = field(default=False, init=False, repr=False)
     """The key that opened the message is still to come as text: it is not part of the message."""
 
@@ -80,16 +69,41 @@ class Controls:
         """Show ``text`` on the status lines for :data:`MESSAGE_S` of wall time."""
         self.message, self.message_age_s = text, 0.0
 
+    def contexts(self) -> set[str]:
+        """The contexts of :data:`~marinesim.render.keys.CONTEXTS` the keys act in now: while a message is being
+        typed only ``typing``; the free camera's keys with the free camera."""
+        if self.typing is not None:
+            return {"typing"}
+        found = self.session_contexts() - {"typing", "free"}
+        return found | ({"free"} if self.scene.camera_name == "free" else set())
+
+    def session_contexts(self) -> set[str]:
+        """Every context this session's keys can act in: live or a replay, and the vessel's kind."""
+        if self.scene.replay is not None:
+            return {"always", "free", "replay"}
+        found = {"always", "free", "live", "typing"}
+        sim = self.scene.sim
+        if sim.vessel is not None:
+            ship = sim.vessel.ship
+            if ship.kind != "station":
+                found.add("ship")
+            else:
+                found.add("station")
+                if sim.station is not None:
+                    found |= {"faults"} | ({"dp"} if ship.dp is not None else set())
+        return found
+
+    def help_lines(self) -> list[str]:
+        """The help overlay (H): what every key of this session does."""
+        return help_lines(self.session_contexts())
+
     def frame(self, wall_dt: float, held: set[str] = frozenset()) -> None:
-        """One frame of ``wall_dt`` seconds: move the free camera for held keys, advance the run."""
+        """One frame of ``wall_dt`` seconds: act on the keys held (the free camera's), advance the run."""
         self.message_age_s += max(wall_dt, 0.0)
         wall_dt = min(max(wall_dt, 0.0), MAX_FRAME_S)
-        if self.scene.camera_name == "free" and self.typing is None:
-            step = FREE_SPEED_M_S * wall_dt
-            moves = {"W": (step, 0, 0), "S": (-step, 0, 0), "D": (0, step, 0), "A": (0, -step, 0),
-                     "E": (0, 0, step), "C": (0, 0, -step)}
-            for key in held & moves.keys():
-                self.scene.cameras["free"].move(*moves[key])
+        for key, binding in dispatch(self.contexts(), held=True).items():
+            if key in held:
+                getattr(self, binding.action)(wall_dt, *binding.args)
         if not self.paused and wall_dt > 0:
             self.scene.step(wall_dt * self.time_scale)
         if self.recorder is not None:
@@ -98,15 +112,14 @@ class Controls:
         self.scene.slider = self.slider()
 
     def press(self, key: str) -> None:
-        """React to the key named ``key`` (journaled); unknown keys do nothing."""
-        if self.typing is not None:
-            self._type_key(key)
-            return
-        self.exercise.note("key", key=key)
-        action = self.actions().get(key)
-        if action is not None:
+        """React to the key named ``key`` as :data:`~marinesim.render.keys.KEYMAP` says (journaled, except the keys
+        of a message being typed, which are the message's); unbound keys do nothing."""
+        if self.typing is None:
+            self.exercise.note("key", key=key)
+        binding = dispatch(self.contexts()).get(key)
+        if binding is not None:
             try:
-                action()
+                getattr(self, binding.action)(*binding.args)
             except MarinesimError as error:  # e.g. a period change the ocean's tiles cannot carry
                 self.say(str(error))
 
@@ -116,110 +129,135 @@ class Controls:
             self.typing += "".join(c for c in text if c.isprintable())
         self._opened_now = False
 
-    def _type_key(self, key: str) -> None:
-        if key in ("RETURN", "ENTER"):
-            text, self.typing = self.typing, None
-            if text.strip():
-                self._act("message", text=text)
-        elif key == "ESCAPE":
-            self.typing = None
-        elif key == "BACKSPACE":
-            self.typing = self.typing[:-1]
-
     def _act(self, action: str, **fields) -> None:
         self.exercise.act(action, **fields)
 
-    def actions(self) -> dict[str, Callable[[], None]]:
+    # the view and the session
+
+    def camera(self, name: str) -> None:
+        """Look through the camera ``name`` (one of :data:`~marinesim.render.CAMERAS`)."""
+        self.scene.camera_name = name
+
+    def fly(self, wall_dt: float, forward: float, right: float, up: float) -> None:
+        """The free camera flies ``wall_dt`` s at :data:`FREE_SPEED_M_S` along (forward, right, up)."""
+        step = FREE_SPEED_M_S * wall_dt
+        self.scene.cameras["free"].move(step * forward, step * right, step * up)
+
+    def quit(self) -> None:
+        """Close the window (``on_quit``, the viewer's): a live session writes its log."""
+        if self.on_quit is not None:
+            self.on_quit()
+
+    # the sea, over CHANGE_RAMP_S
+
+    def _change(self, **fields) -> None:
+        self._act("change", ramp_s=CHANGE_RAMP_S, **fields)
+
+    def wave_height(self, direction: int) -> None:
+        """Wave heights x :data:`HS_STEP` (``direction`` 1) or / it (-1)."""
+        self._change(hs_factor=HS_STEP if direction > 0 else 1.0 / HS_STEP)
+
+    def wave_period(self, direction: int) -> None:
+        """Wave periods x :data:`TP_STEP` (``direction`` 1) or / it (-1)."""
+        self._change(tp_factor=TP_STEP if direction > 0 else 1.0 / TP_STEP)
+
+    def turn_waves(self, direction: int) -> None:
+        """The waves turn :data:`TURN_STEP_DEG` clockwise (``direction`` 1) or anticlockwise (-1)."""
+        self._change(turn_waves_deg=direction * TURN_STEP_DEG)
+
+    # the exercise
+
+    def acknowledge(self) -> None:
+        """The trainee acknowledges the alarms."""
+        self._act("acknowledge")
+
+    def start_message(self) -> None:
+        self.typing, self._opened_now = "", True
+
+    def send_message(self) -> None:
+        text, self.typing = self.typing, None
+        if text.strip():
+            self._act("message", text=text)
+
+    def cancel_message(self) -> None:
+        self.typing = None
+
+    def erase(self) -> None:
+        """The message being typed loses its last character."""
+        self.typing = self.typing[:-1]
+
+    # the instructor: weather and faults
+
+    def _weather(self, **fields) -> None:
+        self._act("weather", **fields)
+
+    def visibility(self, direction: int) -> None:
+        """The fog lifts (``direction`` 1: visibility x :data:`VISIBILITY_STEP`) or thickens (-1: / it)."""
+        air = self.scene.sim.environment
+        if direction > 0:
+            self._weather(visibility_m=min(air.visibility_m * VISIBILITY_STEP, MAX_VISIBILITY_M))
+        else:
+            self._weather(visibility_m=max(air.visibility_m / VISIBILITY_STEP, MIN_VISIBILITY_M))
+
+    def clouds(self, oktas: int) -> None:
+        """The cloud cover ``oktas`` more (fewer when negative), within 0 to 8."""
+        cover = self.scene.sim.environment.cloud_cover_oktas + float(oktas)
+        self._weather(cloud_cover_oktas=min(max(cover, 0.0), 8.0))
+
+    def clock(self, direction: int) -> None:
+        """The scenario's clock :data:`TIME_STEP_H` on (``direction`` 1) or back (-1)."""
+        self._weather(hours=direction * TIME_STEP_H)
+
+    def rain(self) -> None:
+        """The rain's next step of :data:`RAIN_STEPS_MM_H` (after the last: none)."""
+        now = self.scene.sim.environment.rain_mm_h
+        self._weather(rain_mm_h=next((r for r in RAIN_STEPS_MM_H if r > now), 0.0))
+
+    def drift_reference(self) -> None:
+        """The DP's position reference drifts."""
+        self._act("order", fault="reference drift")
+
+    # the ship: helm, telegraph, autopilot (the orders given, not yet answered too)
+
+    def _order(self, **fields) -> None:
+        self._act("order", **fields)
+
+    def helm(self, direction: int) -> None:
+        """The rudder order :data:`HELM_STEP_DEG` to starboard (``direction`` 1) or port (-1), hand steering."""
         sim = self.scene.sim
+        hard, orders = math.degrees(sim.vessel.ship.steering.max_angle), sim.voyage.orders
+        rudder = math.degrees(orders.rudder) if not orders.autopilot else sim.conning()["rudder_order_deg"]
+        self._order(rudder_deg=round(max(min(rudder + direction * HELM_STEP_DEG, hard), -hard), 6))
 
-        def change(**kwargs) -> Callable[[], None]:
-            return lambda: self._act("change", ramp_s=CHANGE_RAMP_S, **kwargs)
+    def rudder_hard(self, side: int) -> None:
+        """The rudder hard a-starboard (``side`` 1), hard a-port (-1) or midships (0)."""
+        self._order(rudder_deg=side * math.degrees(self.scene.sim.vessel.ship.steering.max_angle))
 
-        def camera(name: str) -> Callable[[], None]:
-            return lambda: setattr(self.scene, "camera_name", name)
-
-        def weather(**kwargs) -> Callable[[], None]:
-            return lambda: self._act("weather", **kwargs)
-
-        air = sim.environment
-
-        actions = {
-            "H": self.toggle_help, "TAB": self.toggle_panels, "SPACE": self.toggle_pause, "R": self.toggle_recording,
-            "_1": camera("orbit"), "_2": camera("bridge"), "_3": camera("free"), "B": self.toggle_binoculars,
-            "PLUS": lambda: self._scale_time(1), "EQUAL": lambda: self._scale_time(1),
-            "NUM_ADD": lambda: self._scale_time(1), "MINUS": lambda: self._scale_time(-1),
-            "NUM_SUBTRACT": lambda: self._scale_time(-1),
-        }
-        if self.scene.replay is not None:
-            return actions | {"LEFT": lambda: self.seek(sim.time - SEEK_STEP_S),
-                              "RIGHT": lambda: self.seek(sim.time + SEEK_STEP_S), "HOME": lambda: self.seek(0.0)}
-        actions |= {
-            "RETURN": lambda: self._act("acknowledge"), "ENTER": lambda: self._act("acknowledge"),
-            "N": self.trigger_next, "M": self.start_message,
-            "BRACKETRIGHT": change(hs_factor=HS_STEP), "BRACKETLEFT": change(hs_factor=1.0 / HS_STEP),
-            "PERIOD": change(tp_factor=TP_STEP), "COMMA": change(tp_factor=1.0 / TP_STEP),
-            "APOSTROPHE": change(turn_waves_deg=TURN_STEP_DEG), "SEMICOLON": change(turn_waves_deg=-TURN_STEP_DEG),
-            "F": weather(visibility_m=max(air.visibility_m / VISIBILITY_STEP, MIN_VISIBILITY_M)),
-            "G": weather(visibility_m=min(air.visibility_m * VISIBILITY_STEP, MAX_VISIBILITY_M)),
-            "K": weather(cloud_cover_oktas=min(air.cloud_cover_oktas + 1.0, 8.0)),
-            "J": weather(cloud_cover_oktas=max(air.cloud_cover_oktas - 1.0, 0.0)),
-            "T": weather(hours=TIME_STEP_H), "Y": weather(hours=-TIME_STEP_H),
-            "O": weather(rain_mm_h=next((r for r in RAIN_STEPS_MM_H if r > air.rain_mm_h), 0.0)),
-        }
-        if sim.vessel is not None:
-            actions |= self._bridge_keys()
-        return actions
-
-    def _bridge_keys(self) -> dict[str, Callable[[], None]]:
-        """The trainee's orders to the ship: helm, telegraph, autopilot and its course (a vessel on station: her
-        heading)."""
+    def telegraph(self, steps: int) -> None:
+        """The telegraph ``steps`` notches ahead (astern when negative)."""
         sim = self.scene.sim
-        ship, c, orders = sim.vessel.ship, sim.conning(), sim.voyage.orders  # the orders given, not yet answered too
+        orders = sim.voyage.orders
+        self._order(engine=sim.vessel.ship.engine.step(orders.engine, steps, orders.rps))
 
-        def order(**fields) -> Callable[[], None]:
-            return lambda: self._act("order", **fields)
+    def toggle_autopilot(self) -> None:
+        self._order(autopilot=not self.scene.sim.voyage.orders.autopilot)
 
-        course = math.degrees(orders.course) % 360.0 if orders.autopilot else c["heading_deg"]
+    def steer(self, step_deg: float) -> None:
+        """The course ``step_deg`` to starboard (to port when negative) of the autopilot's, or of her heading (hand
+        steering; a vessel on station: her heading order)."""
+        sim = self.scene.sim
+        orders = sim.voyage.orders
+        course = math.degrees(orders.course) % 360.0 if orders.autopilot else sim.conning()["heading_deg"]
+        self._order(course_deg=round((course + step_deg) % 360.0, 6))
 
-        def steer(step: float) -> Callable[[], None]:
-            return order(course_deg=round((course + step) % 360.0, 6))
-
-        if ship.kind == "station":
-            keys = {"LEFT": steer(-HELM_STEP_DEG), "RIGHT": steer(HELM_STEP_DEG)}
-            if sim.station is not None:  # the instructor's faults on a vessel on DP or moorings
-                keys["L"] = self.next_fault
-                if ship.dp is not None:
-                    keys["Q"] = order(fault="reference drift")
-                    keys |= self._set_point_keys(order, orders)
-            return keys
-        hard = math.degrees(ship.steering.max_angle)
-        rudder = math.degrees(orders.rudder) if not orders.autopilot else c["rudder_order_deg"]
-
-        def helm(step: float) -> Callable[[], None]:
-            return order(rudder_deg=round(max(min(rudder + step, hard), -hard), 6))
-
-        def telegraph(steps: int) -> Callable[[], None]:
-            return order(engine=ship.engine.step(orders.engine, steps, orders.rps))
-
-        small, large = COURSE_STEPS_DEG
-        return {"LEFT": helm(-HELM_STEP_DEG), "RIGHT": helm(HELM_STEP_DEG), "X": order(rudder_deg=0.0),
-                "Z": order(rudder_deg=-hard), "V": order(rudder_deg=hard),
-                "UP": telegraph(1), "DOWN": telegraph(-1),
-                "P": order(autopilot=not orders.autopilot),
-                "U": steer(-small), "I": steer(small), "_9": steer(-large), "_0": steer(large)}
-
-    def _set_point_keys(self, order, orders) -> dict[str, Callable[[], None]]:
-        """The DP operator's set point moved :data:`SET_POINT_STEP_M` ahead or astern (UP/DOWN) and to port or
-        starboard (Z/V) of her heading set point."""
+    def move_set_point(self, ahead: float, starboard: float) -> None:
+        """The DP's position set point ``ahead`` and to ``starboard`` (m) of where it is, along her heading set
+        point."""
+        orders = self.scene.sim.voyage.orders
         psi = orders.course
-
-        def move(ahead: float, starboard: float) -> Callable[[], None]:
-            north = orders.north + ahead * math.cos(psi) - starboard * math.sin(psi)
-            east = orders.east + ahead * math.sin(psi) + starboard * math.cos(psi)
-            return order(set_north_m=round(north, 6), set_east_m=round(east, 6))
-
-        step = SET_POINT_STEP_M
-        return {"UP": move(step, 0.0), "DOWN": move(-step, 0.0), "Z": move(0.0, -step), "V": move(0.0, step)}
+        north = orders.north + ahead * math.cos(psi) - starboard * math.sin(psi)
+        east = orders.east + ahead * math.sin(psi) + starboard * math.cos(psi)
+        self._order(set_north_m=round(north, 6), set_east_m=round(east, 6))
 
     def next_fault(self) -> None:
         """The instructor fails the next thruster still working (a vessel on DP) or parts the next line still
@@ -243,9 +281,6 @@ class Controls:
             return
         self._act("trigger", index=pending[0])
 
-    def start_message(self) -> None:
-        self.typing, self._opened_now = "", True
-
     def toggle_binoculars(self) -> None:
         """On the bridge: raise the binoculars to the eye, or lower them."""
         if self.scene.camera_name != "bridge":
@@ -267,9 +302,13 @@ class Controls:
         self.paused = not self.paused
         self.exercise.note("pause" if self.paused else "resume")
 
-    def _scale_time(self, direction: int) -> None:
+    def scale_time(self, direction: int) -> None:
         self.time_scale_index = int(np.clip(self.time_scale_index + direction, 0, len(TIME_SCALES) - 1))
         self.exercise.note("time_scale", scale=self.time_scale)
+
+    def seek_by(self, seconds: float) -> None:
+        """A replay's clock ``seconds`` on (back when negative)."""
+        self.seek(self.scene.sim.time + seconds)
 
     def seek(self, t: float) -> None:
         """A replay's clock to ``t`` (s, within the session): forward through the log, back by starting again."""
@@ -324,31 +363,3 @@ class Controls:
                       f"replay {self.scene.sim.time:7.1f} / {replay.log.end_s:.1f} s   "
                       "LEFT/RIGHT -/+30 s  HOME start  click: seek")
 
-
-HELP = [
-    "marinesim viewer",
-    "",
-    "ENTER          acknowledge the alarms",
-    "N              instructor: trigger the next scripted event now",
-    "M              instructor: type a message (ENTER sends, ESC cancels)",
-    "mouse drag     turn the view        scroll   zoom (orbit, bridge), fly (free)",
-    "1 / 2 / 3      orbit / bridge / free camera      B   binoculars (bridge, 7x)",
-    "W A S D E C    fly the free camera (forward, left, back, right, up, down)",
-    "SPACE          freeze / resume      + / -    time faster / slower",
-    "[ / ]          wave height down / up (x1.1, over 10 s)",
-    ", / .          wave period down / up (x1.05)",
-    "; / '          waves turn anticlockwise / clockwise 15 deg",
-    "LEFT / RIGHT   helm 5 deg to port / starboard (hand steering; on station: heading 5 deg)",
-    "Z / X / V      hard a-port / midships / hard a-starboard",
-    "UP / DOWN      telegraph one step ahead / astern (full ahead ... stop ... full astern)",
-    "P              autopilot on (holds the heading) / off (hand steering)",
-    "U / I  9 / 0   autopilot course 1 / 10 deg to port / starboard",
-    "F / G          instructor: fog thickens / lifts (visibility / 2, x 2)",
-    "J / K          instructor: cloud cover -/+ 1 okta    Y / T   clock -/+ 1 h (scenarios with time_utc)",
-    "O              instructor: rain none / light / heavy / violent showers",
-    "UP/DOWN Z/V    on DP: set point 1 m ahead / astern, to port / starboard",
-    "L / Q          instructor (DP, moorings): next thruster lost or line parted / position reference drifts",
-    "R              start / stop recording the motions (CSV, as marinesim export)",
-    "TAB            HUD: compact strip / full panels (motions, charts, every criterion)",
-    "H              this help            ESC      quit",
-]

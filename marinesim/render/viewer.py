@@ -16,7 +16,7 @@ from pathlib import Path
 from marinesim.errors import MarinesimError
 from marinesim.gl import GL_VERSION, GraphicsError
 from marinesim.render.clock import FrameClock
-from marinesim.render.controls import HELP, Controls
+from marinesim.render.controls import Controls
 from marinesim.render.renderer import RenderOptions
 from marinesim.render.scene import Scene, solver_wanted
 from marinesim.scenario import Scenario
@@ -73,7 +73,7 @@ class Viewer:
         self._scene_args = (self.ctx, scenario, camera, options)
         self.log_path, self.replay_log, self.headless = log_path, replay, headless
         self.scene = self._new_scene()
-        self.controls = Controls(self.scene, restart=self._restart)
+        self.controls = Controls(self.scene, restart=self._restart, on_quit=self.close)
         self.held: set[str] = set()
         self._last = time.perf_counter()
         self._alarms_heard = 0
@@ -86,12 +86,9 @@ class Viewer:
         @self.window.event
         def on_key_press(symbol: int, modifiers: int) -> bool | None:
             name = key.symbol_string(symbol)
-            if name == "ESCAPE" and self.controls.typing is None:
-                self.close()
-                return pyglet.event.EVENT_HANDLED
             self.held.add(name)
-            self.controls.press(name)
-            return pyglet.event.EVENT_HANDLED if name == "ESCAPE" else None
+            self.controls.press(name)  # every key as the keymap says, ESC (quit) too
+            return pyglet.event.EVENT_HANDLED if name == "ESCAPE" else None  # not pyglet's own ESC
 
         @self.window.event
         def on_text(text: str) -> None:
@@ -171,7 +168,7 @@ class Viewer:
         self.ctx.screen.use()
         size = self.window.get_framebuffer_size()
         self.ctx.screen.viewport = (0, 0, *size)
-        self.scene.draw(size, help_lines=HELP if self.controls.show_help else None)
+        self.scene.draw(size, help_lines=self.controls.help_lines() if self.controls.show_help else None)
 
     def run(self) -> None:
         import pyglet
