@@ -9,6 +9,7 @@ the other way (the renderer's timeline being imported by the export, as it once 
 from __future__ import annotations
 
 import ast
+import re
 from pathlib import Path
 
 import pytest
@@ -18,7 +19,7 @@ from conftest import ROOT
 PACKAGE = ROOT / "marinesim"
 LAYERS = (
     {"__init__", "errors", "constants", "angles", "atomic", "cache", "tokens", "recent", "progress",
-     "resources", "formats", "pose", "gl"},
+     "resources", "formats", "pose", "gl", "figures"},
     {"sea"}, {"hull"}, {"vessel"}, {"manoeuvring"}, {"station"}, {"wake"}, {"solver"}, {"criteria"},
     {"scenario"}, {"session"}, {"study"}, {"report"}, {"render"}, {"cli", "__main__"},
 )
@@ -86,3 +87,23 @@ def test_no_import_cycle():
     for name in sorted(graph):
         if name not in done:
             visit(name, [name])
+
+
+def _strings(path: Path) -> list[str]:
+    """The string constants of the file ``path`` (f-strings' literal parts included), docstrings left out."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    docstrings = {id(node.body[0].value) for node in ast.walk(tree)
+                  if isinstance(node, (ast.Module, ast.ClassDef, ast.FunctionDef, ast.AsyncFunctionDef))
+                  and node.body and isinstance(node.body[0], ast.Expr) and isinstance(node.body[0].value, ast.Constant)}
+    return [node.value for node in ast.walk(tree)
+            if isinstance(node, ast.Constant) and isinstance(node.value, str) and id(node) not in docstrings]
+
+
+@pytest.mark.parametrize("name", sorted(MODULES))
+def test_no_higher_layer_named_in_a_string(name):
+    """A module named in a string (``"marinesim.vessel.wamit:read_wamit"``, imported by that name when used) is an
+    import the checks above cannot see: a base module registering the readers so would hide that it depends on the
+    vessel and hull packages. Such a string may name the module's own layer and those below it only."""
+    named = {f"marinesim.{top}" for text in _strings(MODULES[name]) for top in re.findall(r"\bmarinesim\.(\w+)", text)}
+    upward = sorted(m for m in named if m in MODULES and _layer(m) > _layer(name))
+    assert not upward, f"{name} (layer {_layer(name)}) names {upward} from a higher layer in a string"

@@ -5,19 +5,16 @@ from __future__ import annotations
 from pathlib import Path
 
 from marinesim.constants import KNOT
+from marinesim.figures import figure, save
 from marinesim.manoeuvring.trials import Trials
 
 
 def plot_trials(result: Trials, path: Path) -> None:
     """A PNG of ``result``: the tracks of both turning circles and the crash stop in ship lengths (north up), the
     10/10 and 20/20 zig-zags' heading and rudder against time, each criterion's value against its limit."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
     length = result.length_m
-    fig, axes = plt.subplots(2, 2, figsize=(12, 10), gridspec_kw={"width_ratios": [1, 1.3]})
+    fig = figure(12, 10)
+    axes = fig.subplots(2, 2, gridspec_kw={"width_ratios": [1, 1.3]})
     track = axes[0, 0]
     for turn, colour in ((result.port, "tab:red"), (result.starboard, "tab:green")):
         r = turn.record
@@ -64,5 +61,4 @@ def plot_trials(result: Trials, path: Path) -> None:
                     f"L {length:.0f} m, approach {result.speed_m_s / KNOT:.1f} kn, calm water")
     fig.suptitle(f"{result.name}: standard manoeuvres (IMO MSC.137(76))", fontsize=13)
     fig.tight_layout()
-    fig.savefig(path, dpi=100)
-    plt.close(fig)
+    save(fig, path)

@@ -1,18 +1,19 @@
 """The after-action report's figures as PNG bytes: a criterion's running value over the run, the timeline, and
 the ship's track over the ground (to scale, north up) and her handling (heading, speed, rudder, propeller).
 
-Drawn with :class:`matplotlib.figure.Figure` on the Agg canvas (never pyplot: no global figure state)
-1000 px wide (the track as tall as its shape needs) at 100 dpi, every font size given, and saved without the
-PNG's ``Software`` text, so the same data give the same bytes. Time runs along x as elapsed min:s (h:min:s past an hour),
-the way the report's tables give it (:func:`clock`).
+Made and written by :mod:`marinesim.figures` (its dpi, and no version or date in the file: the same data give the
+same bytes), 1000 px wide (the track as tall as its shape needs), every font size given. Time runs along x as
+elapsed min:s (h:min:s past an hour), the way the report's tables give it (:func:`clock`).
 """
 
 from __future__ import annotations
 
-import io
 import math
 
 import numpy as np
+
+from marinesim import figures
+from marinesim.figures import DPI
 
 OK, CAUTION, EXCEEDED, NONE = "#2e9e44", "#f0a800", "#d0312d", "#6b7280"
 """The bridge alarm panel's colours: green, amber, red, and grey for no value."""
@@ -20,7 +21,6 @@ INK, MUTED, GRID = "#1b1f24", "#5b6470", "#e3e7ec"
 VALUE = "#1f4e8c"
 """The running value's line: a dark blue that none of the alarm colours is confused with."""
 EVENT, MESSAGE, ACTION = "#3d4651", "#1f6fb2", "#7a4fa0"
-DPI = 100
 WIDTH_IN = 10.0
 """Figures are 1000 px wide: the page's text column, sharp at 100 % zoom and on A4."""
 LEFT_PX, RIGHT_PX, BOTTOM_PX = 72, 22, 44
@@ -144,7 +144,7 @@ def criterion_png(criterion: dict, duration_s: float, events: list[dict], alarms
     ax.set_axisbelow(True)
     for side in ("top", "right"):
         ax.spines[side].set_visible(False)
-    return _png(figure)
+    return figures.png(figure)
 
 
 def timeline_png(duration_s: float, events: list[dict], messages: list[dict], actions: list[dict],
@@ -218,7 +218,7 @@ def timeline_png(duration_s: float, events: list[dict], messages: list[dict], ac
     ax.set_axisbelow(True)
     for side in ("top", "right", "left"):
         ax.spines[side].set_visible(False)
-    return _png(figure)
+    return figures.png(figure)
 
 
 TRACK = VALUE
@@ -354,14 +354,13 @@ def track_png(ship: dict, events: list[dict], alarms: list[tuple[int, dict]] | l
     ax.set_title(f"{name} — track over the ground", fontsize=12, loc="left", color=INK, pad=8, fontweight="bold")
     ax.set_title(f"midship, from the start · her outline every {_every(step)}", fontsize=9.5, loc="right",
                  color=MUTED, pad=9)
-    return _png(figure)
+    return figures.png(figure)
 
 
 def handling_png(ship: dict, events: list[dict], duration_s: float) -> bytes:
     """``ship``'s handling over a run of ``duration_s``, four panels on one time axis: heading (with the autopilot's
     set course dashed where it steers), speed over ground, rudder angle and order (+ starboard), propeller rpm
     (astern negative); ``events`` that happened as dashed verticals, E-numbered."""
-    from matplotlib.figure import Figure
     from matplotlib.ticker import FixedLocator, FuncFormatter, MultipleLocator
 
     t = np.asarray(ship.get("time_s") or [], float)
@@ -377,7 +376,7 @@ def handling_png(ship: dict, events: list[dict], duration_s: float) -> bytes:
                                                    "propeller_rpm"))
     panel_px, gap_px, top_px = 118.0, 30.0, 60.0
     height = top_px + 4 * panel_px + 3 * gap_px + BOTTOM_PX
-    figure = Figure(figsize=(WIDTH_IN, height / DPI), dpi=DPI, facecolor="white")
+    figure = figures.figure(WIDTH_IN, height / DPI, facecolor="white")
     width = WIDTH_IN * DPI
     figure.subplots_adjust(left=LEFT_PX / width, right=1 - RIGHT_PX / width, bottom=BOTTOM_PX / height,
                            top=1 - top_px / height, hspace=gap_px / panel_px)
@@ -457,7 +456,7 @@ def handling_png(ship: dict, events: list[dict], duration_s: float) -> bytes:
         _tag(axes[0], at, 0.975 - 0.16 * lane, _numbered("E", [e["index"] for e in group]), EVENT, _align(at, span))
     figure.text(LEFT_PX / width, 1 - 8 / height, f"{ship.get('name') or 'the ship'} — handling", fontsize=12,
                 color=INK, fontweight="bold", ha="left", va="top")
-    return _png(figure)
+    return figures.png(figure)
 
 
 def _panel_titles(ax, title: str, keys: list[tuple[str, str, str]]) -> None:
@@ -530,7 +529,7 @@ def _station_png(name: str, t: np.ndarray, heading: np.ndarray, reach: float, ma
     _north_arrow(ax, np.zeros(1), np.zeros(1))
     ax.set_title(f"{name} — track over the ground", fontsize=12, loc="left", color=INK, pad=8, fontweight="bold")
     ax.set_title("midship, from the start", fontsize=9.5, loc="right", color=MUTED, pad=9)
-    return _png(figure)
+    return figures.png(figure)
 
 
 def _broken(t: np.ndarray, v: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -721,19 +720,11 @@ def window_text(window_s: float | None) -> str:
 
 def _figure(height_in: float, top_px: float):
     """A figure ``height_in`` tall with one axes in the fixed margins (``top_px`` above it, for a title)."""
-    from matplotlib.figure import Figure  # loaded with the first plot: the package imports fast
-
-    figure = Figure(figsize=(WIDTH_IN, height_in), dpi=DPI, facecolor="white")
+    figure = figures.figure(WIDTH_IN, height_in, facecolor="white")
     width, height = WIDTH_IN * DPI, height_in * DPI
     figure.subplots_adjust(left=LEFT_PX / width, right=1 - RIGHT_PX / width, bottom=BOTTOM_PX / height,
                            top=1 - top_px / height)
     return figure, figure.add_subplot()
-
-
-def _png(figure) -> bytes:
-    buffer = io.BytesIO()
-    figure.savefig(buffer, format="png", dpi=DPI, metadata={"Software": None}, pil_kwargs={"optimize": True})
-    return buffer.getvalue()
 
 
 def _span(duration_s: float | None, t: np.ndarray) -> float:
@@ -854,7 +845,7 @@ def footprint_png(ship: dict) -> bytes:
     ax.set_title(f"{ship.get('name') or 'the vessel'} — footprint around the set point", fontsize=12, loc="left",
                  color=INK, pad=8, fontweight="bold")
     ax.set_title(words, fontsize=9.5, loc="right", color=EXCEEDED if outside else MUTED, pad=9)
-    return _png(figure)
+    return figures.png(figure)
 
 
 def station_use_png(ship: dict, duration_s: float) -> bytes:
@@ -867,10 +858,8 @@ def station_use_png(ship: dict, duration_s: float) -> bytes:
     if lines:
         groups = [(f"line {name}", np.asarray(values, float)[: t.size])
                   for name, values in (station.get("lines") or {}).items()]
-    from matplotlib.figure import Figure
-
     height = 60.0 + 2 * 150.0 + 44.0 + BOTTOM_PX
-    figure = Figure(figsize=(WIDTH_IN, height / DPI), dpi=DPI, facecolor="white")
+    figure = figures.figure(WIDTH_IN, height / DPI, facecolor="white")
     figure.subplots_adjust(left=LEFT_PX / (WIDTH_IN * DPI), right=1 - RIGHT_PX / (WIDTH_IN * DPI),
                            bottom=BOTTOM_PX / height, top=1 - 60.0 / height, hspace=44.0 / 150.0)
     wind_ax, use_ax = figure.subplots(2, 1, sharex=True)
@@ -895,4 +884,4 @@ def station_use_png(ship: dict, duration_s: float) -> bytes:
     figure.suptitle(f"{ship.get('name') or 'the vessel'} — wind and " + ("mooring line tensions" if lines else
                     "thruster use"), x=LEFT_PX / (WIDTH_IN * DPI), ha="left", fontsize=12, color=INK,
                     fontweight="bold")
-    return _png(figure)
+    return figures.png(figure)

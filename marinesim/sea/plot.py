@@ -7,6 +7,7 @@ from pathlib import Path
 
 import numpy as np
 
+from marinesim.figures import figure, save
 from marinesim.sea.ocean import Ocean, TileFields
 
 
@@ -29,13 +30,9 @@ def height_on_grid(fields: list[TileFields], x: np.ndarray, y: np.ndarray) -> np
 
 def plot_sea(ocean: Ocean, path: Path, t: float = 0.0, extent_m: float | None = None) -> None:
     """Write a PNG: the 1-D spectrum (total and per system) and a height map at time ``t``."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
     sea = ocean.sea
-    fig, (ax_s, ax_h) = plt.subplots(1, 2, figsize=(13, 5.2))
+    fig = figure(13, 5.2)
+    ax_s, ax_h = fig.subplots(1, 2)
     wp = 2.0 * math.pi / sea.tp
     omega = np.linspace(0.02 * wp, 4.0 * wp, 1500)
     if sea.spectral_systems:
@@ -63,23 +60,17 @@ def plot_sea(ocean: Ocean, path: Path, t: float = 0.0, extent_m: float | None = 
     ax_h.set_ylabel("y north [m]")
     ax_h.set_title(f"surface at t = {t:g} s (seed {ocean.seed})")
     fig.tight_layout()
-    fig.savefig(path, dpi=100, format="png")
-    plt.close(fig)
+    save(fig, path)
 
 
 def plot_series(times: np.ndarray, values: np.ndarray, label: str, title: str, path: Path) -> None:
     """Write a PNG of one time series (``label`` names the quantity and its unit)."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig, ax = plt.subplots(figsize=(12, 3.6))
+    fig = figure(12, 3.6)
+    ax = fig.subplots()
     ax.plot(times, values, lw=0.8)
     ax.set_xlabel("time [s]")
     ax.set_ylabel(label)
     ax.set_title(title)
     ax.grid(alpha=0.3)
     fig.tight_layout()
-    fig.savefig(path, dpi=100, format="png")
-    plt.close(fig)
+    save(fig, path)

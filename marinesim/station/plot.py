@@ -1,4 +1,4 @@
-"""The DP capability envelope as a polar plot (matplotlib, Agg)."""
+"""The DP capability envelope as a polar plot."""
 
 from __future__ import annotations
 
@@ -6,18 +6,14 @@ from pathlib import Path
 
 import numpy as np
 
+from marinesim.figures import figure, save
 from marinesim.station.capability import MAX_WIND_M_S, Envelope
 
 
 def plot_capability(result: Envelope, path: Path, name: str, intact: Envelope | None = None) -> None:
     """Draw ``result`` (and the ``intact`` envelope, dashed, when ``result`` has thrusters lost) to ``path`` (PNG):
     the bow up, directions clockwise as on a compass card, the limiting wind (m/s) as the radius."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    fig = plt.figure(figsize=(6.4, 6.4), dpi=100)
+    fig = figure(6.4, 6.4)
     ax = fig.add_subplot(projection="polar")
     ax.set_theta_zero_location("N")
     ax.set_theta_direction(-1)
@@ -41,5 +37,4 @@ def plot_capability(result: Envelope, path: Path, name: str, intact: Envelope | 
     fig.text(0.5, 0.015, f"limiting mean wind (m/s) from each direction with a 0.75 m/s current; {waves}",
              ha="center", fontsize=8.5)
     ax.legend(loc="upper left", bbox_to_anchor=(-0.12, 1.12), fontsize=9, frameon=False)
-    fig.savefig(path, format="png")
-    plt.close(fig)
+    save(fig, path)

@@ -1,42 +1,28 @@
-"""The pictures of an operability study (PNG bytes, matplotlib's Agg, no display): operability per heading
+"""The pictures of an operability study (PNG bytes, :mod:`marinesim.figures`): operability per heading
 on a polar plot, the limiting-Hs curves over the scatter diagram, and the criterion that governs each
 (heading, Tp). Headings are the RAO convention's relative wave directions: 180 head seas, drawn at the top."""
 
 from __future__ import annotations
 
-import io
 import math
 
 import numpy as np
 
+from marinesim import figures
 from marinesim.study.operability import Operability
 from marinesim.study.scatter import Scatter
 
-DPI = 110
-METADATA = {"Software": None}
-"""PNG text chunks: none (the same study gives the same bytes on any matplotlib)."""
 
-
-def _figure(width: float, height: float, polar: bool = False):
-    import matplotlib
-
-    matplotlib.use("Agg")
-    from matplotlib.figure import Figure
-
-    figure = Figure(figsize=(width, height), dpi=DPI)
+def _figure(width_in: float, height_in: float, polar: bool = False):
+    """A figure ``width_in`` x ``height_in`` (in) with one axes, polar or not."""
+    figure = figures.figure(width_in, height_in)
     return figure, figure.add_subplot(projection="polar" if polar else None)
-
-
-def _png(figure) -> bytes:
-    buffer = io.BytesIO()
-    figure.savefig(buffer, format="png", metadata=METADATA)
-    return buffer.getvalue()
 
 
 def polar_plot(result: Operability, title: str) -> bytes:
     """Operability (%) against the relative wave heading: 180 deg (head seas) at the top, 90 (waves
     travelling to port, from starboard) to the right, as a bridge officer pictures the sea on the bow."""
-    figure, ax = _figure(5.6, 5.6, polar=True)
+    figure, ax = _figure(6.16, 6.16, polar=True)
     theta = np.radians(np.append(result.headings_deg, result.headings_deg[0]))
     r = np.append(result.operability_pct, result.operability_pct[0])
     ax.set_theta_zero_location("S")
@@ -54,7 +40,7 @@ def polar_plot(result: Operability, title: str) -> bytes:
                  f"each sea state; best single heading {result.best_heading_deg:g}° "
                  f"({result.operability_pct[best]:.1f} %)", fontsize=9)
     figure.tight_layout()
-    return _png(figure)
+    return figures.png(figure)
 
 
 def limiting_hs_plot(result: Operability, scatter: Scatter, cell_tp: np.ndarray, title: str,
@@ -62,7 +48,7 @@ def limiting_hs_plot(result: Operability, scatter: Scatter, cell_tp: np.ndarray,
     """The scatter diagram's probabilities (shaded cells, Hs against Tp) under the operation's limiting-Hs
     curves at up to ``headings`` headings spread over the study's range (the sea states below a curve are
     workable at that heading)."""
-    figure, ax = _figure(7.5, 5.0)
+    figure, ax = _figure(8.25, 5.5)
     hs_values, tp_values = np.unique(scatter.hs), np.unique(cell_tp)
     grid = np.zeros((hs_values.size, tp_values.size))
     np.add.at(grid, (np.searchsorted(hs_values, scatter.hs), np.searchsorted(tp_values, cell_tp)),
@@ -85,7 +71,7 @@ def limiting_hs_plot(result: Operability, scatter: Scatter, cell_tp: np.ndarray,
     ax.legend(title="heading: operability", fontsize=8, title_fontsize=8, loc="upper left")
     ax.set_title(f"{title}: limiting Hs over the scatter diagram ", fontsize=9)
     figure.tight_layout()
-    return _png(figure)
+    return figures.png(figure)
 
 
 def governing_plot(result: Operability, names: list[str], title: str) -> bytes:
@@ -93,7 +79,7 @@ def governing_plot(result: Operability, names: list[str], title: str) -> bytes:
     from matplotlib.colors import ListedColormap
     from matplotlib.patches import Patch
 
-    figure, ax = _figure(7.5, max(2.6, 1.2 + 0.24 * result.headings_deg.size))
+    figure, ax = _figure(8.25, max(2.86, 1.32 + 0.264 * result.headings_deg.size))
     colours = ListedColormap(["#4e79a7", "#f28e2b", "#59a14f", "#e15759", "#b07aa1", "#edc948", "#76b7b2",
                               "#9c755f"][:max(len(names), 1)])
     ax.pcolormesh(_edges(result.tp), _edges(result.headings_deg), result.governing, cmap=colours,
@@ -114,7 +100,7 @@ def governing_plot(result: Operability, names: list[str], title: str) -> bytes:
     ax.set_ylabel("relative heading (deg)")
     ax.set_title(f"{title}: governing criterion and limiting Hs (m)", fontsize=9)
     figure.tight_layout()
-    return _png(figure)
+    return figures.png(figure)
 
 
 def _edges(centres: np.ndarray) -> np.ndarray:

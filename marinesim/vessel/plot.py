@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING, Mapping
 import numpy as np
 
 from marinesim.constants import KNOT
+from marinesim.figures import figure, save
 from marinesim.vessel.rao import DOFS, ROTATIONS, RaoTable
 from marinesim.vessel.summary import resonance_periods
 
@@ -40,14 +41,13 @@ def rao_figure(table: RaoTable, headings_deg: list[float], speed_m_s: float = 0.
     curve per relative heading (deg, waves towards: 180 head seas), at ``speed_m_s`` (m/s; the title gives kn).
     The phase is unwrapped along frequency from the long waves and drawn only where the amplitude reaches
     :data:`PHASE_SHOWN_FROM` of the DOF's peak."""
-    from matplotlib.figure import Figure
     from matplotlib.ticker import MaxNLocator
 
     omega = np.geomspace(table.omega[0], table.omega[-1], 400)
     period = 2 * math.pi / omega
     h = np.array([table(omega, np.full(omega.size, math.radians(heading)), speed_m_s) for heading in headings_deg])
     peak = np.abs(h).max(axis=(0, 1))
-    fig = Figure(figsize=(11, 14))
+    fig = figure(9.9, 12.6)
     axes = fig.subplots(6, 2, sharex=True)
     for i, heading in enumerate(headings_deg):
         for j in range(len(DOFS)):
@@ -64,9 +64,9 @@ def rao_figure(table: RaoTable, headings_deg: list[float], speed_m_s: float = 0.
         for ax in axes[j]:
             ax.grid(alpha=0.3)
     axes[0, 0].legend(title="heading (180 = head)", fontsize=8)
-    axes[0, 0].set_title("amplitude", fontsize=9)
+    axes[0, 0].set_title("amplitude", fontsize=8)
     axes[0, 1].set_title(f"phase lead, unwrapped; where the amplitude is {PHASE_SHOWN_FROM:.0%} of the DOF's peak "
-                         "or more", fontsize=9)
+                         "or more", fontsize=8)
     for ax in axes[-1]:
         ax.set_xlabel("wave period [s]")
         ax.set_xlim(0.0, period_axis_end(table))
@@ -77,16 +77,14 @@ def rao_figure(table: RaoTable, headings_deg: list[float], speed_m_s: float = 0.
 
 def plot_rao(table: RaoTable, path: Path, headings_deg: list[float], speed_m_s: float = 0.0) -> None:
     """:func:`rao_figure` as a PNG at ``path`` (``speed_m_s`` in m/s)."""
-    rao_figure(table, headings_deg, speed_m_s).savefig(path, dpi=90, format="png")
+    save(rao_figure(table, headings_deg, speed_m_s), path)
 
 
 def plot_motions(frame: Mapping[str, np.ndarray], path: Path, title: str) -> None:
     """Wave elevation, heave, roll and pitch against time (columns of a motion frame)."""
-    from matplotlib.figure import Figure
-
     rows = [("wave_elevation_m", "wave elevation [m]"), ("heave_m", "heave [m]"), ("roll_deg", "roll [deg]"),
             ("pitch_deg", "pitch [deg]")]
-    fig = Figure(figsize=(12, 9))
+    fig = figure(10.8, 8.1)
     axes = fig.subplots(len(rows), 1, sharex=True)
     for ax, (column, label) in zip(axes, rows):
         ax.plot(frame["time_s"], frame[column], lw=0.7)
@@ -95,4 +93,4 @@ def plot_motions(frame: Mapping[str, np.ndarray], path: Path, title: str) -> Non
     axes[-1].set_xlabel("time [s]")
     axes[0].set_title(title)
     fig.tight_layout()
-    fig.savefig(path, dpi=90, format="png")
+    save(fig, path)

@@ -7,6 +7,7 @@ from pathlib import Path
 
 import numpy as np
 
+from marinesim.figures import figure, save
 from marinesim.wake.compute import Wake
 from marinesim.wake.measure import KELVIN_HALF_ANGLE_DEG
 
@@ -27,13 +28,9 @@ def low_pass(field: np.ndarray, factor: int) -> np.ndarray:
 
 def plot_wake(wake: Wake, path: str | Path) -> None:
     """Draw the elevation map (vessel frame, bow to the right) and |A(theta)| to a PNG."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
     info = wake.info
-    fig, (top, bottom) = plt.subplots(2, 1, figsize=(11, 8.5), height_ratios=(2.2, 1), layout="constrained")
+    fig = figure(9.9, 7.65, layout="constrained")
+    top, bottom = fig.subplots(2, 1, height_ratios=(2.2, 1))
     limit = float(np.percentile(np.abs(wake.elevation), 99.5)) or 1.0
     factor = max(1, -(-wake.elevation.shape[1] // FIELD_PIXELS))
     field = low_pass(np.asarray(wake.elevation, float), factor)
@@ -65,5 +62,4 @@ def plot_wake(wake: Wake, path: str | Path) -> None:
     bottom.set_ylabel("|A(theta)| [m]")
     bottom.set_xlim(0, 90)
     bottom.grid(alpha=0.3)
-    fig.savefig(path, dpi=90, format="png")
-    plt.close(fig)
+    save(fig, path)
