@@ -131,8 +131,10 @@ def main() -> None:
         scenario = load_scenario(ROOT / "configs" / shot.scenario)
         sea = scaled_sea(scenario.sea, shot.hs_factor, 1.0, 0.0)
         air = scenario.environment.model_dump(exclude_unset=True)
-        if "time_utc" in shot.air:
+        if "time_utc" in shot.air:  # the sun from the shot's date, not the scenario's sun keys
             air = {k: v for k, v in air.items() if not k.startswith("sun_")}
+        elif any(k.startswith("sun_") for k in shot.air):  # the shot's sun, not the scenario's date
+            air = {k: v for k, v in air.items() if k != "time_utc"}
         environment = type(scenario.environment).model_validate(air | shot.air)
         scenario = dataclasses.replace(scenario, sea=sea, environment=environment)
         out = HERE / f"{shot.name}.jpg"
