@@ -1,13 +1,18 @@
 """What the tests share: the checkout's root, one OpenGL context fixture, sea states (real spectra,
 real FFTs, a real EGL context; nothing mocked), a wake cache of their own, and the few helpers more
-than one test file uses (the command in a process, scenario files, offscreen frames, RAO tables).
+than one test file uses (the command in this process or its own, scenario files, offscreen frames, RAO
+tables).
 Test files import them with ``from conftest import ...``."""
 
 from __future__ import annotations
 
+import contextlib
+import signal
 import subprocess
 import sys
-from collections.abc import Callable
+import threading
+import time
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import numpy as np
@@ -75,8 +80,47 @@ def write(tmp_path: Path, text: str, name: str = "scenario.toml") -> Path:
     return path
 
 
-def cli(*args: str, cwd=None, timeout: float = 600, **kwargs) -> subprocess.CompletedProcess:
-    """``python -m marinesim *args`` in a process of its own, as a user runs it; its output as text."""
+def cli(*args: str, cwd: Path | str | None = None, env: dict[str, str] | None = None) -> subprocess.CompletedProcess:
+    """``marinesim *args`` run in this process (:func:`marinesim.cli.main`, the entry point a user's command calls)
+    in the folder ``cwd`` with the environment ``env`` (default: this one), as a finished process: its exit status,
+    and what it printed on stdout and stderr (warnings logged by marinesim included, as a user's terminal shows
+    them). Without a new interpreter's start-up it costs only the command's own work. Where a test needs a real
+    process (signals, locks held across processes, start-up imports, a pipe for a stream, state kept once per
+    process), it uses :func:`cli_process`."""
+    import io
+    import logging
+    import os
+    from contextlib import chdir, redirect_stderr, redirect_stdout
+
+    from marinesim.cli import main
+
+    out, err = io.StringIO(), io.StringIO()
+    logger, handler = logging.getLogger("marinesim"), logging.StreamHandler(err)
+    handler.setLevel(logging.WARNING)  # what Python's last-resort handler prints in a process of its own
+    saved_env, propagate = dict(os.environ), logger.propagate
+    if env is not None:
+        os.environ.clear()
+        os.environ.update(env)
+    logger.addHandler(handler)
+    logger.propagate = False
+    try:
+        with chdir(cwd or os.getcwd()), redirect_stdout(out), redirect_stderr(err):
+            try:
+                status = main([str(arg) for arg in args])
+            except SystemExit as exit:  # argparse: --help, --version, a usage error
+                status = exit.code if isinstance(exit.code, int) else (0 if exit.code is None else 2)
+    finally:
+        logger.removeHandler(handler)
+        logger.propagate = propagate
+        if env is not None:
+            os.environ.clear()
+            os.environ.update(saved_env)
+    return subprocess.CompletedProcess(["marinesim", *args], status, out.getvalue(), err.getvalue())
+
+
+def cli_process(*args: str, cwd=None, timeout: float = 600, **kwargs) -> subprocess.CompletedProcess:
+    """``python -m marinesim *args`` in a process of its own, as a user runs it; its output as text. ``timeout`` (s)
+    only stops a hung command: a whole command on a loaded machine stays far below it."""
     return subprocess.run([sys.executable, "-m", "marinesim", *args], capture_output=True, text=True, cwd=cwd,
                           timeout=timeout, **kwargs)
 
@@ -226,3 +270,75 @@ def run_lengths(mask: np.ndarray) -> float:
     edges = np.diff(np.pad(mask.astype(int), ((0, 0), (1, 1))), axis=1)
     starts, ends = np.nonzero(edges == 1), np.nonzero(edges == -1)
     return float(np.mean(ends[1] - starts[1])) if len(starts[1]) else 0.0
+
+
+# --- waiting on a process: for events, not for the clock -----------------------------------------------------------
+
+HANG_S = 1800.0
+"""How long a test waits for a command to end, or for an event in a command's life (a file appearing, a library
+mapped), before it calls the wait a hang and fails: 30 minutes. The slowest wait, for a day's export to write its
+first rows (it computes the whole record first), took 263 s on a 2-core machine already running two other test
+sessions, and under a minute for every other wait; a busier machine slows them a few times more. Only a process
+that has stopped making progress gets near 30 minutes, and a hang still ends the test."""
+
+
+def mapped(pid: int, library: str) -> bool:
+    """Whether process ``pid`` has mapped a shared library whose path contains ``library`` (Linux's /proc): its
+    import has begun."""
+    try:
+        return library in Path(f"/proc/{pid}/maps").read_text()
+    except (FileNotFoundError, ProcessLookupError):
+        return False
+
+
+def until(ready: Callable[[], bool], process: subprocess.Popen) -> str:
+    """Wait, looking every 10 ms, until ``ready()`` holds while ``process`` runs: "" once it does, else why it never
+    will (the process ended first, or :data:`HANG_S` passed: a hang). No limit but that: a slow machine only waits
+    longer."""
+    start = time.monotonic()
+    while not ready():
+        if process.poll() is not None:
+            return f"the process ended first (exit {process.returncode})"
+        if time.monotonic() - start > HANG_S:
+            return f"not within {HANG_S:g} s (a hang)"
+        time.sleep(0.01)
+    return ""
+
+
+def wait_for(ready: Callable[[], bool], process: subprocess.Popen, what: str) -> None:
+    """:func:`until` ``ready()``; where it never holds, the process is killed and the test fails saying ``what`` (the
+    event awaited) did not come, why, and the end of the process's stderr."""
+    reason = until(ready, process)
+    if reason:
+        if process.poll() is None:
+            process.kill()
+        stderr = process.communicate()[1] or ""
+        stderr = stderr.decode(errors="replace") if isinstance(stderr, bytes) else stderr
+        pytest.fail(f"{what}: {reason}; stderr: {stderr[-600:]}")
+
+
+class Hang(BaseException):
+    """A block that did not end within :data:`HANG_S`. Not an Exception: the code under test's ``except Exception``
+    cannot take it for an error of its own, and hypothesis reports it at once rather than run the hang again to
+    shrink the example."""
+
+
+@contextlib.contextmanager
+def hang_guard(what: str) -> Iterator[None]:
+    """Raise :class:`Hang` naming ``what`` in the block if it has not ended within :data:`HANG_S` (SIGALRM, so only
+    in the main thread; elsewhere the block runs unguarded): a bound only a hang reaches, where a deadline of a few
+    seconds measured the machine's speed."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def hang(signum: int, frame: object) -> None:
+        raise Hang(f"{what}: no end after {HANG_S:g} s (a hang)")
+
+    previous = signal.signal(signal.SIGALRM, hang)
+    signal.setitimer(signal.ITIMER_REAL, HANG_S)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)

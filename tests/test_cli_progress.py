@@ -4,7 +4,7 @@
 import io
 import re
 
-from conftest import ROOT, cli
+from conftest import ROOT, cli_process as cli
 from marinesim.progress import lines, reporting, task
 
 SHARE = re.compile(r"^export m\.csv: (\d+)% \((\d+)/2001 step\)$")
