@@ -134,7 +134,7 @@ def main() -> None:
         if "time_utc" in shot.air:  # the sun from the shot's date, not the scenario's sun keys
             air = {k: v for k, v in air.items() if not k.startswith("sun_")}
         elif any(k.startswith("sun_") for k in shot.air):  # the shot's sun, not the scenario's date
-            air = {k: v for k, v in air.items() if k != "time_utc"}
+            air = {k: v for k, v in air.items() if k not in ("time_utc", "latitude_deg", "longitude_deg")}
         environment = type(scenario.environment).model_validate(air | shot.air)
         scenario = dataclasses.replace(scenario, sea=sea, environment=environment)
         out = HERE / f"{shot.name}.jpg"
