@@ -7,9 +7,6 @@ from pathlib import Path
 
 from marinesim.cli.common import json_text, refuse_overwriting
 
-NEEDS = ("marinesim.scenario", "marinesim.station.capability")
-"""The modules the command loads before it starts (Ctrl-C is held until they are in)."""
-
 
 def add(commands: argparse._SubParsersAction) -> None:
     p = commands.add_parser(

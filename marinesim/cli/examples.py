@@ -5,9 +5,6 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-NEEDS = ("marinesim.scenario.examples",)
-"""The modules the command loads before it starts (Ctrl-C is held until they are in)."""
-
 
 def add(commands: argparse._SubParsersAction) -> None:
     p = commands.add_parser(

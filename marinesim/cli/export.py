@@ -9,9 +9,6 @@ from marinesim.cli.common import add_motion_options, bars, motion_scenario, refu
 from marinesim.errors import ParameterError
 
 
-NEEDS = ("marinesim.scenario", "marinesim.session.assembly", "marinesim.session.export")
-"""The modules the command loads before it starts (Ctrl-C is held until they are in)."""
-
 def add(commands: argparse._SubParsersAction) -> None:
     p = commands.add_parser(
         "export", help="write the vessel's motion time series (CSV + JSON sidecar)",

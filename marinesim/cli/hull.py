@@ -10,9 +10,6 @@ from marinesim.cli.common import add_hull_options, hull_from_args, json_text
 from marinesim.formats import extensions
 
 
-NEEDS = ("marinesim.hull.mesh",)
-"""The modules the command loads before it starts (Ctrl-C is held until they are in)."""
-
 def add(commands: argparse._SubParsersAction) -> None:
     p = commands.add_parser(
         "hull", help="check a hull mesh and print its hydrostatics",

@@ -11,9 +11,6 @@ from pathlib import Path
 from marinesim.cli.common import bars, json_text, number_list
 from marinesim.errors import ParameterError
 
-NEEDS = ("numpy", "marinesim.scenario", "marinesim.study.run")
-"""The modules the command loads before it starts (Ctrl-C is held until they are in)."""
-
 
 def add(commands: argparse._SubParsersAction) -> None:
     p = commands.add_parser(

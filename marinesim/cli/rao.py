@@ -11,9 +11,6 @@ from marinesim.errors import require_finite, require_within
 from marinesim.formats import formats
 
 
-NEEDS = ("marinesim.vessel.read", "marinesim.vessel.plot", "marinesim.vessel.summary")
-"""The modules the command loads before it starts (Ctrl-C is held until they are in)."""
-
 def add(commands: argparse._SubParsersAction) -> None:
     p = commands.add_parser(
         "rao", help="summarise an RAO file (ranges, long-wave limits, resonances)",

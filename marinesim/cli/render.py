@@ -9,9 +9,6 @@ from marinesim.cli.common import add_view_options, bars, refuse_overwriting, ren
 from marinesim.errors import ParameterError
 
 
-NEEDS = ("marinesim.scenario", "marinesim.render.offscreen")
-"""The modules the command loads before it starts (Ctrl-C is held until they are in)."""
-
 def add(commands: argparse._SubParsersAction) -> None:
     p = commands.add_parser(
         "render", help="render a scenario headless: an MP4 video with its motion CSV, or a screenshot",

@@ -18,9 +18,6 @@ DESCRIBED = {"sea_plot": "the sea state picture", "motions": "the vessel's 6-DOF
 """What each file of a headless run is, as the closing lines say."""
 
 
-NEEDS = ("marinesim.scenario", "marinesim.session.assembly", "marinesim.session.headless")
-"""The modules the command loads before it starts (Ctrl-C is held until they are in)."""
-
 def add(commands: argparse._SubParsersAction) -> None:
     p = commands.add_parser(
         "run", help="open the viewer on a scenario (default: the shipped configs/default.toml)",

@@ -9,8 +9,6 @@ from pathlib import Path
 from marinesim.cli.common import add_sea_options, json_text, wave_systems
 from marinesim.errors import ParameterError
 
-NEEDS = ("marinesim.sea", "marinesim.sea.build", "marinesim.sea.summary")
-"""The modules the command loads before it starts (Ctrl-C is held until they are in)."""
 
 def add(commands: argparse._SubParsersAction) -> None:
     p = commands.add_parser(

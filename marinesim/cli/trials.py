@@ -8,9 +8,6 @@ from pathlib import Path
 
 from marinesim.cli.common import bars, json_text, refuse_overwriting
 
-NEEDS = ("marinesim.scenario", "marinesim.scenario.ship_file", "marinesim.manoeuvring.trials")
-"""The modules the command loads before it starts (Ctrl-C is held until they are in)."""
-
 
 def add(commands: argparse._SubParsersAction) -> None:
     p = commands.add_parser(

@@ -10,8 +10,6 @@ from marinesim.cli.common import add_hull_options, bars, hull_from_args, json_te
 from marinesim.errors import ParameterError
 from marinesim.formats import extensions
 
-NEEDS = ("marinesim.wake.cache", "marinesim.wake.compute", "marinesim.wake.plot")
-"""The modules the command loads before it starts (Ctrl-C is held until they are in)."""
 
 def add(commands: argparse._SubParsersAction) -> None:
     p = commands.add_parser(

@@ -2,11 +2,14 @@
 
 The waterline is the hull's section just below z = 0 (trimesh's mesh-plane intersection, chained
 into closed loops), so a wetted-surface-only mesh, open exactly at z = 0, is cut as well as a
-closed one, and a catamaran gives two loops. :func:`inside` is the one polygon mask of the project
-(the viewer's hull mask, the local solver's obstacles): a cell is inside if it lies in any loop.
+closed one, and a catamaran gives two loops, computed once per hull (a :class:`Hull` is immutable) for all who
+draw or mask it. :func:`inside` is the one polygon mask of the project (the viewer's hull mask, the local solver's
+obstacles): a cell is inside if it lies in any loop.
 """
 
 from __future__ import annotations
+
+import weakref
 
 import numpy as np
 from matplotlib.path import Path as PolygonPath
@@ -19,9 +22,29 @@ SECTION_BELOW = 1e-6
 wetted-surface mesh has only boundary edges, which a plane section does not cut cleanly)."""
 
 
-def waterline_loops(hull: Hull) -> list[np.ndarray]:
+_LOOPS: dict[int, tuple[np.ndarray, ...]] = {}
+"""The loops of each live hull, by its id (a :class:`Hull` holds arrays: it has no hash); dropped with the hull."""
+
+
+def waterline_loops(hull: Hull) -> tuple[np.ndarray, ...]:
     """The closed waterline loops (n, 2), m, body frame, each counter-clockwise seen from above and
-    without its first point repeated; the largest first."""
+    without its first point repeated; the largest first. Computed on the first call for ``hull``; later calls
+    return the same read-only arrays."""
+    loops = _LOOPS.get(id(hull))
+    if loops is None:
+        loops = _LOOPS[id(hull)] = tuple(_read_only(loop) for loop in _section(hull))
+        weakref.finalize(hull, _LOOPS.pop, id(hull), None)
+    return loops
+
+
+def _read_only(array: np.ndarray) -> np.ndarray:
+    """``array``, made read-only: shared by all who ask."""
+    array.flags.writeable = False
+    return array
+
+
+def _section(hull: Hull) -> list[np.ndarray]:
+    """The loops of :func:`waterline_loops`, computed: trimesh's section of the hull, chained into loops."""
     mesh = trimesh.Trimesh(hull.vertices, hull.faces, process=False)
     depth = SECTION_BELOW * max(hull.overall_length_m, 1.0)
     segments = trimesh.intersections.mesh_plane(mesh, [0.0, 0.0, 1.0], [0.0, 0.0, -depth])

@@ -8,35 +8,30 @@ topsides colour above, a deck (the draft marks are painted by the shader: :mod:`
 A point on board above the deck (the bridge) gets a ship around it:
 the accommodation in decks with window bands, the wheelhouse with the eye in its window band and its
 wings out to the ship's sides, a funnel abaft it, a mast on its roof and a foremast; hatch covers on
-the deck forward of it for a ``hatches`` deck. Faces are wound counter-clockwise seen from outside,
+the deck forward of it for a ``hatches`` deck: parts and colours of the ship kit (:mod:`~marinesim.render.ship_kit`)
+that the shipped visual meshes are made of. Faces are wound counter-clockwise seen from outside,
 so back-face culling hides the wheelhouse from an eye inside it (the bridge camera).
 A scenario's visual mesh is drawn instead when it has one, in its own colours or these.
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
 
 from marinesim.hull import Hull, VisualMesh
 from marinesim.hull.waterplane import waterline_loops
+from marinesim.render import ship_kit as kit
 
-BOTTOM = (0.45, 0.09, 0.07)
-BOOT_TOP = (0.05, 0.05, 0.06)
-TOPSIDES = (0.10, 0.12, 0.16)
-DECK = (0.33, 0.30, 0.26)
-HOUSE = (0.86, 0.86, 0.84)
-WINDOW = (0.10, 0.16, 0.22)
-FUNNEL = (0.62, 0.20, 0.12)
-BLACK = (0.04, 0.04, 0.04)
-MAST = (0.80, 0.80, 0.78)
-HATCH = (0.30, 0.34, 0.38)
+BOTTOM, BOOT_TOP, TOPSIDES, DECK = (kit.rgb_unit(c) for c in (kit.ANTIFOULING, kit.BOOT_TOP, kit.NAVY, kit.DECK_GREEN))
+"""The hull's paint (0..1): below the boot-top, the boot-top, the topsides unless the scenario gives them, the deck."""
+HOUSE, WINDOW, FUNNEL, HATCH = (kit.rgb_unit(c) for c in (kit.WHITE, kit.WINDOW, kit.FUNNEL, kit.DECK_GREY))
+"""The superstructure's colours (0..1) that show from outside: the house, its window bands, the funnel, hatch covers."""
 BOOT_TOP_M = (-0.5, 0.6)
 """The boot-top band about the still waterline (m): between the bottom's paint and the topsides'."""
 DECK_HEIGHT_M = 2.8
-"""The height of one deck of the accommodation (m); each has a window band 0.9 m high, 1.1 m above its floor."""
+"""The height of one deck of the accommodation (m), each with its window band (:func:`.ship_kit.decks_with_windows`)."""
 OPEN_TOP_BELOW_M = 0.05
 """A hull whose highest point is this close to the waterline is taken as open at the top."""
 
@@ -77,56 +72,48 @@ def vessel_mesh(hull: Hull, freeboard_m: float | None = None, house_at: tuple[fl
     normals = _face_normals(corners)
     colours = _hull_colours(corners, normals, topsides)
     if house_at is not None and house_at[2] > deck_z + 1.0:
-        parts = _superstructure(v, house_at, deck_z, deck_layout)
-        extra = np.concatenate([t for t, _ in parts])
+        ship = kit.join(_superstructure(v, house_at, deck_z, deck_layout)).solid()
+        extra = ship.v[ship.f]
         corners = np.concatenate([corners, extra])
         normals = np.concatenate([normals, _face_normals(extra)])
-        painted = np.concatenate([np.broadcast_to(np.asarray(c, float), (len(t), 3)) for t, c in parts])
-        colours = np.concatenate([colours, np.repeat(painted[:, None, :], 3, axis=1)])
+        colours = np.concatenate([colours, np.repeat(ship.c[:, None, :] / 255.0, 3, axis=1)])
     return _flat(corners, normals, colours)
 
 
 def _superstructure(v: np.ndarray, bridge: tuple[float, float, float], deck_z: float, deck_layout: str
-                    ) -> list[tuple[np.ndarray, tuple[float, float, float]]]:
-    """(triangles, colour) of the accommodation, wheelhouse, wings, funnel, masts and hatch covers around the
-    bridge point of a hull with vertices ``v`` and its deck at ``deck_z`` (m)."""
+                    ) -> list[kit.Part]:
+    """The accommodation, wheelhouse, wings, funnel, masts and hatch covers around the bridge point of a hull with
+    vertices ``v`` and its deck at ``deck_z`` (m)."""
     length, beam = float(np.ptp(v[:, 0])), float(np.ptp(v[:, 1]))
     bow, stern = float(v[:, 0].max()), float(v[:, 0].min())
     x0, x1, half = bridge[0] - 0.06 * length, bridge[0] + 2.0, 0.35 * beam  # the eye 2 m behind the glass
     floor = max(bridge[2] - 1.7, deck_z)               # the eye 1.7 m over the wheelhouse floor (or the deck)
     roof = floor + 3.2
-    parts = []
     decks = int((floor - deck_z) // DECK_HEIGHT_M)
-    tiers = [(floor - deck_z, HOUSE)] if floor - deck_z > 0.1 else []
+    tiers = [(floor - deck_z, kit.WHITE)] if floor - deck_z > 0.1 else []
     if decks:
-        height = (floor - deck_z) / decks
-        tiers = [band for _ in range(decks) for band in ((1.1, HOUSE), (0.9, WINDOW), (height - 2.0, HOUSE))]
-    tiers += [(1.0, HOUSE), (1.5, WINDOW), (0.7, HOUSE)]
-    z = deck_z
-    for tier, colour in tiers:
-        parts.append((_box((x0, -half, z), (x1, half, z + tier)), colour))
-        z += tier
-    frame = (x1 - 0.35, x1 - 0.2)                      # mullions and sill inside the front windows
-    for y in np.r_[-np.arange(0.7, half - 0.4, 1.4), np.arange(0.7, half - 0.4, 1.4)]:
-        parts.append((_box((frame[0], y - 0.05, floor + 1.0), (frame[1], y + 0.05, floor + 2.5)), BLACK))
-    parts.append((_box((frame[0], -half + 0.3, floor + 1.0), (frame[1], half - 0.3, floor + 1.12)), BLACK))
+        tiers = kit.decks_with_windows(decks, (floor - deck_z) / decks)
+    tiers += [(1.0, kit.WHITE), (1.5, kit.WINDOW), (0.7, kit.WHITE)]
+    parts = [kit.tiered(x0, x1, -half, half, deck_z, tiers)]
+    mullions = np.r_[-np.arange(0.7, half - 0.4, 1.4), np.arange(0.7, half - 0.4, 1.4)]
+    parts += kit.wheelhouse_interior(x1, x0 + 0.1, mullions, half - 0.3, floor, (1.0, 2.5), None, half - 0.1)
     for sign in (1.0, -1.0):
         y = sorted((sign * half, sign * (0.5 * beam + 0.3)))
-        parts.append((_box((x1 - 3.0, y[0], floor - 0.3), (x1, y[1], floor + 1.1)), HOUSE))  # bridge wing
+        parts.append(kit.box((x1 - 3.0, y[0], floor - 0.3), (x1, y[1], floor + 1.1), kit.WHITE))  # bridge wing
     funnel = (x0 - max(0.04 * length, 3.0), x0 - 0.5)
-    parts += [(_box((funnel[0], -0.08 * beam, deck_z), (funnel[1], 0.08 * beam, roof + 3.0)), FUNNEL),
-              (_box((funnel[0], -0.08 * beam, roof + 3.0), (funnel[1], 0.08 * beam, roof + 4.5)), BLACK)]
+    parts += [kit.box((funnel[0], -0.08 * beam, deck_z), (funnel[1], 0.08 * beam, roof + 3.0), kit.FUNNEL),
+              kit.box((funnel[0], -0.08 * beam, roof + 3.0), (funnel[1], 0.08 * beam, roof + 4.5), kit.BLACK)]
     mast_x = 0.5 * (x0 + x1)
-    parts += [(_box((mast_x - 0.2, -0.2, roof), (mast_x + 0.2, 0.2, roof + 6.0)), MAST),
-              (_box((mast_x - 0.15, -0.12 * beam, roof + 4.5), (mast_x + 0.15, 0.12 * beam, roof + 4.8)), MAST)]
+    parts += [kit.box((mast_x - 0.2, -0.2, roof), (mast_x + 0.2, 0.2, roof + 6.0), kit.STEEL),
+              kit.box((mast_x - 0.15, -0.12 * beam, roof + 4.5), (mast_x + 0.15, 0.12 * beam, roof + 4.8), kit.STEEL)]
     fore = bow - 0.08 * length
     if fore > x1 + 5.0:
-        parts.append((_box((fore - 0.25, -0.25, deck_z), (fore + 0.25, 0.25, deck_z + max(8.0, 0.5 * (roof - deck_z)))),
-                      MAST))
+        top = deck_z + max(8.0, 0.5 * (roof - deck_z))
+        parts.append(kit.box((fore - 0.25, -0.25, deck_z), (fore + 0.25, 0.25, top), kit.STEEL))  # foremast
     if deck_layout == "hatches":
         start, end = (x1 + 3.0, bow - 0.12 * length) if bridge[0] < 0.0 else (stern + 0.1 * length, x0 - 8.0)
         for a in np.arange(start, end - 10.0, 14.0):
-            parts.append((_box((a, -0.3 * beam, deck_z), (a + 12.0, 0.3 * beam, deck_z + 1.2)), HATCH))
+            parts.append(kit.box((a, -0.3 * beam, deck_z), (a + 12.0, 0.3 * beam, deck_z + 1.2), kit.DECK_GREY))
     return parts
 
 
@@ -179,13 +166,6 @@ def _fan(outline: np.ndarray, top: float) -> np.ndarray:
     up = np.cross(fan[:, 1] - fan[:, 0], fan[:, 2] - fan[:, 0])[:, 2]
     fan[up < 0] = fan[up < 0][:, ::-1]
     return fan
-
-
-def _box(lo: Sequence[float], hi: Sequence[float]) -> np.ndarray:
-    """The 12 triangles (12, 3, 3) of the box ``lo..hi``, wound counter-clockwise seen from outside."""
-    c = _box_corners(np.asarray(lo, float), np.asarray(hi, float))
-    quads = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (1, 5, 7, 3), (0, 2, 6, 4)]
-    return np.array([[c[q[0]], c[q[1]], c[q[2]]] for q in quads] + [[c[q[0]], c[q[2]], c[q[3]]] for q in quads])
 
 
 def _box_corners(lo: np.ndarray, hi: np.ndarray) -> np.ndarray:

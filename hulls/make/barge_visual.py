@@ -2,7 +2,7 @@
 mast aft, vertex-coloured, exported as CAD tools often do: centimetres, y up, origin at the keel at the
 stern. In a scenario: visual_mesh_units = "cm", visual_mesh_axes = "x,-z,y", visual_mesh_offset_m = [-50, 0, -5].
 
-Run from the repository root: python hulls/barge_visual.py
+Run from the repository root: python hulls/make/barge_visual.py
 """
 
 from pathlib import Path
@@ -26,4 +26,4 @@ if __name__ == "__main__":
         boxes.append(box)
     model = trimesh.util.concatenate(boxes)
     model.vertices = model.vertices @ Y_UP_CM.T  # a rotation about x: the faces keep their outward side
-    model.export(Path(__file__).with_name("barge_visual.glb"))
+    model.export(Path(__file__).resolve().parents[1] / "barge_visual.glb")
