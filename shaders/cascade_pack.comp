@@ -5,8 +5,8 @@
 // times the four packing multipliers (height + i dDx/dy, Dx + i Dy, slopes, 1 + dDx/dx + i(1 + dDy/dy)),
 // written as the four transforms' inputs [tile][transform][iy][ix]. The phase w t is reduced to
 // [-pi, pi] in double precision, so a long run keeps float32 trigonometry exact.
-// Defines: SIZE (cells a side, power of two), TILES.
-layout(local_size_x = 16, local_size_y = 16) in;
+// Defines: SIZE (cells a side, power of two), TILES, GROUP (work-group side, marinesim/gl.py).
+layout(local_size_x = GROUP, local_size_y = GROUP) in;
 
 layout(std430, binding = 0) readonly buffer Before { vec4 before[]; };  // even.re, even.im, odd.re, odd.im, m
 layout(std430, binding = 1) readonly buffer After { vec4 after[]; };
@@ -20,9 +20,7 @@ uniform float u_dk[TILES];    // 2 pi / tile size, rad/m
 
 const double TWO_PI = 6.283185307179586LF;
 
-vec2 cmul(vec2 a, vec2 b) {
-    return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x);
-}
+#include "complex.glsl"
 
 void main() {
     uvec3 at = gl_GlobalInvocationID;

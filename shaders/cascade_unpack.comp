@@ -2,8 +2,8 @@
 // The cascades' four transforms (after fft.comp) into the textures the ocean samples
 // (marinesim/render/layers/cascades.py): fields = (Dx, Dy, height, Jacobian), slopes = (d eta/dx,
 // d eta/dy), E frame, m; J = (1 + dDx/dx)(1 + dDy/dy) - (dDx/dy)^2. One texel per invocation.
-// Defines: SIZE.
-layout(local_size_x = 16, local_size_y = 16) in;
+// Defines: SIZE, GROUP.
+layout(local_size_x = GROUP, local_size_y = GROUP) in;
 
 layout(std430, binding = 0) readonly buffer Fields { vec2 transform[]; };  // [tile][4][iy][ix]
 layout(rgba32f, binding = 0) uniform writeonly image2DArray u_fields;

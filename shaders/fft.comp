@@ -1,8 +1,8 @@
 #version 430
 // One pass of a 2-D FFT: a radix-2 Stockham FFT of every row (or every column) of SIZE x SIZE complex
 // fields, one work group per line (gl_WorkGroupID.x) and field (gl_WorkGroupID.y, fields batch_stride
-// apart), the line held in shared memory. The one FFT of the GPU side: the local solver's transforms
-// (marinesim/solver/gpu.py) and the ocean's cascades (marinesim/render/layers/synthesis.py).
+// apart), the line held in shared memory. The one FFT of the GPU side, driven by marinesim/gl.py's GpuFFT: the
+// local solver's transforms (marinesim/solver/gpu.py) and the ocean's cascades (render/layers/synthesis.py).
 // Defines: SIZE (power of two), THREADS, and optionally (the solver's, one field)
 //   ADD_DEPTH: add the displaced depth to the real part while loading (u = h + d, first pass),
 //   FINISH:    on storing, h = u - d, both fields times the sponge/obstacle factor, non-finite
@@ -29,9 +29,7 @@ uniform float scale;          // every output times this (1 / SIZE per pass for 
 
 shared vec2 line[2][SIZE];
 
-vec2 cmul(vec2 a, vec2 b) {
-    return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x);
-}
+#include "complex.glsl"
 
 void main() {
     uint first = gl_WorkGroupID.y * batch_stride + gl_WorkGroupID.x * line_stride;

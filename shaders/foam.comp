@@ -5,8 +5,8 @@
 // when the scales separate) and turns the product into foam: a short cascade breaks where the
 // long waves compress it, so its foam does not repeat with its tile. The held value and its
 // square are stored, so that mip levels give the mean and the variance under a pixel's
-// footprint. One texel per invocation.
-layout(local_size_x = 16, local_size_y = 16) in;
+// footprint. One texel per invocation. Defines: GROUP.
+layout(local_size_x = GROUP, local_size_y = GROUP) in;
 layout(rg32f, binding = 0) uniform image2DArray u_held;
 uniform sampler2DArray u_cascades;   // alpha: Jacobian
 uniform float u_decay;               // exp(-dt / tau)

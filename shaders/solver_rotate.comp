@@ -1,15 +1,13 @@
 #version 430
 // The wave step in k-space: Z'(k) = A(k) Z(k) + B(k) conj(Z(-k)) (marinesim/solver/spectral.py).
-// Defines: SIZE.
-layout(local_size_x = 16, local_size_y = 16) in;
+// Defines: SIZE, GROUP.
+layout(local_size_x = GROUP, local_size_y = GROUP) in;
 
 layout(std430, binding = 0) readonly buffer Source { vec2 source[]; };
 layout(std430, binding = 1) writeonly buffer Target { vec2 target[]; };
 layout(std430, binding = 2) readonly buffer Coefficients { vec4 coefficient[]; };  // A.re, A.im, B.re, B.im
 
-vec2 cmul(vec2 a, vec2 b) {
-    return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x);
-}
+#include "complex.glsl"
 
 void main() {
     uint i = gl_GlobalInvocationID.x;

@@ -1,7 +1,7 @@
 #version 430
 // Scroll the field by whole cells: target(i, j) = source(i + di, j + dj), zero (at rest) where
-// that lies outside the grid. Defines: SIZE.
-layout(local_size_x = 16, local_size_y = 16) in;
+// that lies outside the grid. Defines: SIZE, GROUP.
+layout(local_size_x = GROUP, local_size_y = GROUP) in;
 
 layout(std430, binding = 0) readonly buffer Source { vec2 source[]; };
 layout(std430, binding = 1) writeonly buffer Target { vec2 target[]; };

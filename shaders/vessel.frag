@@ -19,7 +19,8 @@ const vec3 MARK_PAINT = vec3(0.85, 0.85, 0.82);
 // A digit's segments as bits: 1 top, 2 top right, 4 bottom right, 8 bottom, 16 bottom left, 32 top left, 64 middle.
 const int SEGMENTS[10] = int[10](0x3F, 0x06, 0x5B, 0x4F, 0x66, 0x6D, 0x7D, 0x07, 0x7F, 0x6F);
 
-float inside(vec2 p, vec2 lo, vec2 hi) {
+// 1 where p lies in the box from lo to hi (edges included), else 0.
+float in_box(vec2 p, vec2 lo, vec2 hi) {
     return float(all(greaterThanEqual(p, lo)) && all(lessThanEqual(p, hi)));
 }
 
@@ -28,13 +29,13 @@ float digit_stroke(int digit, vec2 p) {
     int s = SEGMENTS[digit];
     float w = GLYPH_W, h = NUMERAL, t = STROKE, m = 0.5 * NUMERAL;
     float on = 0.0;
-    if ((s & 1) != 0) on = max(on, inside(p, vec2(0.0, h - t), vec2(w, h)));
-    if ((s & 2) != 0) on = max(on, inside(p, vec2(w - t, m), vec2(w, h)));
-    if ((s & 4) != 0) on = max(on, inside(p, vec2(w - t, 0.0), vec2(w, m)));
-    if ((s & 8) != 0) on = max(on, inside(p, vec2(0.0), vec2(w, t)));
-    if ((s & 16) != 0) on = max(on, inside(p, vec2(0.0), vec2(t, m)));
-    if ((s & 32) != 0) on = max(on, inside(p, vec2(0.0, m), vec2(t, h)));
-    if ((s & 64) != 0) on = max(on, inside(p, vec2(0.0, m - 0.5 * t), vec2(w, m + 0.5 * t)));
+    if ((s & 1) != 0) on = max(on, in_box(p, vec2(0.0, h - t), vec2(w, h)));
+    if ((s & 2) != 0) on = max(on, in_box(p, vec2(w - t, m), vec2(w, h)));
+    if ((s & 4) != 0) on = max(on, in_box(p, vec2(w - t, 0.0), vec2(w, m)));
+    if ((s & 8) != 0) on = max(on, in_box(p, vec2(0.0), vec2(w, t)));
+    if ((s & 16) != 0) on = max(on, in_box(p, vec2(0.0), vec2(t, m)));
+    if ((s & 32) != 0) on = max(on, in_box(p, vec2(0.0, m), vec2(t, h)));
+    if ((s & 64) != 0) on = max(on, in_box(p, vec2(0.0, m - 0.5 * t), vec2(w, m + 0.5 * t)));
     return on;
 }
 
@@ -47,10 +48,10 @@ float to_segment(vec2 p, vec2 a, vec2 b) {
 float letter_m(vec2 p) {
     float w = GLYPH_W, h = NUMERAL, t = STROKE;
     vec2 middle = vec2(0.5 * w, 0.4 * h);
-    float on = max(inside(p, vec2(0.0), vec2(t, h)), inside(p, vec2(w - t, 0.0), vec2(w, h)));
+    float on = max(in_box(p, vec2(0.0), vec2(t, h)), in_box(p, vec2(w - t, 0.0), vec2(w, h)));
     on = max(on, float(min(to_segment(p, vec2(0.5 * t, h - 0.5 * t), middle),
                            to_segment(p, vec2(w - 0.5 * t, h - 0.5 * t), middle)) < 0.5 * t));
-    return on * inside(p, vec2(0.0), vec2(w, h));
+    return on * in_box(p, vec2(0.0), vec2(w, h));
 }
 
 // 1 where the draft marks are painted at body point p on plating facing n (outwards, at least half the

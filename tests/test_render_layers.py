@@ -1,10 +1,12 @@
 """The renderer's parts on their own: the wake's appearance (NumPy, no GL), the program wrapper's uniform
-names, and the layers composed by the Renderer, each given every uniform its program declares."""
+names, the shaders' shared parts (the GPU FFT, the work-group size, the includes), and the layers composed by
+the Renderer, each given every uniform its program declares."""
 
 from __future__ import annotations
 
 import dataclasses
 import math
+import re
 
 import numpy as np
 import pytest
@@ -123,7 +125,7 @@ void main() { f_colour = u_colours[0] + u_colours[1]; }
 
 
 def test_a_declared_uniform_the_compiler_dropped_is_skipped_and_an_undeclared_name_raises(gl_context):
-    from marinesim.render.program import Program
+    from marinesim.gl import Program
 
     program = Program(gl_context, "test", vertex_shader=VERTEX, fragment_shader=FRAGMENT)
     try:
@@ -143,7 +145,7 @@ def test_a_declared_uniform_the_compiler_dropped_is_skipped_and_an_undeclared_na
 
 def test_a_shaders_uniforms_are_read_after_its_includes(gl_context):
     """ocean.frag declares some uniforms itself and gets others from surface.glsl and sky.glsl."""
-    from marinesim.render.program import Program
+    from marinesim.gl import Program
 
     program = Program.from_files(gl_context, "ocean", TILES=2, TILE_LOD="8.0", FOAM_J_START=0.9, FOAM_J_FULL=0.6)
     try:
@@ -155,11 +157,62 @@ def test_a_shaders_uniforms_are_read_after_its_includes(gl_context):
         program.release()
 
 
+@pytest.mark.parametrize("n, fields, normalised", [(32, 3, False), (1024, 1, True)])
+def test_the_gpu_fft_is_numpys_transform_of_every_field(gl_context, n, fields, normalised):
+    """A row and a column pass of GpuFFT make NumPy's 2-D DFT of each field of a batch; the inverse passes give
+    the fields back, times n^2 unless normalised (the cascades' unnormalised inverse, the solver's normalised one).
+    1024 points take more than one sweep of the work group's threads."""
+    from marinesim.gl import GpuFFT
+
+    rng = np.random.default_rng(3)
+    z = (rng.standard_normal((fields, n, n)) + 1j * rng.standard_normal((fields, n, n))).astype(np.complex64)
+    fft = GpuFFT(gl_context, n, fields=fields, normalised=normalised)
+    first, second = gl_context.buffer(z.tobytes()), gl_context.buffer(reserve=z.nbytes)
+    try:
+        fft.lines(first, second, rows=True)
+        fft.lines(second, first, rows=False)
+        spectrum = np.frombuffer(first.read(), np.complex64).reshape(z.shape)
+        expected = np.fft.fft2(z.astype(complex))
+        assert np.abs(spectrum - expected).max() <= 1e-5 * np.abs(expected).max()
+        fft.lines(first, second, rows=True, inverse=True)
+        fft.lines(second, first, rows=False, inverse=True)
+        back = np.frombuffer(first.read(), np.complex64).reshape(z.shape)
+        assert np.abs(back - z * (1 if normalised else n * n)).max() <= 1e-5 * np.abs(z).max() * (1 if normalised
+                                                                                                 else n * n)
+    finally:
+        for thing in (fft, first, second):
+            thing.release()
+
+
+def test_every_compute_shader_takes_its_work_group_size_from_python():
+    """No literal work-group size in a compute shader: GROUP (gl.py) or the FFT's THREADS, both injected."""
+    from marinesim.gl import SHADER_DIR
+
+    shaders = sorted(SHADER_DIR.glob("*.comp"))
+    assert len(shaders) >= 6
+    for path in shaders:
+        layout = re.search(r"layout\(([^)]*local_size[^)]*)\)\s*in;", path.read_text()).group(1)
+        assert not re.search(r"=\s*\d", layout), f"{path.name}: {layout}"
+
+
+def test_no_glsl_function_is_defined_in_two_shader_files():
+    """A function several shaders need lives in one include (complex.glsl, sky.glsl, surface.glsl)."""
+    from marinesim.gl import SHADER_DIR
+
+    defined: dict[str, list[str]] = {}
+    for path in sorted(SHADER_DIR.iterdir()):
+        for name in re.findall(r"^\w+\s+(\w+)\s*\([^)]*\)\s*\{", path.read_text(), re.MULTILINE):
+            defined.setdefault(name, []).append(path.name)
+    repeated = {name: files for name, files in defined.items() if len(files) > 1 and name != "main"}
+    assert not repeated
+    assert len(defined["cmul"]) == 1 and len(defined["main"]) >= 20
+
+
 def test_every_layer_gives_its_program_every_uniform_it_declares(gl_context, monkeypatch):
     """One update and draw of the default scenario: the sky, ocean, vessel and foam programs are given every
     uniform they declare (images are bound by their layout instead), and the ocean's samplers distinct units."""
+    from marinesim.gl import Program
     from marinesim.render.camera import OrbitCamera
-    from marinesim.render.program import Program
     from marinesim.render.renderer import Renderer
     from marinesim.scenario import load_scenario
     from marinesim.session.timeline import Simulation

@@ -20,7 +20,7 @@ import numpy as np
 from matplotlib.font_manager import FontProperties, findfont
 from PIL import Image, ImageDraw, ImageFont
 
-from marinesim.gl import GraphicsError, shader_source
+from marinesim.gl import GraphicsError, Program
 
 FIRST_CHAR, LAST_CHAR = 32, 126
 """The atlas holds printable ASCII; anything else is drawn as '?'."""
@@ -222,18 +222,16 @@ class Hud:
         self.margin, self.pad = round(MARGIN * max(scale, 1.0)), round(PAD * max(scale, 1.0))
         self.chart_size = (round(CHART_SIZE[0] * scale), max(round(CHART_SIZE[1] * scale), 3 * self.line_height + 12))
 
-        self.text_program = ctx.program(vertex_shader=shader_source("hud_text.vert"),
-                                        fragment_shader=shader_source("hud_text.frag"))
+        self.text_program = Program.from_files(ctx, "hud_text")
         self.text_program["cell"] = (self.advance, self.line_height)
         self.text_program["columns"] = ATLAS_COLUMNS
         self.text_program["atlas"] = 0
-        self.line_program = ctx.program(vertex_shader=shader_source("hud_line.vert"),
-                                        fragment_shader=shader_source("hud_line.frag"))
+        self.line_program = Program.from_files(ctx, "hud_line")
         self.glyph_buffer = ctx.buffer(reserve=1 << 16, dynamic=True)
         self.shape_buffer = ctx.buffer(reserve=1 << 16, dynamic=True)
-        self.text_vao = ctx.vertex_array(self.text_program,
+        self.text_vao = ctx.vertex_array(self.text_program.gl,
                                          [(self.glyph_buffer, "2f 1f 4f/i", "in_pos", "in_glyph", "in_color")])
-        self.shape_vao = ctx.vertex_array(self.line_program, [(self.shape_buffer, "2f 4f", "in_pos", "in_color")])
+        self.shape_vao = ctx.vertex_array(self.line_program.gl, [(self.shape_buffer, "2f 4f", "in_pos", "in_color")])
         self._lookup = np.full(256, ord("?") - FIRST_CHAR, dtype=np.float32)
         self._lookup[FIRST_CHAR:LAST_CHAR + 1] = np.arange(count)
 

@@ -2,9 +2,9 @@
 
 Per sub-step (shaders/): the hull is drawn into a float texture of displaced depth
 (``hull_depth.vert/.frag``, additive blending); then five compute passes: FFT of the rows with the
-depth added (``fft.comp`` ADD_DEPTH), FFT of the columns, the rotation in k-space
-(``solver_rotate.comp``), inverse FFT of the columns, inverse FFT of the rows with the depth taken
-off, the sponge/obstacle factor and the non-finite check (FINISH). Scrolling is
+depth added (``fft.comp`` ADD_DEPTH, through :class:`~marinesim.gl.GpuFFT`), FFT of the columns,
+the rotation in k-space (``solver_rotate.comp``), inverse FFT of the columns, inverse FFT of the rows
+with the depth taken off, the sponge/obstacle factor and the non-finite check (FINISH). Scrolling is
 ``solver_shift.comp``. The state stays on the GPU; :attr:`GpuSolver.height_texture` is what the
 renderer samples (R32F, texel (i, j) = cell column i, row j, at world position
 ``origin + (i + 1/2, j + 1/2) * cell``). Everything is float32; the NumPy reference
@@ -14,12 +14,11 @@ renderer samples (R32F, texel (i, j) = cell column i, row j, at world position
 from __future__ import annotations
 
 import logging
-import math
 
 import moderngl
 import numpy as np
 
-from marinesim.gl import shader_source, standalone_context
+from marinesim.gl import GROUP, GpuFFT, Program, standalone_context
 from marinesim.hull.mesh import Hull
 from marinesim.pose import Pose
 from marinesim.solver.footprint import Placement
@@ -27,9 +26,6 @@ from marinesim.solver.local import LocalSolver, SolverConfig
 from marinesim.solver.spectral import SUBPIXEL
 
 log = logging.getLogger("marinesim.solver")
-
-MAX_THREADS = 256
-GROUP = 16  # work-group side of the cell-wise passes
 
 
 class GpuSolver(LocalSolver):
@@ -42,16 +38,11 @@ class GpuSolver(LocalSolver):
 
     def _setup(self) -> None:
         ctx, n = self.ctx, self.config.size
-        threads = min(n // 2, MAX_THREADS)
-        fft = {"SIZE": f"{n}u", "THREADS": threads}
-        self._fft = ctx.compute_shader(shader_source("fft.comp", **fft))
-        self._fft_in = ctx.compute_shader(shader_source("fft.comp", ADD_DEPTH=1, **fft))
-        self._fft_out = ctx.compute_shader(shader_source("fft.comp", FINISH=1, **fft))
-        self._rotate = ctx.compute_shader(shader_source("solver_rotate.comp", SIZE=f"{n}u"))
-        self._shift_cs = ctx.compute_shader(shader_source("solver_shift.comp", SIZE=n))
-        self._raster = ctx.program(vertex_shader=shader_source("hull_depth.vert", SUBPIXEL=SUBPIXEL),
-                                   fragment_shader=shader_source("hull_depth.frag"))
-        self._raster["size"].value = float(n)
+        self._fft = GpuFFT(ctx, n, normalised=True, variants=("ADD_DEPTH", "FINISH"))
+        self._rotate = Program.from_files(ctx, "solver_rotate", compute=True, SIZE=f"{n}u")
+        self._shift_cs = Program.from_files(ctx, "solver_shift", compute=True, SIZE=n)
+        self._raster = Program.from_files(ctx, "hull_depth", SUBPIXEL=SUBPIXEL)
+        self._raster["size"] = float(n)
         bits = int(ctx.info.get("GL_SUBPIXEL_BITS", 0))
         if 1 << bits < SUBPIXEL:
             log.info("the GPU snaps vertices to 1/%d of a cell, not 1/%d: the hull's depth may differ from the "
@@ -62,8 +53,6 @@ class GpuSolver(LocalSolver):
         self._work = [ctx.buffer(reserve=cells * 8), ctx.buffer(reserve=cells * 8)]
         for buffer in (self._state, *self._work):
             buffer.clear()
-        twiddle = np.exp(-2j * math.pi * np.arange(n // 2) / n)
-        self._twiddle = ctx.buffer(np.column_stack([twiddle.real, twiddle.imag]).astype(np.float32).tobytes())
         a, b = self.coefficients
         coefficients = np.stack([a.real, a.imag, b.real, b.imag], axis=-1).astype(np.float32)
         self._coefficients = ctx.buffer(coefficients.tobytes())
@@ -80,7 +69,7 @@ class GpuSolver(LocalSolver):
         if self.hull is not None:  # the mesh goes up once; each sub-step sets only its placements' maps
             self._vertices = ctx.buffer(np.ascontiguousarray(self.hull.vertices, dtype=np.float64).tobytes())
             self._indices = ctx.buffer(np.ascontiguousarray(self.hull.faces, dtype=np.uint32).tobytes())
-            self._hull = ctx.vertex_array(self._raster, [(self._vertices, "3f8", "in_body")], self._indices,
+            self._hull = ctx.vertex_array(self._raster.gl, [(self._vertices, "3f8", "in_body")], self._indices,
                                           index_element_size=4)
 
     # --- passes -----------------------------------------------------------------------------
@@ -96,41 +85,28 @@ class GpuSolver(LocalSolver):
             self.ctx.blend_func = moderngl.ONE, moderngl.ONE
             self.ctx.blend_equation = moderngl.FUNC_ADD
             for matrix, weight in placements:
-                self._raster["to_grid"].write(np.ascontiguousarray(matrix.T, dtype=np.float64).tobytes())
-                self._raster["weight_in"].value = weight
+                self._raster["to_grid"] = np.ascontiguousarray(matrix.T, dtype=np.float64).tobytes()
+                self._raster["weight_in"] = weight
                 self._hull.render(moderngl.TRIANGLES)
             self.ctx.blend_func = moderngl.DEFAULT_BLENDING
-
-    def _pass_lines(self, shader: moderngl.ComputeShader, source, target, rows: bool, inverse: bool) -> None:
-        n = self.config.size
-        source.bind_to_storage_buffer(0)
-        target.bind_to_storage_buffer(1)
-        self._twiddle.bind_to_storage_buffer(2)
-        shader["line_stride"].value = n if rows else 1
-        shader["element_stride"].value = 1 if rows else n
-        shader["batch_stride"].value = 0
-        shader["inverse"].value = inverse
-        shader["scale"].value = 1.0 / n if inverse else 1.0
-        shader.run(n)
-        self.ctx.memory_barrier()
 
     def _advance(self, placements: list[Placement] | None) -> None:
         n = self.config.size
         first, second = self._work
         self._draw_depth(placements)
         self._depth.bind_to_image(0, read=True, write=False)
-        self._pass_lines(self._fft_in, self._state, first, rows=True, inverse=False)
-        self._pass_lines(self._fft, first, second, rows=False, inverse=False)
+        self._fft.lines(self._state, first, rows=True, variant="ADD_DEPTH")
+        self._fft.lines(first, second, rows=False)
         second.bind_to_storage_buffer(0)
         first.bind_to_storage_buffer(1)
         self._coefficients.bind_to_storage_buffer(2)
         self._rotate.run(n // GROUP, n // GROUP)
         self.ctx.memory_barrier()
-        self._pass_lines(self._fft, first, second, rows=False, inverse=True)
+        self._fft.lines(first, second, rows=False, inverse=True)
         self._keep.bind_to_storage_buffer(3)
         self._counter.bind_to_storage_buffer(4)
         self.height_texture.bind_to_image(1, read=False, write=True)
-        self._pass_lines(self._fft_out, second, self._state, rows=True, inverse=True)
+        self._fft.lines(second, self._state, rows=True, inverse=True, variant="FINISH")
 
     def _start_at_rest(self, placements: list[Placement]) -> None:
         self._draw_depth(placements)
@@ -142,7 +118,7 @@ class GpuSolver(LocalSolver):
         n = self.config.size
         self._state.bind_to_storage_buffer(0)
         self._work[0].bind_to_storage_buffer(1)
-        self._shift_cs["shift"].value = shift
+        self._shift_cs["shift"] = shift
         self._shift_cs.run(n // GROUP, n // GROUP)
         self.ctx.memory_barrier()
         self._state, self._work[0] = self._work[0], self._state
@@ -173,8 +149,8 @@ class GpuSolver(LocalSolver):
 
     def release(self) -> None:
         """Free the GPU objects (the context stays)."""
-        for thing in (self._fft, self._fft_in, self._fft_out, self._rotate, self._shift_cs, self._raster,
-                      self._state, *self._work, self._twiddle, self._coefficients, self._keep, self._counter,
+        for thing in (self._fft, self._rotate, self._shift_cs, self._raster,
+                      self._state, *self._work, self._coefficients, self._keep, self._counter,
                       self._depth_fbo, self._depth, self.height_texture, self._hull, self._vertices, self._indices):
             if thing is not None:
                 thing.release()

@@ -7,14 +7,12 @@ import math
 import moderngl
 import numpy as np
 
+from marinesim.gl import GROUP, Program
 from marinesim.render.layers.base import tile_texture_array
 from marinesim.render.layers.cascades import CascadeLayer
-from marinesim.render.program import Program
 
 FOAM_TAU_S = 4.0
 """The held Jacobian relaxes back to 1 as exp(-t / tau) once the surface stops folding (foam.comp)."""
-GROUP = 16
-"""foam.comp's work group is GROUP x GROUP texels."""
 
 
 class FoamLayer:
@@ -34,7 +32,7 @@ class FoamLayer:
         cascades.fields.use(0)
         self.held.bind_to_image(0, read=True, write=True)
         self.program.update({"u_cascades": 0, "u_decay": math.exp(-dt / FOAM_TAU_S)})
-        self.program.gl.run(self._n // GROUP, self._n // GROUP, self._tiles)
+        self.program.run(self._n // GROUP, self._n // GROUP, self._tiles)
         self.ctx.memory_barrier()
         self.held.build_mipmaps()
 

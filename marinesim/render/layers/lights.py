@@ -7,10 +7,10 @@ from __future__ import annotations
 import moderngl
 import numpy as np
 
+from marinesim.gl import Program
 from marinesim.pose import Pose
 from marinesim.render.layers.base import View, mat4
 from marinesim.render.nav_lights import THRESHOLD_LUX, NavLight, illuminance_lux, lit, sector_weight
-from marinesim.render.program import Program
 
 CORE_PX, PX_PER_DECADE = 3.0, 3.0
 """A light at the threshold is a point of CORE_PX; each decade of illuminance above it widens its glow by

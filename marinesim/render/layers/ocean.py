@@ -9,9 +9,9 @@ from collections.abc import Sequence
 import moderngl
 import numpy as np
 
+from marinesim.gl import Program
 from marinesim.pose import Pose
 from marinesim.render.layers.base import Sampled, View, mat4
-from marinesim.render.program import Program
 from marinesim.sea.cascades import Tile
 
 OCEAN_RADIUS_M = 20_000.0

@@ -7,10 +7,9 @@ from __future__ import annotations
 import moderngl
 import numpy as np
 
-from marinesim.gl import shader_source
+from marinesim.gl import Program, shader_source
 from marinesim.render.layers.base import View, mat4
 from marinesim.render.daylight import visible_drops_m3
-from marinesim.render.program import Program
 from marinesim.scenario.model import MAX_RAIN_MM_H
 
 

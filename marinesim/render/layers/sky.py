@@ -5,8 +5,8 @@ from __future__ import annotations
 import moderngl
 import numpy as np
 
+from marinesim.gl import Program
 from marinesim.render.layers.base import View, mat4
-from marinesim.render.program import Program
 
 
 class SkyLayer:

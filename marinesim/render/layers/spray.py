@@ -8,8 +8,8 @@ import math
 import moderngl
 import numpy as np
 
+from marinesim.gl import Program
 from marinesim.render.layers.base import View, mat4
-from marinesim.render.program import Program
 from marinesim.render.spray import LIFE_S, MAX_PUFFS, Puffs
 
 SIZE_M = np.array([1.5, 3.0])

@@ -2,10 +2,11 @@
 
 The same numerics as the CPU synthesis (:mod:`marinesim.sea.synthesis`), in compute shaders:
 ``cascade_pack.comp`` evolves every cell's spectrum to the frame's time and packs the four
-transforms per tile, ``fft.comp`` (the one GPU FFT, shared with the local solver) inverse-transforms
-the rows and then the columns of all of them in two dispatches, and ``cascade_unpack.comp`` writes
-height, displacement, Jacobian and slopes into the :class:`~marinesim.render.layers.cascades.CascadeLayer`'s
-texture arrays. Mipmaps and the foam pass follow on the GPU as before.
+transforms per tile, ``fft.comp`` (the one GPU FFT, :class:`~marinesim.gl.GpuFFT`, shared with the local
+solver) inverse-transforms the rows and then the columns of all of them in two dispatches, and
+``cascade_unpack.comp`` writes height, displacement, Jacobian and slopes into the
+:class:`~marinesim.render.layers.cascades.CascadeLayer`'s texture arrays. Mipmaps and the foam pass follow on
+the GPU.
 
 The CPU uploads only what changes: the spectrum of a sea state when the frames first need it (the
 start, and each ramp of a live change: :meth:`Ocean.spectrum_state`), and per frame the time, the
@@ -15,19 +16,12 @@ same amplitudes as these spectra, so it moves on exactly the waves that are draw
 
 from __future__ import annotations
 
-import math
-
 import moderngl
 import numpy as np
 
-from marinesim.gl import shader_source
+from marinesim.gl import GROUP, GpuFFT, Program
 from marinesim.render.layers.cascades import CascadeLayer
 from marinesim.sea.ocean import Ocean
-
-GROUP = 16
-"""The pack and unpack passes' work groups are GROUP x GROUP cells."""
-MAX_THREADS = 256
-"""Threads of one FFT line's work group."""
 
 
 class CascadeSynthesis:
@@ -37,9 +31,9 @@ class CascadeSynthesis:
         self.ctx, self.ocean, self.cascades = ctx, ocean, cascades
         n, tiles = ocean.resolution, len(ocean.tiles)
         self._n, self._tiles = n, tiles
-        self._pack = ctx.compute_shader(shader_source("cascade_pack.comp", SIZE=f"{n}u", TILES=tiles))
-        self._fft = ctx.compute_shader(shader_source("fft.comp", SIZE=f"{n}u", THREADS=min(n // 2, MAX_THREADS)))
-        self._unpack = ctx.compute_shader(shader_source("cascade_unpack.comp", SIZE=f"{n}u"))
+        self._pack = Program.from_files(ctx, "cascade_pack", compute=True, SIZE=f"{n}u", TILES=tiles)
+        self._fft = GpuFFT(ctx, n, fields=4 * tiles)  # the ocean's transform is the unnormalised inverse DFT
+        self._unpack = Program.from_files(ctx, "cascade_unpack", compute=True, SIZE=f"{n}u")
         cells = tiles * n * n
         self._omega = ctx.buffer(ocean.grid_omega().astype(np.float64).tobytes())
         self._states = [ctx.buffer(reserve=cells * 16), ctx.buffer(reserve=cells * 16)]
@@ -47,12 +41,7 @@ class CascadeSynthesis:
         """The sea state (ramps so far) each of the two state buffers holds."""
         self._spectra = ctx.buffer(reserve=cells * 4 * 8)
         self._work = ctx.buffer(reserve=cells * 4 * 8)
-        twiddle = np.exp(-2j * math.pi * np.arange(n // 2) / n)
-        self._twiddle = ctx.buffer(np.column_stack([twiddle.real, twiddle.imag]).astype(np.float32).tobytes())
-        self._pack["u_dk"].value = [tile.dk for tile in ocean.tiles] if tiles > 1 else ocean.tiles[0].dk
-        self._fft["batch_stride"].value = n * n
-        self._fft["inverse"].value = True
-        self._fft["scale"].value = 1.0  # the ocean's transform is the unnormalised inverse DFT
+        self._pack["u_dk"] = [tile.dk for tile in ocean.tiles] if tiles > 1 else ocean.tiles[0].dk
 
     def _slot(self, state: int, keep: int | None) -> int:
         """The state buffer holding ``state``, uploading it into the one not holding ``keep`` if needed."""
@@ -72,32 +61,18 @@ class CascadeSynthesis:
         self._states[second].bind_to_storage_buffer(1)
         self._omega.bind_to_storage_buffer(2)
         self._spectra.bind_to_storage_buffer(3)
-        self._pack["u_time"].value = float(t)
-        self._pack["u_weight"].value = weight
-        self._pack["u_choppiness"].value = self.ocean.choppiness
+        self._pack.update({"u_time": float(t), "u_weight": weight, "u_choppiness": self.ocean.choppiness})
         groups = self._n // GROUP
         self._pack.run(groups, groups, self._tiles)
         self.ctx.memory_barrier()
-        self._lines(self._spectra, self._work, rows=True)
-        self._lines(self._work, self._spectra, rows=False)
+        self._fft.lines(self._spectra, self._work, rows=True, inverse=True)
+        self._fft.lines(self._work, self._spectra, rows=False, inverse=True)
         self._spectra.bind_to_storage_buffer(0)
         self.cascades.fields.bind_to_image(0, read=False, write=True)
         self.cascades.slopes.bind_to_image(1, read=False, write=True)
         self._unpack.run(groups, groups, self._tiles)
         self.ctx.memory_barrier()
 
-    def _lines(self, source: moderngl.Buffer, target: moderngl.Buffer, rows: bool) -> None:
-        """One pass of the inverse FFT over every row (or column) of the 4 transforms of every tile."""
-        n = self._n
-        source.bind_to_storage_buffer(0)
-        target.bind_to_storage_buffer(1)
-        self._twiddle.bind_to_storage_buffer(2)
-        self._fft["line_stride"].value = n if rows else 1
-        self._fft["element_stride"].value = 1 if rows else n
-        self._fft.run(n, 4 * self._tiles)
-        self.ctx.memory_barrier()
-
     def release(self) -> None:
-        for thing in (self._pack, self._fft, self._unpack, self._omega, *self._states, self._spectra, self._work,
-                      self._twiddle):
+        for thing in (self._pack, self._fft, self._unpack, self._omega, *self._states, self._spectra, self._work):
             thing.release()

@@ -5,10 +5,10 @@ from __future__ import annotations
 
 import moderngl
 
+from marinesim.gl import Program
 from marinesim.pose import Pose
 from marinesim.render.draft_marks import GLYPH, NO_MARKS, DraftMarks
 from marinesim.render.layers.base import View, mat4
-from marinesim.render.program import Program
 from marinesim.render.vessel_mesh import TOPSIDES, VesselMesh, vessel_mesh, visual_mesh
 from marinesim.session.timeline import Simulation
 
