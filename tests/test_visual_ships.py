@@ -1,4 +1,4 @@
-"""The four procedural visual meshes (hulls/visual_ships.py): hulls/s175_visual.glb, hulls/supply_visual.glb,
+"""The four procedural visual meshes (hulls/make/visual_ships.py): hulls/s175_visual.glb, hulls/supply_visual.glb,
 hulls/semisub_visual.glb and hulls/tanker_visual.glb, read by marinesim's own loader with no options (they are written in the body frame of
 their RAO files: x forward, y to port, z up, m, origin at the RAO reference point).
 
