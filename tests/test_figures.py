@@ -114,9 +114,11 @@ def _record(n: int = 50):
 def draw_every_plot(folder: Path) -> None:
     """Every plot of the package once, on small hand-made data, written into ``folder``."""
     from conftest import synthetic_table
+    from marinesim.criteria.monitor import Level
     from marinesim.manoeuvring.plot import plot_trials
     from marinesim.manoeuvring.trials import Stopping, Trials, Turning, Zigzag
     from marinesim.report import plots as report
+    from marinesim.report.debrief import CriterionTrace, Series
     from marinesim.sea import Cos2s, Jonswap, Ocean, SeaState, WaveSystem
     from marinesim.sea.plot import plot_sea, plot_series
     from marinesim.station.capability import Envelope
@@ -167,8 +169,10 @@ def draw_every_plot(folder: Path) -> None:
             "heading_deg": np.zeros_like(t).tolist(), "speed_over_ground_kn": np.full(t.size, 9.7).tolist(),
             "rudder_deg": np.sin(t).tolist(), "rudder_order_deg": np.zeros_like(t).tolist(),
             "propeller_rpm": np.full(t.size, 80.0).tolist()}
-    criterion = {"name": "roll", "unit": "deg", "limit": 2.0, "caution": 0.8, "window_s": 10.0,
-                 "series": {"time_s": t.tolist(), "value": np.abs(2.5 * np.sin(t / 10.0)).tolist()}}
+    criterion = CriterionTrace(name="roll", point=None, quantity="roll_max_deg", unit="deg", window_s=10.0, value=2.5,
+                               value_at_s=15.7, limit=2.0, caution=0.8, exceeded=True, time_exceeded_s=24.0,
+                               first_exceeded_s=9.0, level=Level.EXCEEDED, judged=True,
+                               series=Series(t.tolist(), np.abs(2.5 * np.sin(t / 10.0)).tolist()))
     pictures |= {"track.png": report.track_png(ship, [], []), "handling.png": report.handling_png(ship, [], 60.0),
                  "timeline.png": report.timeline_png(60.0, [], [], [], []),
                  "criterion.png": report.criterion_png(criterion, 60.0, [], [])}

@@ -4,6 +4,7 @@ page says, that real Chromium decodes every plot and draws the page, and that th
 from __future__ import annotations
 
 import copy
+import dataclasses
 import io
 import re
 
@@ -14,10 +15,14 @@ from PIL import Image
 from chromium import dump_dom, screenshot
 from conftest import write
 from marinesim.cli import main
+from marinesim.criteria.monitor import Level
 from marinesim.errors import MarinesimError
+from marinesim.report.debrief import (Action, Briefing, Conditions, CriterionTrace, Debrief, Message, Objective,
+                                      SeaSystem, Series, Sickness, VesselConditions)
 from marinesim.report.html import render_report, write_report
 from marinesim.report.plots import TRACK, handling_png, heading_curve, track_png
 from marinesim.scenario import load_scenario
+from marinesim.session.exercise import AlarmResult, EventResult
 from marinesim.session.log import write_log
 from test_session_replay import SESSION, _live_session
 
@@ -26,7 +31,7 @@ RED = (0xd0, 0x31, 0x2d)
 """The 'exceeded' badge's red (:data:`marinesim.report.plots.EXCEEDED`)."""
 
 
-def _running_max(amplitude, period_s: float, phase: float, window_s: float, noise: np.ndarray) -> dict:
+def _running_max(amplitude, period_s: float, phase: float, window_s: float, noise: np.ndarray) -> Series:
     """The running largest |angle| over ``window_s`` of a wave-frequency motion of slowly varying ``amplitude``(t),
     sampled at 0.5 s and evaluated every 1 s over 1200 s (None while the window fills)."""
     t = np.arange(0.0, 1200.0, 0.5)
@@ -35,31 +40,32 @@ def _running_max(amplitude, period_s: float, phase: float, window_s: float, nois
     running = np.lib.stride_tricks.sliding_window_view(np.abs(motion), window).max(axis=1)  # ends at t[window-1:]
     times = np.arange(1.0, 1201.0)
     values = [None if ti < window_s else round(float(running[int(2 * ti) - window]), 4) for ti in times]
-    return {"time_s": times.tolist(), "value": values}
+    return Series(times.tolist(), values)
 
 
-def _criterion(name, point, quantity, unit, limit, window_s, series) -> dict:
-    """A criterion's entry as :meth:`Exercise.assessment` gives it, its statistics taken from ``series``."""
-    pairs = [(t, v) for t, v in zip(series["time_s"], series["value"]) if v is not None]
+def _criterion(name, point, quantity, unit, limit, window_s, series: Series) -> CriterionTrace:
+    """A criterion's entry as :func:`~marinesim.report.debrief.debrief` gives it, its statistics taken from
+    ``series``."""
+    pairs = [(t, v) for t, v in zip(series.time_s, series.value) if v is not None]
     above = [t for t, v in pairs if v > limit]
     worst_t, worst = max(pairs, key=lambda p: p[1]) if pairs else (None, None)
-    level = ("settling" if worst is None else "exceeded" if worst > limit else "caution" if worst >= 0.8 * limit
-             else "ok")
-    return {"name": name, "point": point, "quantity": quantity, "unit": unit, "limit": limit, "caution": 0.8,
-            "window_s": window_s, "value": worst, "value_at_s": worst_t, "time_exceeded_s": float(len(above)),
-            "first_exceeded_s": above[0] if above else None, "level": level, "series": series}
+    level = (Level.SETTLING if worst is None else Level.EXCEEDED if worst > limit
+             else Level.CAUTION if worst >= 0.8 * limit else Level.OK)
+    return CriterionTrace(name=name, point=point, quantity=quantity, unit=unit, window_s=window_s, value=worst,
+                          value_at_s=worst_t, limit=limit, caution=0.8, exceeded=bool(above),
+                          time_exceeded_s=float(len(above)), first_exceeded_s=above[0] if above else None, level=level,
+                          judged=True, series=series)
 
 
-def _alarms(criterion: dict) -> list[dict]:
+def _alarms(criterion: CriterionTrace) -> list[AlarmResult]:
     """An alarm each time the series goes above its limit, cleared when it is back under."""
     out, up = [], None
-    for t, v in zip(criterion["series"]["time_s"], criterion["series"]["value"]):
-        if v is not None and v > criterion["limit"] and up is None:
-            up = {"criterion": criterion["name"], "raised_s": t, "value": v, "limit": criterion["limit"],
-                  "acknowledged_s": None, "cleared_s": None}
-            out.append(up)
-        elif up is not None and (v is None or v <= criterion["limit"]):
-            up["cleared_s"], up = t, None
+    for t, v in zip(criterion.series.time_s, criterion.series.value):
+        if v is not None and v > criterion.limit and up is None:
+            up = len(out)
+            out.append(AlarmResult(criterion.name, t, v, criterion.limit))
+        elif up is not None and (v is None or v <= criterion.limit):
+            out[up], up = dataclasses.replace(out[up], cleared_s=t), None
     return out
 
 
@@ -86,7 +92,7 @@ def ship_data(duration_s: float = 1200.0) -> dict:
             "propeller_rpm": rpm.round(6).tolist(), "rate_of_turn_deg_min": rate.round(6).tolist()}
 
 
-def exercise_data() -> dict:
+def exercise_data() -> Debrief:
     """A 1200 s run evaluated every 1 s: the helideck pitch goes above its limit twice (two alarms, the first
     acknowledged after 6.5 s, the second never), the roll reaches caution only, the heave rate's 30 min window
     never fills; an event at 240 s, one on a condition, one that never happened; an instructor's message with
@@ -96,55 +102,45 @@ def exercise_data() -> dict:
                          rng.normal(0.0, 0.08, 2400))
     roll = _running_max(lambda t: 3.25 + 0.85 * np.sin(2 * np.pi * t / 900), 11.0, 1.1, 60.0,
                         rng.normal(0.0, 0.1, 2400))
-    heave = {"time_s": pitch["time_s"], "value": [None] * len(pitch["time_s"])}
+    heave = Series(pitch.time_s, [None] * len(pitch.time_s))
     criteria = [_criterion("helideck pitch", "helideck", "pitch_max_deg", "deg", 3.0, 60.0, pitch),
                 _criterion("helideck roll", "helideck", "roll_max_deg", "deg", 5.0, 60.0, roll),
                 _criterion("helideck heave rate", "helideck", "mahr_m_s", "m/s", 1.3, 1800.0, heave)]
     alarms = _alarms(criteria[0])
     assert len(alarms) == 2, "the test's pitch must go above its limit twice"
-    alarms[0]["acknowledged_s"] = alarms[0]["raised_s"] + 6.5
-    stand_by = next(t for t, v in zip(pitch["time_s"], pitch["value"]) if v is not None and v > 2.5)
-    return {
-        "title": "helideck landing window",
-        "source": "configs/training/helideck_landing.toml",
-        "briefing": {
-            "text": "A medium helicopter lands on the supply vessel's helideck in a building westerly sea.\n\n"
-                    "Keep the deck within the CAP 437 motion limits; call the helicopter off when the pitch "
-                    "alarm sounds, and acknowledge every alarm at once.",
-            "objectives": [
-                {"text": "Land the helicopter within the CAP 437 limits",
-                 "criteria": ["helideck pitch", "helideck roll"], "verdict": "not met"},
-                {"text": "Keep the roll below the caution line", "criteria": ["helideck roll"],
-                 "verdict": "met with caution"},
-                {"text": "Hold the heave rate over 30 min", "criteria": ["helideck heave rate"], "verdict": "no value"},
-                {"text": "Brief the crew before the approach", "criteria": [], "verdict": "met"}]},
-        "verdict": "exceeded",
-        "conditions": {
-            "scenario": "configs/training/helideck_landing.toml", "scenario_sha256": "3f" * 32, "seed": 11,
-            "duration_s": 1200.0, "dt_s": 0.5, "log": "sessions/helideck-1.jsonl", "log_sha256": "a7" * 32,
-            "marinesim": "0.9",
-            "vessel": {"rao": "rao/supply/supply.re1", "rao_sha256": "c4" * 32, "speed_kn": 4.0, "heading_deg": 270.0,
-                       "points_m": {"helideck": [-28.0, 0.0, 12.5], "bridge": [22.0, 0.0, 14.0]}},
-            "sea": [{"hs_m": 3.0, "tp_s": 9.0, "from_deg": 290.0, "gamma": 3.3, "spreading_s": 12.0},
-                    {"hs_m": 1.5, "tp_s": 14.0, "from_deg": 250.0, "gamma": 1.0, "spreading_s": None}]},
-        "criteria": criteria,
-        "events": [
-            {"index": 0, "trigger": "at 240 s", "happened_s": 240.0, "what": "sea Hs 4.0 m over 120 s",
-             "message": "Helicopter inbound"},
-            {"index": 1, "trigger": "when helideck pitch > 2.5", "happened_s": stand_by, "what": "message only",
-             "message": "Deck crew stand by"},
-            {"index": 2, "trigger": "when roll > 8", "happened_s": None, "what": "speed 0 kn", "message": None}],
-        "alarms": alarms,
-        "messages": [{"time_s": 240.0, "text": "Helicopter inbound", "source": "event"},
-                     {"time_s": stand_by, "text": "Deck crew stand by", "source": "event"},
-                     {"time_s": 640.0, "text": "<script>alert('wave')</script> & check the lashings",
-                      "source": "instructor"}],
-        "actions": [{"time_s": 120.4, "what": "instructor: speed 10 kn"},
-                    {"time_s": alarms[0]["acknowledged_s"], "what": "alarms acknowledged"}],
-        "sickness": [{"point": "bridge", "msi_percent": 12.3, "msdv_m_s1_5": 30.1},
-                     {"point": "helideck", "msi_percent": 21.7, "msdv_m_s1_5": None}],
-        "ship": ship_data(),
-    }
+    alarms[0] = dataclasses.replace(alarms[0], acknowledged_s=alarms[0].raised_s + 6.5)
+    stand_by = next(t for t, v in zip(pitch.time_s, pitch.value) if v is not None and v > 2.5)
+    return Debrief(
+        title="helideck landing window",
+        source="configs/training/helideck_landing.toml",
+        briefing=Briefing(
+            "A medium helicopter lands on the supply vessel's helideck in a building westerly sea.\n\n"
+            "Keep the deck within the CAP 437 motion limits; call the helicopter off when the pitch "
+            "alarm sounds, and acknowledge every alarm at once.",
+            [Objective("Land the helicopter within the CAP 437 limits", ["helideck pitch", "helideck roll"], "not met"),
+             Objective("Keep the roll below the caution line", ["helideck roll"], "met with caution"),
+             Objective("Hold the heave rate over 30 min", ["helideck heave rate"], "no value"),
+             Objective("Brief the crew before the approach", [], "met")]),
+        verdict="exceeded",
+        conditions=Conditions(
+            scenario="configs/training/helideck_landing.toml", scenario_sha256="3f" * 32, seed=11,
+            duration_s=1200.0, dt_s=0.5, log="sessions/helideck-1.jsonl", log_sha256="a7" * 32,
+            marinesim="0.9",
+            vessel=VesselConditions("rao/supply/supply.re1", "c4" * 32, 4.0, 270.0,
+                                    {"helideck": [-28.0, 0.0, 12.5], "bridge": [22.0, 0.0, 14.0]}),
+            sea=[SeaSystem(3.0, 9.0, 290.0, 3.3, 12.0), SeaSystem(1.5, 14.0, 250.0, 1.0, None)]),
+        criteria=criteria,
+        events=[
+            EventResult(0, "at 240 s", 240.0, "sea Hs 4.0 m over 120 s", "Helicopter inbound"),
+            EventResult(1, "when helideck pitch > 2.5", stand_by, "message only", "Deck crew stand by"),
+            EventResult(2, "when roll > 8", None, "speed 0 kn", None)],
+        alarms=alarms,
+        messages=[Message(240.0, "Helicopter inbound", "event"), Message(stand_by, "Deck crew stand by", "event"),
+                  Message(640.0, "<script>alert('wave')</script> & check the lashings", "instructor")],
+        actions=[Action(120.4, "instructor: speed 10 kn"), Action(alarms[0].acknowledged_s, "alarms acknowledged")],
+        sickness=[Sickness("bridge", 12.3, 30.1), Sickness("helideck", 21.7, None)],
+        ship=ship_data(),
+    )
 
 
 @pytest.fixture(scope="module")
@@ -157,11 +153,11 @@ def report(tmp_path_factory):
 def test_the_page_says_what_the_debrief_needs(report):
     data, path = report
     page = path.read_text(encoding="utf-8")
-    assert page.count("<img class='plot'") == len(data["criteria"]) + 3, \
+    assert page.count("<img class='plot'") == len(data.criteria) + 3, \
         "one plot per criterion, the ship's track and handling, and the timeline"
     assert "class='badge exceeded verdict'>exceeded<" in page, "the overall verdict, as a red badge"
-    for objective in data["briefing"]["objectives"]:
-        assert objective["text"] in page and f"'>{objective['verdict']}</span>" in page, objective
+    for objective in data.briefing.objectives:
+        assert objective.text in page and f"'>{objective.verdict}</span>" in page, objective
     assert "<td class='num'>6.5 s</td>" in page, "the alarm table gives the acknowledgement delay"
     assert "not acknowledged" in page and "did not happen" in page
     assert "&lt;script&gt;alert(&#x27;wave&#x27;)&lt;/script&gt; &amp; check the lashings" in page, "text is escaped"
@@ -186,25 +182,26 @@ def test_same_data_same_bytes(report, tmp_path):
 
 def test_missing_parts_leave_their_sections_out():
     """A title, a verdict and one criterion that never got a value: the page renders, without the other parts."""
-    lean = {"title": "bare", "verdict": "no value", "criteria": [exercise_data()["criteria"][2]]}
+    lean = Debrief(title="bare", verdict="no value", criteria=[exercise_data().criteria[2]])
     page = render_report(lean)
     assert page.count("<img class='plot'") == 1 and "no value yet" in page
     for section in ("briefing", "alarms", "sickness", "log", "conditions"):
         assert f"<section id='{section}'>" not in page
     assert "<section id='ship'>" not in page
-    bare = render_report({"title": "bare", "criteria": [], "events": [], "alarms": [], "messages": [], "ship": None})
+    bare = render_report(Debrief(title="bare", criteria=[], events=[], alarms=[], messages=[], ship=None))
     assert "<h1>bare</h1>" in bare and "<img" not in bare and "class='badge none verdict'>no value<" in bare
 
 
 def test_a_three_hour_run_keeps_every_point_and_a_small_page():
     t = np.arange(1.0, 10801.0)
     v = 1.0 + 0.8 * np.sin(2 * np.pi * t / 3000) + np.random.default_rng(1).normal(0.0, 0.05, t.size)
-    criterion = {"name": "bridge MSI", "point": "bridge", "quantity": "msi_pct", "unit": "%", "limit": 1.6,
-                 "caution": 0.8, "window_s": None, "value": float(v.max()), "value_at_s": float(t[v.argmax()]),
-                 "time_exceeded_s": float((v > 1.6).sum()), "first_exceeded_s": float(t[v > 1.6][0]),
-                 "level": "exceeded", "series": {"time_s": t.tolist(), "value": v.tolist()}}
-    page = render_report({"title": "heavy weather transit", "verdict": "exceeded", "criteria": [criterion],
-                          "conditions": {"duration_s": 10800.0}})
+    criterion = CriterionTrace(name="bridge MSI", point="bridge", quantity="msi_pct", unit="%", limit=1.6,
+                               caution=0.8, window_s=None, value=float(v.max()), value_at_s=float(t[v.argmax()]),
+                               exceeded=True, time_exceeded_s=float((v > 1.6).sum()),
+                               first_exceeded_s=float(t[v > 1.6][0]), level=Level.EXCEEDED, judged=True,
+                               series=Series(t.tolist(), v.tolist()))
+    page = render_report(Debrief(title="heavy weather transit", verdict="exceeded", criteria=[criterion],
+                                 conditions=Conditions(duration_s=10800.0)))
     assert "3:00:00" in page, "past an hour, times read h:min:s"
     assert len(page) < 200_000
 
@@ -212,14 +209,14 @@ def test_a_three_hour_run_keeps_every_point_and_a_small_page():
 def test_write_refuses_a_folder(tmp_path):
     (tmp_path / "r.html").mkdir()
     with pytest.raises(MarinesimError):
-        write_report({"title": "x"}, tmp_path / "r.html")
+        write_report(Debrief(title="x"), tmp_path / "r.html")
 
 
 def test_chromium_decodes_every_plot_and_draws_the_page(report, tmp_path):
     data, path = report
     dom = dump_dom(path)
     loaded = re.search(r'data-plots-loaded="(\d+)"', dom)
-    assert loaded and int(loaded.group(1)) == len(data["criteria"]) + 3, "the browser must decode every plot"
+    assert loaded and int(loaded.group(1)) == len(data.criteria) + 3, "the browser must decode every plot"
     png = screenshot(path, tmp_path / "report.png", (1200, 3000))
     image = np.asarray(Image.open(png).convert("RGB")).astype(int)
     assert image.shape[:2] == (3000, 1200)
@@ -258,23 +255,22 @@ def test_a_ship_held_on_station_is_said_to_be_and_drawn_apart():
         still[key] = [0.0] * len(still["time_s"])
     still["heading_deg"] = [270.0] * len(still["time_s"])
     full = exercise_data()
-    data = {"title": "on station", "events": full["events"], "alarms": full["alarms"], "ship": still}
+    data = Debrief(title="on station", events=full.events, alarms=full.alarms, ship=still)
     page = render_report(data)
     ship = page[page.index("<section id='ship'>"):page.index("<section id='alarms'>")]
     assert "held on station at the start position" in ship and ship.count("<img class='plot'") == 2
     assert "nm over the ground" not in ship and "heading 270°" in ship
-    assert track_png(still, data["events"], []) != track_png(ship_data(600.0), data["events"], [])
-    assert "<section id='ship'>" not in render_report(data | {"ship": None})
+    assert track_png(still, data.events, []) != track_png(ship_data(600.0), data.events, [])
+    assert "<section id='ship'>" not in render_report(dataclasses.replace(data, ship=None))
 
 
 def test_the_ship_figures_are_the_same_bytes_from_the_same_data():
     data = exercise_data()
-    alarms = list(enumerate(data["alarms"], start=1))
-    once = track_png(data["ship"], data["events"], alarms)
-    assert once == track_png(copy.deepcopy(data["ship"]), copy.deepcopy(data["events"]), copy.deepcopy(alarms))
-    assert handling_png(data["ship"], data["events"], 1200.0) == handling_png(copy.deepcopy(data["ship"]),
-                                                                              data["events"], 1200.0)
-    assert track_png(data["ship"], data["events"], data["alarms"]) == once, "alarms alone are numbered from 1"
+    alarms = list(enumerate(data.alarms, start=1))
+    once = track_png(data.ship, data.events, alarms)
+    assert once == track_png(copy.deepcopy(data.ship), copy.deepcopy(data.events), copy.deepcopy(alarms))
+    assert handling_png(data.ship, data.events, 1200.0) == handling_png(copy.deepcopy(data.ship), data.events, 1200.0)
+    assert track_png(data.ship, data.events, data.alarms) == once, "alarms alone are numbered from 1"
 
 
 def test_the_track_is_to_scale_east_right_north_up():

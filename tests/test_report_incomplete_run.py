@@ -15,6 +15,7 @@ from PIL import Image
 from chromium import screenshot
 from conftest import ROOT
 from marinesim.cli import main
+from marinesim.criteria.monitor import Level
 from marinesim.report.plots import NONE, OK
 from marinesim.scenario import load_scenario, with_run
 from marinesim.session.exercise import Exercise, ran_words
@@ -35,14 +36,11 @@ TIGHT_ROLL_DEG = 1.5
 def session(path, folder, until_s: float) -> tuple:
     """The exercise of ``path`` over :data:`PLANNED_S` as the viewer runs it, in frames of 0.25 s, closed at
     ``until_s`` and its log written to ``folder``: (the log, the exercise's assessment)."""
-    simulation = Simulation(with_run(load_scenario(path), PLANNED_S), wake=False)
-    try:
+    with Simulation(with_run(load_scenario(path), PLANNED_S), wake=False) as simulation:
         exercise = Exercise(simulation)
         while simulation.time < until_s - 1e-9:
             exercise.advance(min(0.25, until_s - simulation.time))
         exercise.note("end")
-    finally:
-        simulation.close()
     folder.mkdir(parents=True, exist_ok=True)
     return write_log(folder / "session.jsonl", exercise), exercise.assessment()
 
@@ -97,10 +95,10 @@ def test_the_share_that_ran_in_words():
 def test_a_full_run_is_debriefed_as_before(full, capsys):
     """Run to its end: complete, every criterion judged, the verdict from the levels alone, all objectives met."""
     log, result = full
-    assert result["complete"] and result["duration_s"] == result["planned_s"] == PLANNED_S
-    assert all(c["judged"] for c in result["criteria"])
-    levels = {c["level"] for c in result["criteria"]}
-    assert levels == {"ok"} and result["verdict"] == "within limits"
+    assert result.complete and result.duration_s == result.planned_s == PLANNED_S
+    assert all(c.judged for c in result.criteria)
+    levels = {c.level for c in result.criteria}
+    assert levels == {Level.OK} and result.verdict == "within limits"
     page, printed = report(log, capsys)
     assert verdict_badge(page) == "within limits" and "verdict: within limits\n" in printed
     assert objective_verdicts(page) == ["met"] * 3 and "3 of 3 met" in header_of(page)
@@ -111,9 +109,9 @@ def test_a_run_stopped_at_a_fifth_is_incomplete(early, capsys):
     """Closed at 60 s of 300 s with every criterion within its limit so far: not WITHIN LIMITS but INCOMPLETE,
     the share that ran in the header and the conditions, every objective and criterion NOT JUDGED."""
     log, result = early
-    assert not result["complete"] and result["duration_s"] == STOP_S and result["planned_s"] == PLANNED_S
-    assert {c["level"] for c in result["criteria"]} == {"ok"} and not any(c["judged"] for c in result["criteria"])
-    assert result["verdict"] == "incomplete"
+    assert not result.complete and result.duration_s == STOP_S and result.planned_s == PLANNED_S
+    assert {c.level for c in result.criteria} == {Level.OK} and not any(c.judged for c in result.criteria)
+    assert result.verdict == "incomplete"
     page, printed = report(log, capsys)
     header = header_of(page)
     assert verdict_badge(page) == "incomplete" and "within limits" not in header
@@ -139,9 +137,9 @@ def test_an_objective_failed_before_the_stop_stays_failed(tight, tmp_path, capsy
     objective is NOT MET and the verdict EXCEEDED; the crane tip's objectives, within their limits so far, are
     NOT JUDGED."""
     log, result = session(tight, tmp_path, STOP_S)
-    roll = next(c for c in result["criteria"] if c["name"] == "roll")
-    assert roll["level"] == "exceeded" and roll["judged"] and roll["first_exceeded_s"] < STOP_S
-    assert result["verdict"] == "exceeded" and not result["complete"]
+    roll = next(c for c in result.criteria if c.name == "roll")
+    assert roll.level is Level.EXCEEDED and roll.judged and roll.first_exceeded_s < STOP_S
+    assert result.verdict == "exceeded" and not result.complete
     page, _ = report(log, capsys)
     assert verdict_badge(page) == "exceeded" and "60 s of 300 s (20 %)" in header_of(page)
     assert objective_verdicts(page) == ["not judged", "not judged", "not met"]

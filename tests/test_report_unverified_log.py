@@ -12,6 +12,7 @@ from PIL import Image
 
 from chromium import dump_dom, screenshot
 from marinesim.cli import main
+from marinesim.report.debrief import Debrief, LogCheck
 from marinesim.report.html import render_report
 from test_report_html import RED
 from test_session_log_verification import (config, copy, cut_end, delete_sidecar, move_acknowledgement,  # noqa: F401
@@ -109,5 +110,5 @@ def test_chromium_draws_the_banner_across_the_top(verified_page, unverified_page
 
 def test_the_banner_escapes_what_the_log_says():
     """A problem's words can carry text from the sidecar (a key's name): escaped, never markup."""
-    page = render_report({"title": "t", "log_check": {"verified": False, "problems": ["key <img src=x>"]}})
+    page = render_report(Debrief(title="t", log_check=LogCheck(False, ["key <img src=x>"])))
     assert "<li>key &lt;img src=x&gt;</li>" in page and "<img src=x>" not in page

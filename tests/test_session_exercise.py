@@ -10,6 +10,7 @@ import pytest
 
 from conftest import ROOT, VESSEL_SCENARIO, offscreen, write
 from marinesim.constants import KNOT
+from marinesim.criteria.monitor import Level
 from marinesim.errors import ParameterError
 from marinesim.scenario import load_scenario
 from marinesim.session.exercise import Exercise
@@ -157,13 +158,12 @@ def test_seeking_to_a_time_whose_row_rounds_past_it_lands_on_it(tmp_path):
 
 def test_a_condition_that_never_holds_changes_nothing(tmp_path):
     scenario = load_scenario(write(tmp_path, CONDITIONAL.format(threshold=100.0)))
-    simulation = Simulation(scenario, wake=False)
-    exercise = Exercise(simulation)
-    exercise.run()
-    assert [h.index for h in exercise.happened] == [1] and len(simulation.legs) == 1
-    result = exercise.assessment()
-    assert result["events"][0]["happened_s"] is None and result["events"][1]["happened_s"] == 200.0
-    simulation.close()
+    with Simulation(scenario, wake=False) as simulation:
+        exercise = Exercise(simulation)
+        exercise.run()
+        assert [h.index for h in exercise.happened] == [1] and len(simulation.legs) == 1
+        result = exercise.assessment()
+        assert result.events[0].happened_s is None and result.events[1].happened_s == 200.0
 
 
 def test_the_viewer_shows_what_assess_reports(tmp_path):
@@ -211,7 +211,7 @@ def test_the_picture_shows_the_criteria_and_the_message(tmp_path):
         view.go_to(205.0)
         bare = view.frame()
     top = slice(0, 500)
-    assert level in ("ok", "caution", "exceeded")
+    assert level in (Level.OK, Level.CAUTION, Level.EXCEEDED)
     assert _coloured(image[top], LEVEL_COLORS[level]) > _coloured(bare[top], LEVEL_COLORS[level]) + 100
     assert _coloured(image[top], MESSAGE_COLOR) > _coloured(bare[top], MESSAGE_COLOR) + 100
 

@@ -42,7 +42,7 @@ def test_an_alarm_is_raised_in_the_first_frame_above_the_limit_and_held_until_ac
     limit = float(np.round(np.median(settled), 4))
     scenario = load_scenario(write(tmp_path, SESSION.format(limit=limit)))
     *_, reference = _values(scenario)
-    first = reference.assessment()["criteria"][0]["first_exceeded_s"]
+    first = reference.assessment().criteria[0].first_exceeded_s
     assert first is not None and reference.alarms[0].raised_s == first
 
     simulation = Simulation(scenario, wake=False)

@@ -5,12 +5,13 @@ from __future__ import annotations
 import argparse
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from marinesim.cli.common import bars, json_text
 
+if TYPE_CHECKING:
+    from marinesim.session.exercise import Assessment
 
-NEEDS = ("marinesim.scenario", "marinesim.session.exercise", "marinesim.session.timeline")
-"""The modules the command loads before it starts (Ctrl-C is held until they are in)."""
 
 def add(commands: argparse._SubParsersAction) -> None:
     p = commands.add_parser(
@@ -30,44 +31,37 @@ def handle(args: argparse.Namespace) -> int:
     from marinesim.errors import ScenarioError
     from marinesim.progress import reporting
     from marinesim.scenario import load_scenario, with_run
-    from marinesim.session.exercise import Exercise
-    from marinesim.session.timeline import Simulation
+    from marinesim.session.exercise import run_exercise
 
     scenario = with_run(load_scenario(args.scenario), args.duration, seed=args.seed)
     if not scenario.criteria:
         raise ScenarioError(f"{scenario.path}: no [[criteria]]: nothing to assess")
     log = (lambda line: print(line, file=sys.stderr)) if args.json else print
-    simulation = Simulation(scenario, wake=False)
-    try:
-        exercise = Exercise(simulation, log=log)
-        with reporting(bars(args.quiet)):
-            exercise.run()
-    finally:
-        simulation.close()
+    with reporting(bars(args.quiet)):
+        exercise = run_exercise(scenario, log=log)
     result = exercise.assessment()
-    print(json_text(result, indent=2) if args.json else "\n".join(table(result)))
+    print(json_text(result.as_dict(), indent=2) if args.json else "\n".join(table(result)))
     return 0
 
 
-def table(result: dict) -> list[str]:
+def table(result: Assessment) -> list[str]:
     """The assessment as text lines: one per criterion, then the verdict; a run stopped early says how much of it
     ran, and the level of each criterion it could not judge is marked so."""
     from marinesim.criteria.monitor import value_and_limit
     from marinesim.session.exercise import ran_words
 
     rows = [("criterion", "worst", "limit", "unit", "level", "above limit", "first above")]
-    for c in result["criteria"]:
-        if c["value"] is None:
-            worst, limit = "settling", f"{c['limit']:.3g}"
+    for c in result.criteria:
+        if c.value is None:
+            worst, limit = "settling", f"{c.limit:.3g}"
         else:
-            worst, limit = value_and_limit(c["value"], c["limit"])
-        first = "-" if c["first_exceeded_s"] is None else f"{c['first_exceeded_s']:.0f} s"
-        level = c["level"] if c["judged"] else f"{c['level']} (not judged)"
-        rows.append((c["name"], worst, limit, c["unit"] or "-", level,
-                     f"{c['time_exceeded_s']:.0f} s", first))
+            worst, limit = value_and_limit(c.value, c.limit)
+        first = "-" if c.first_exceeded_s is None else f"{c.first_exceeded_s:.0f} s"
+        level = c.level.value if c.judged else f"{c.level.value} (not judged)"
+        rows.append((c.name, worst, limit, c.unit or "-", level, f"{c.time_exceeded_s:.0f} s", first))
     widths = [max(len(row[i]) for row in rows) for i in range(len(rows[0]))]
-    lines = [f"{result['scenario']}: {result['duration_s']:g} s at dt {result['dt_s']:g} s, seed {result['seed']}"]
-    if not result["complete"]:
-        lines.append(f"stopped early: ran {ran_words(result['duration_s'], result['planned_s'])}")
+    lines = [f"{result.scenario}: {result.duration_s:g} s at dt {result.dt_s:g} s, seed {result.seed}"]
+    if not result.complete:
+        lines.append(f"stopped early: ran {ran_words(result.duration_s, result.planned_s)}")
     lines += ["  ".join(cell.ljust(width) for cell, width in zip(row, widths)).rstrip() for row in rows]
-    return lines + [f"verdict: {result['verdict']}"]
+    return lines + [f"verdict: {result.verdict}"]

@@ -7,9 +7,6 @@ from pathlib import Path
 
 from marinesim.cli.common import add_view_options, bars, refuse_overwriting, render_options
 
-NEEDS = ("marinesim.scenario", "marinesim.session.replay", "marinesim.session.log")
-"""The modules the command loads before it starts (Ctrl-C is held until they are in)."""
-
 
 def add(commands: argparse._SubParsersAction) -> None:
     p = commands.add_parser(

@@ -7,9 +7,6 @@ from pathlib import Path
 
 from marinesim.cli.common import bars, refuse_overwriting
 
-NEEDS = ("marinesim.scenario", "marinesim.session.replay", "marinesim.report.debrief", "marinesim.report.html")
-"""The modules the command loads before it starts (Ctrl-C is held until they are in)."""
-
 
 def add(commands: argparse._SubParsersAction) -> None:
     p = commands.add_parser(
@@ -34,10 +31,9 @@ def handle(args: argparse.Namespace) -> int:
     from marinesim.report.debrief import debrief, sickness_criteria
     from marinesim.report.html import write_report
     from marinesim.scenario import load_scenario, with_run
-    from marinesim.session.exercise import Exercise, ran_words
+    from marinesim.session.exercise import ran_words, run_exercise
     from marinesim.session.log import read_log
     from marinesim.session.replay import replay_session, session_scenario
-    from marinesim.session.timeline import Simulation
 
     is_log = args.source.suffix.lower() in (".jsonl", ".log")
     with reporting(bars(args.quiet)):
@@ -53,16 +49,11 @@ def handle(args: argparse.Namespace) -> int:
             session = None
             scenario = with_run(load_scenario(args.source), args.duration, seed=args.seed)
             refuse_overwriting(args.out, "--out")
-            simulation = Simulation(scenario, wake=False)
-            try:
-                exercise = Exercise(simulation, log=print, watch=sickness_criteria(scenario))
-                exercise.run()
-            finally:
-                simulation.close()
+            exercise = run_exercise(scenario, log=print, watch=sickness_criteria(scenario))
     out = write_report(debrief(exercise, session), args.out)
     result = exercise.assessment()
-    ran = "" if result["complete"] else f" (stopped early: ran {ran_words(result['duration_s'], result['planned_s'])})"
-    print(f"verdict: {result['verdict']}{ran}")
+    ran = "" if result.complete else f" (stopped early: ran {ran_words(result.duration_s, result.planned_s)})"
+    print(f"verdict: {result.verdict}{ran}")
     marked = " (marked UNVERIFIED LOG)" if session is not None and not session.verification.verified else ""
     print(f"wrote the after-action report: {out}{marked}")
     return 0

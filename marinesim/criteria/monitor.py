@@ -12,6 +12,7 @@ limit an exceedance; every evaluation interval spent above the limit adds to its
 
 from __future__ import annotations
 
+import enum
 import math
 import operator
 import re
@@ -31,7 +32,39 @@ MAX_WINDOW_ROWS = 2_000_000
 """The longest window in rows (16 MB per series): window_s / dt is bounded before anything is kept."""
 CAUTION = 0.8
 """Fraction of the limit that raises a caution unless a criterion says otherwise."""
-LEVELS = ("settling", "ok", "caution", "exceeded")
+
+
+class Level(enum.StrEnum):
+    """A criterion's level, in order: no value yet (its window still filling), within its limit, at or above the
+    caution line, above the limit. Its value is the word the outputs write (JSON, tables, the HUD); ``<`` and
+    ``max`` go by the order, never by the words."""
+
+    SETTLING = "settling"
+    OK = "ok"
+    CAUTION = "caution"
+    EXCEEDED = "exceeded"
+
+    @property
+    def rank(self) -> int:
+        """Its place in the order: 0 settling ... 3 exceeded."""
+        return list(Level).index(self)
+
+    def _other(self, other: object) -> int:
+        if not isinstance(other, Level):
+            raise TypeError(f"a level compares with a level, not {other!r}")
+        return other.rank
+
+    def __lt__(self, other: object) -> bool:
+        return self.rank < self._other(other)
+
+    def __le__(self, other: object) -> bool:
+        return self.rank <= self._other(other)
+
+    def __gt__(self, other: object) -> bool:
+        return self.rank > self._other(other)
+
+    def __ge__(self, other: object) -> bool:
+        return self.rank >= self._other(other)
 
 
 @dataclass(frozen=True)
@@ -62,13 +95,13 @@ class Criterion:
         """The running window (s); None for a dose, which runs over the whole record."""
         return None if self.measure.dose else (self.window_s or self.measure.window_s)
 
-    def level(self, value: float | None) -> str:
-        """One of :data:`LEVELS` for ``value``."""
+    def level(self, value: float | None) -> Level:
+        """The level of ``value`` (in the quantity's unit; None: settling)."""
         if value is None:
-            return "settling"
+            return Level.SETTLING
         if self.limit is None or value < self.caution * self.limit:
-            return "ok"
-        return "exceeded" if value > self.limit else "caution"
+            return Level.OK
+        return Level.EXCEEDED if value > self.limit else Level.CAUTION
 
 
 def value_and_limit(value: float, limit: float) -> tuple[str, str]:

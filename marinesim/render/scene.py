@@ -16,7 +16,7 @@ import moderngl
 import numpy as np
 
 from marinesim.angles import wave_compass_from_beta
-from marinesim.criteria.monitor import LEVELS, value_and_limit
+from marinesim.criteria.monitor import Level, value_and_limit
 from marinesim.errors import ParameterError
 from marinesim.gl import is_software
 from marinesim.render import CAMERAS, HUDS
@@ -48,8 +48,8 @@ NOT_DRAWN = "vessel not drawn: the scenario names no hull or visual_mesh (its mo
 """What the HUD says, strip or panels, of a vessel with neither a hull nor a visual mesh."""
 HELIDECK = "helideck"
 """The criteria at this point, or named starting with it, make the helideck status light."""
-HELIDECK_LIGHTS = {"ok": ("GREEN", "landing permitted"), "caution": ("AMBER", "landing with caution"),
-                   "exceeded": ("RED", "landing not permitted"), "settling": ("--", "measuring motions")}
+HELIDECK_LIGHTS = {Level.OK: ("GREEN", "landing permitted"), Level.CAUTION: ("AMBER", "landing with caution"),
+                   Level.EXCEEDED: ("RED", "landing not permitted"), Level.SETTLING: ("--", "measuring motions")}
 """Helideck monitoring status by the worst level of the helideck's criteria (CAP 437 style)."""
 
 
@@ -180,7 +180,7 @@ class Scene:
         helideck = [level for c, _, level in self.exercise.readings()
                     if c.point == HELIDECK or c.label.lower().startswith(HELIDECK)]
         if helideck:
-            worst = max(helideck, key=LEVELS.index)
+            worst = max(helideck)
             light, meaning = HELIDECK_LIGHTS[worst]
             color = LEVEL_COLORS[worst]
             out.append(Banner(f"HELIDECK {light}: {meaning}", (*[0.35 * c for c in color[:3]], 0.9), color))
@@ -197,7 +197,7 @@ class Scene:
         """``keys`` (what a key does) after three spaces, in the window; nothing in a headless render."""
         return f"   {keys}" if self.interactive else ""
 
-    def criteria_panel(self, levels: tuple[str, ...] = LEVELS) -> list[tuple[str, str]]:
+    def criteria_panel(self, levels: tuple[Level, ...] = tuple(Level)) -> list[tuple[str, Level]]:
         """(text, level) rows of the criteria panel, those at ``levels``: name, latest value / limit and unit,
         level. A value under 1e-4 of its limit reads 0 (a green-water probability of 1e-12 is none a crew
         would see)."""
@@ -210,18 +210,18 @@ class Scene:
             else:
                 shown, limit = value_and_limit(value, criterion.limit)
             rows.append((f"{criterion.label:<{width}}  {shown:>8} / {limit:<6}"
-                         f"{criterion.measure.unit:<8}{level}", level))
+                         f"{criterion.measure.unit:<8}{level.value}", level))
         return rows
 
-    def criteria_strip(self) -> list[tuple[str, str]]:
+    def criteria_strip(self) -> list[tuple[str, Level]]:
         """The criteria in the compact strip: each one at caution or exceeded as in the panel, else one row
         counting them by level, coloured by the worst."""
-        alert = self.criteria_panel(("caution", "exceeded"))
+        alert = self.criteria_panel((Level.CAUTION, Level.EXCEEDED))
         levels = [level for _, _, level in self.exercise.readings()]
         if alert or not levels:
             return alert
-        counts = ", ".join(f"{levels.count(level)} {level}" for level in LEVELS if level in levels)
-        return [(f"criteria: {counts}" + self.hint("TAB: all"), max(levels, key=LEVELS.index))]
+        counts = ", ".join(f"{levels.count(level)} {level.value}" for level in Level if level in levels)
+        return [(f"criteria: {counts}" + self.hint("TAB: all"), max(levels))]
 
     def strip_lines(self, width: int) -> list[str]:
         """The compact strip for a target ``width`` px wide: time, sea, course, motions, camera, weather, clock

@@ -1,7 +1,7 @@
 """What the after-action report shows, gathered from an exercise run (live, replayed or assessed).
 
-:func:`debrief` turns an :class:`~marinesim.session.exercise.Exercise` that has run into the plain
-dictionary :mod:`marinesim.report.html` lays out: the briefing and a verdict per objective, each
+:func:`debrief` turns an :class:`~marinesim.session.exercise.Exercise` that has run into the
+:class:`Debrief` :mod:`marinesim.report.html` lays out: the briefing and a verdict per objective, each
 criterion's running value at every evaluation, the events, alarms with their acknowledgements, the
 messages and actions, motion sickness (MSI, MSDV) at the vessel's points, the ship's track and handling
 (heading, speed, rudder, propeller), and the conditions; from a session log, whether the log is verified
@@ -12,25 +12,161 @@ planned duration, how much of it ran, and which objectives it could not judge.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass, field, fields
 
 import numpy as np
 
 from marinesim import __version__
 from marinesim.angles import wave_compass_from_beta
-from marinesim.criteria.monitor import Criterion
+from marinesim.criteria.monitor import Criterion, Level
 from marinesim.criteria.sickness import MAX_WF_DT_S
 from marinesim.scenario import Scenario
 from marinesim.sea.seastate import SeaState
-from marinesim.session.exercise import Exercise, ran_words
+from marinesim.session.exercise import AlarmResult, CriterionResult, EventResult, Exercise, ran_words
 from marinesim.session.log import SessionLog
 from marinesim.session.sidecar import sha256
 from marinesim.session.station import line_columns, station_record, thruster_columns
 
-VERDICTS = {"ok": "met", "caution": "met with caution", "exceeded": "not met", "settling": "no value"}
+VERDICTS = {Level.OK: "met", Level.CAUTION: "met with caution", Level.EXCEEDED: "not met", Level.SETTLING: "no value"}
 """An objective's verdict from the worst level of the criteria that judge it, in a run that went through its
 planned duration; in one stopped early an objective is "not met" if one of its criteria went above its limit,
 else "not judged" (:meth:`~marinesim.session.exercise.Exercise.assessment`)."""
-ORDER = ("settling", "ok", "caution", "exceeded")
+
+
+@dataclass(frozen=True)
+class Series:
+    """A criterion's running value (its unit; None while settling) at each evaluation time (s)."""
+
+    time_s: list[float]
+    value: list[float | None]
+
+
+@dataclass(frozen=True)
+class CriterionTrace(CriterionResult):
+    """A criterion's result over the run with its running value at every evaluation."""
+
+    series: Series
+
+    @classmethod
+    def of(cls, result: CriterionResult, series: Series) -> CriterionTrace:
+        return cls(**{f.name: getattr(result, f.name) for f in fields(CriterionResult)}, series=series)
+
+
+@dataclass(frozen=True)
+class Objective:
+    """An objective of the briefing, the names of the criteria that judge it, and its verdict (:data:`VERDICTS`, or
+    "not judged")."""
+
+    text: str
+    criteria: list[str]
+    verdict: str
+
+
+@dataclass(frozen=True)
+class Briefing:
+    """The briefing's text and its objectives."""
+
+    text: str
+    objectives: list[Objective]
+
+
+@dataclass(frozen=True)
+class LogCheck:
+    """Whether the session log is verified, and the problems found in words where it is not."""
+
+    verified: bool
+    problems: list[str] = field(default_factory=list)
+
+
+@dataclass(frozen=True)
+class Message:
+    """A message at ``time_s`` (s) from its ``source``: "event" or "instructor"."""
+
+    time_s: float
+    text: str
+    source: str
+
+
+@dataclass(frozen=True)
+class Action:
+    """A live action at ``time_s`` (s), in words."""
+
+    time_s: float
+    what: str
+
+
+@dataclass(frozen=True)
+class Sickness:
+    """Motion sickness at ``point`` over the run: MSI (%) and MSDV (m/s^1.5); None where not computed."""
+
+    point: str
+    msi_percent: float | None = None
+    msdv_m_s1_5: float | None = None
+
+
+@dataclass(frozen=True)
+class SeaSystem:
+    """One wave system of the sea at the start: Hs (m), Tp (s), where from (compass deg), JONSWAP gamma and
+    spreading s where it has them."""
+
+    hs_m: float
+    tp_s: float
+    from_deg: float
+    gamma: float | None
+    spreading_s: float | None
+
+
+@dataclass(frozen=True)
+class VesselConditions:
+    """The vessel's RAO file and its sha256, her speed (kn) and heading (compass deg), and her points (name ->
+    body-frame offset, m)."""
+
+    rao: str
+    rao_sha256: str | None
+    speed_kn: float | None
+    heading_deg: float | None
+    points_m: dict[str, list[float]]
+
+
+@dataclass(frozen=True, kw_only=True)
+class Conditions:
+    """What the run was made of: the scenario and log files with their sha256, the seed, the time run and planned
+    (s), the time step (s), marinesim's version, the sea at the start and the vessel (None where not known)."""
+
+    scenario: str | None = None
+    scenario_sha256: str | None = None
+    seed: int | None = None
+    duration_s: float | None = None
+    planned_s: float | None = None
+    dt_s: float | None = None
+    log: str | None = None
+    log_sha256: str | None = None
+    marinesim: str | None = None
+    sea: list[SeaSystem] = field(default_factory=list)
+    vessel: VesselConditions | None = None
+
+
+@dataclass(frozen=True, kw_only=True)
+class Debrief:
+    """What the after-action report shows (:func:`debrief`); a part left out (None, empty) is left out of the page.
+    ``alarms`` None: not known (an empty list: none raised). ``ship``: the ship's track and handling, columns of
+    the record by name (:func:`_ship`)."""
+
+    title: str | None = None
+    source: str | None = None
+    log_check: LogCheck | None = None
+    briefing: Briefing | None = None
+    verdict: str | None = None
+    stopped_early: str | None = None
+    """How much of a run stopped before its planned duration ran, in words (:func:`ran_words`)."""
+    conditions: Conditions | None = None
+    criteria: list[CriterionTrace] = field(default_factory=list)
+    events: list[EventResult] = field(default_factory=list)
+    alarms: list[AlarmResult] | None = None
+    messages: list[Message] = field(default_factory=list)
+    actions: list[Action] = field(default_factory=list)
+    sickness: list[Sickness] = field(default_factory=list)
+    ship: dict | None = None
 
 
 def sickness_criteria(scenario: Scenario) -> list[Criterion]:
@@ -42,51 +178,49 @@ def sickness_criteria(scenario: Scenario) -> list[Criterion]:
     return [Criterion(q, point=point) for point in vessel.points for q in quantities]
 
 
-def debrief(exercise: Exercise, log: SessionLog | None = None) -> dict:
+def debrief(exercise: Exercise, log: SessionLog | None = None) -> Debrief:
     """The report's data from ``exercise`` (run with ``watch=sickness_criteria(...)``), its session ``log`` if any."""
     scenario = exercise.scenario
     result = exercise.assessment()
-    criteria = result["criteria"]
-    for i, entry in enumerate(criteria):
-        entry["series"] = {"time_s": exercise.evaluated_s, "value": [values[i] for values in exercise.values]}
-    levels = {c["name"]: c["level"] for c in criteria}
+    criteria = [CriterionTrace.of(c, Series(exercise.evaluated_s, [values[i] for values in exercise.values]))
+                for i, c in enumerate(result.criteria)]
+    levels = {c.name: c.level for c in criteria}
     briefing = None
     if scenario.briefing is not None:
         objectives = []
         for text, names in scenario.briefing.objectives:
-            worst = max((levels[name] for name in names), key=ORDER.index, default="settling")
-            verdict = VERDICTS[worst] if result["complete"] or worst == "exceeded" else "not judged"
-            objectives.append({"text": text, "criteria": list(names), "verdict": verdict})
-        briefing = {"text": scenario.briefing.text, "objectives": objectives}
-    messages = [{"time_s": h.time_s, "text": h.event.message, "source": "event"}
-                for h in exercise.happened if h.event.message]
-    messages += [{"time_s": t, "text": text, "source": "instructor"} for t, text in exercise.said]
-    actions = [{"time_s": e["t"], "what": _action(e)} for e in exercise.journal if e["kind"] == "action"]
+            worst = max((levels[name] for name in names), default=Level.SETTLING)
+            verdict = VERDICTS[worst] if result.complete or worst is Level.EXCEEDED else "not judged"
+            objectives.append(Objective(text, list(names), verdict))
+        briefing = Briefing(scenario.briefing.text, objectives)
+    messages = [Message(h.time_s, h.event.message, "event") for h in exercise.happened if h.event.message]
+    messages += [Message(t, text, "instructor") for t, text in exercise.said]
+    actions = [Action(e["t"], _action(e)) for e in exercise.journal if e["kind"] == "action"]
     sickness = []
     if exercise.monitor is not None:
-        by_point: dict[str, dict] = {}
+        by_point: dict[str, dict[str, float | None]] = {}
         for criterion in sickness_criteria(scenario):
             value = exercise.tally(criterion).value
             key = "msi_percent" if criterion.quantity == "msi_pct" else "msdv_m_s1_5"
-            by_point.setdefault(criterion.point, {"point": criterion.point})[key] = value
-        sickness = list(by_point.values())
-    return {
-        "title": scenario.name.replace("_", " "),
-        "source": str(log.path) if log is not None else str(scenario.path),
-        "log_check": None if log is None else {"verified": log.verification.verified,
-                                               "problems": [words for _, words in log.verification.problems]},
-        "briefing": briefing,
-        "verdict": result["verdict"],
-        "stopped_early": None if result["complete"] else ran_words(result["duration_s"], result["planned_s"]),
-        "conditions": _conditions(exercise, log),
-        "criteria": criteria,
-        "events": result["events"],
-        "alarms": result["alarms"],
-        "messages": sorted(messages, key=lambda m: m["time_s"]),
-        "actions": actions,
-        "sickness": sickness,
-        "ship": _ship(exercise),
-    }
+            by_point.setdefault(criterion.point, {})[key] = value
+        sickness = [Sickness(point, **values) for point, values in by_point.items()]
+    return Debrief(
+        title=scenario.name.replace("_", " "),
+        source=str(log.path) if log is not None else str(scenario.path),
+        log_check=None if log is None else LogCheck(log.verification.verified,
+                                                    [words for _, words in log.verification.problems]),
+        briefing=briefing,
+        verdict=result.verdict,
+        stopped_early=None if result.complete else ran_words(result.duration_s, result.planned_s),
+        conditions=_conditions(exercise, log),
+        criteria=criteria,
+        events=result.events,
+        alarms=result.alarms,
+        messages=sorted(messages, key=lambda m: m.time_s),
+        actions=actions,
+        sickness=sickness,
+        ship=_ship(exercise),
+    )
 
 
 SHIP_SAMPLES = 2000
@@ -163,22 +297,20 @@ def _order_words(key: str, value: object) -> str:
     return str(value)
 
 
-def _conditions(exercise: Exercise, log: SessionLog | None) -> dict:
+def _conditions(exercise: Exercise, log: SessionLog | None) -> Conditions:
     scenario = exercise.scenario
     vessel = scenario.vessel
     seas = []
     for system in scenario.sea.systems:
         alone = SeaState((system,), depth=scenario.sea.depth)
-        seas.append({"hs_m": alone.hs, "tp_s": alone.tp, "from_deg": wave_compass_from_beta(system.beta),
-                     "gamma": getattr(getattr(system, "spectrum", None), "gamma", None),
-                     "spreading_s": getattr(getattr(system, "spreading", None), "s", None)})
-    out = {"scenario": str(scenario.path), "scenario_sha256": sha256(scenario.path), "seed": scenario.run.seed,
-           "duration_s": exercise.sim.time, "planned_s": exercise.duration_s, "dt_s": scenario.run.dt_s,
-           "log": str(log.path) if log is not None else None,
-           "log_sha256": log.verification.sha256 if log is not None else None,
-           "marinesim": __version__, "sea": seas}
-    if vessel is not None:
-        out["vessel"] = {"rao": str(vessel.rao_path), "rao_sha256": sha256(vessel.rao_path),
-                         "speed_kn": vessel.speed_kn, "heading_deg": vessel.heading_deg,
-                         "points_m": {name: list(p) for name, p in vessel.points.items()}}
-    return out
+        seas.append(SeaSystem(alone.hs, alone.tp, wave_compass_from_beta(system.beta),
+                              getattr(getattr(system, "spectrum", None), "gamma", None),
+                              getattr(getattr(system, "spreading", None), "s", None)))
+    return Conditions(
+        scenario=str(scenario.path), scenario_sha256=sha256(scenario.path), seed=scenario.run.seed,
+        duration_s=exercise.sim.time, planned_s=exercise.duration_s, dt_s=scenario.run.dt_s,
+        log=str(log.path) if log is not None else None, log_sha256=log.verification.sha256 if log is not None else None,
+        marinesim=__version__, sea=seas,
+        vessel=None if vessel is None else VesselConditions(
+            str(vessel.rao_path), sha256(vessel.rao_path), vessel.speed_kn, vessel.heading_deg,
+            {name: list(p) for name, p in vessel.points.items()}))

@@ -1,9 +1,9 @@
 """The after-action report as one self-contained HTML file: plots embedded as PNG, CSS inline, nothing fetched.
 
 Laid out for a debrief (IMO model course 6.10: briefing, exercise, debriefing; STCW A-I/12: against the
-objectives), from the plain dictionary :func:`marinesim.report.debrief.debrief` makes: the title and
-the overall verdict, the briefing with a verdict per objective, each criterion over the run, exceedance
-statistics, the ship's track and handling (with a vessel), the timeline and the alarms with their
+objectives), from the :class:`~marinesim.report.debrief.Debrief` that :func:`marinesim.report.debrief.debrief`
+makes: the title and the overall verdict, the briefing with a verdict per objective, each criterion over the
+run, exceedance statistics, the ship's track and handling (with a vessel), the timeline and the alarms with their
 acknowledgement delays, motion sickness, the log of events, messages and actions, and the conditions. A
 debrief of a session log says at the top whether the log is verified; one that is not gets a red
 "UNVERIFIED LOG" banner above everything else, saying why, and the page's title says so too. A run stopped
@@ -24,16 +24,21 @@ import re
 from pathlib import Path
 
 from marinesim.atomic import atomic_path
+from marinesim.criteria.monitor import Level
+from marinesim.report.debrief import Conditions, Debrief, LogCheck
 from marinesim.report.plots import (CAUTION, EXCEEDED, NM, NONE, OK, STATION_M, clock, compass, criterion_png,
                                     footprint_png, handling_png, number, station_use_png, timeline_png, track_png,
                                     with_unit)
 
-LEVELS = {"within limits": "ok", "met": "ok", "ok": "ok", "caution": "caution", "met with caution": "caution",
-          "exceeded": "exceeded", "not met": "exceeded", "settling": "none", "no value": "none", "incomplete": "none",
-          "not judged": "none"}
-"""A verdict, objective verdict or criterion level -> its badge's colour class."""
-SHOWN = {"settling": "no value yet", "ok": "within limits"}
-"""A criterion's level in the words a badge shows."""
+BADGES = {"within limits": "ok", "met": "ok", "caution": "caution", "met with caution": "caution",
+          "exceeded": "exceeded", "not met": "exceeded", "no value": "none", "incomplete": "none", "not judged": "none"}
+"""A verdict or objective verdict -> its badge's colour class."""
+LEVEL_BADGES = {Level.EXCEEDED: "exceeded", Level.CAUTION: "caution", Level.OK: "ok", Level.SETTLING: "none",
+                None: "none"}
+"""A criterion's reading (its level; None: not judged) -> its badge's colour class."""
+SHOWN = {Level.EXCEEDED: "exceeded", Level.CAUTION: "caution", Level.OK: "within limits",
+         Level.SETTLING: "no value yet", None: "not judged"}
+"""A criterion's reading in the words a badge shows, worst first (the order the header counts them in)."""
 CSS = f"""
 :root{{--ok:{OK};--caution:{CAUTION};--exceeded:{EXCEEDED};--none:{NONE};--ink:#1b1f24;--muted:#5b6470;
 --rule:#d6dbe1;--head:#eef1f4;--band:#f6f7f9}}
@@ -100,7 +105,7 @@ SCRIPT = ("addEventListener('load',function(){var n=0;document.querySelectorAll(
 """Counts the plots the browser decoded (a test reads it from the rendered page)."""
 
 
-def write_report(data: dict, out: Path) -> Path:
+def write_report(data: Debrief, out: Path) -> Path:
     """Write the report of ``data`` to ``out`` (atomically: a complete file or none); returns ``out``."""
     out = Path(out)
     out.parent.mkdir(parents=True, exist_ok=True)
@@ -110,20 +115,20 @@ def write_report(data: dict, out: Path) -> Path:
     return out
 
 
-def render_report(data: dict) -> str:
+def render_report(data: Debrief) -> str:
     """The report of ``data`` (see the module's docstring) as the text of one HTML page."""
     page = _Page(data)
     parts = [page.header_section(), page.briefing_section(), page.criteria_section(), page.statistics_section(),
              page.ship_section(), page.alarms_section(), page.sickness_section(), page.log_section(),
              page.conditions_section()]
-    title = _e(data.get("title") or "exercise")
-    check = data.get("log_check")
-    unverified = " (UNVERIFIED LOG)" if check and not check.get("verified") else ""
+    title = _e(data.title or "exercise")
+    check = data.log_check
+    unverified = " (UNVERIFIED LOG)" if check and not check.verified else ""
     return ("<!DOCTYPE html>\n<html lang='en'>\n<head>\n<meta charset='utf-8'>\n"
             "<meta name='viewport' content='width=device-width,initial-scale=1'>\n"
             f"<title>Debrief{unverified}: {title}</title>\n<style>{CSS}</style>\n</head>\n<body>\n<main>\n"
             + "\n".join(part for part in parts if part)
-            + f"\n<footer>After-action report written by marinesim {_e(_get(data, 'conditions', 'marinesim') or '')}"
+            + f"\n<footer>After-action report written by marinesim {_e(page.conditions.marinesim or '')}"
             " from the data named above; the same run gives this same file.</footer>\n</main>\n"
             f"<script>{SCRIPT}</script>\n</body>\n</html>\n")
 
@@ -131,70 +136,72 @@ def render_report(data: dict) -> str:
 class _Page:
     """The report's sections, each HTML text or '' when the data have nothing for it."""
 
-    def __init__(self, data: dict) -> None:
+    def __init__(self, data: Debrief) -> None:
         self.data = data
-        self.criteria = list(data.get("criteria") or [])
-        self.events = list(data.get("events") or [])
-        self.messages = list(data.get("messages") or [])
-        self.actions = list(data.get("actions") or [])
-        self.alarms = list(enumerate(data.get("alarms") or [], start=1))
-        self.conditions = data.get("conditions") or {}
-        self.units = {c.get("name"): c.get("unit") for c in self.criteria}
-        self.ship = data.get("ship")
-        last = [t for c in self.criteria for t in ((c.get("series") or {}).get("time_s") or [])[-1:]]
+        self.criteria = list(data.criteria)
+        self.events = list(data.events)
+        self.messages = list(data.messages)
+        self.actions = list(data.actions)
+        self.alarms = list(enumerate(data.alarms or [], start=1))
+        self.conditions = data.conditions or Conditions()
+        self.units = {c.name: c.unit for c in self.criteria}
+        self.ship = data.ship
+        last = [t for c in self.criteria for t in c.series.time_s[-1:]]
         last += ((self.ship or {}).get("time_s") or [])[-1:]
-        self.duration = float(self.conditions.get("duration_s") or max(last, default=0.0))
+        self.duration = float(self.conditions.duration_s or max(last, default=0.0))
         self.long = self.duration >= 3600
 
     def clock(self, t: float | None) -> str:
         return "—" if t is None else clock(t, self.long)
 
     def header_section(self) -> str:
-        verdict = self.data.get("verdict") or "no value"
-        source = self.data.get("source")
-        stopped = self.data.get("stopped_early")
+        verdict = self.data.verdict or "no value"
+        source = self.data.source
+        stopped = self.data.stopped_early
         ran = stopped or (f"{self.duration:g} s" if self.duration else "")
         facts = [self._fact("Run", self.clock(self.duration) if self.duration else "—",
-                            " · ".join(x for x in (ran, _seed(self.conditions.get("seed"))) if x),
+                            " · ".join(x for x in (ran, _seed(self.conditions.seed)) if x),
                             "none" if stopped else "")]
         if self.criteria:
-            levels = [_reading(c) for c in self.criteria]
-            worst = next((lv for lv in ("exceeded", "caution", "ok") if lv in levels), "none" if stopped else "")
-            counts = ", ".join(f"{levels.count(lv)} {SHOWN.get(lv, lv)}" for lv in ("exceeded", "caution", "ok",
-                                                                                     "settling", "not judged")
-                               if lv in levels)
+            readings = [c.reading for c in self.criteria]
+            worst = next((LEVEL_BADGES[lv] for lv in (Level.EXCEEDED, Level.CAUTION, Level.OK) if lv in readings),
+                         "none" if stopped else "")
+            counts = ", ".join(f"{readings.count(reading)} {words}" for reading, words in SHOWN.items()
+                               if reading in readings)
             facts.append(self._fact("Criteria", str(len(self.criteria)), counts, worst))
         alarms = [a for _, a in self.alarms]
-        acked = [a["acknowledged_s"] - a["raised_s"] for a in alarms if a.get("acknowledged_s") is not None]
-        if "alarms" in self.data:
+        acked = [a.acknowledged_s - a.raised_s for a in alarms if a.acknowledged_s is not None]
+        if self.data.alarms is not None:
             missed = len(alarms) - len(acked)
             detail = ([f"{len(acked)} acknowledged" + (f", slowest {max(acked):.1f} s" if acked else "")]
                       + ([f"{missed} not acknowledged"] if missed else []) if alarms else ["none raised"])
-            facts.append(self._fact("Alarms", str(len(alarms)), detail, "exceeded" if alarms else "ok"))
-        objectives = (self.data.get("briefing") or {}).get("objectives") or []
+            facts.append(self._fact("Alarms", str(len(alarms)), detail,
+                                    LEVEL_BADGES[Level.EXCEEDED if alarms else Level.OK]))
+        objectives = self.data.briefing.objectives if self.data.briefing is not None else []
         if objectives:
-            met = sum(o.get("verdict") in ("met", "met with caution") for o in objectives)
-            verdicts = [o.get("verdict") for o in objectives]
-            worst = next((LEVELS[v] for v in ("not met", "not judged", "met with caution") if v in verdicts), "ok")
+            met = sum(o.verdict in ("met", "met with caution") for o in objectives)
+            verdicts = [o.verdict for o in objectives]
+            worst = next((BADGES[v] for v in ("not met", "not judged", "met with caution") if v in verdicts),
+                         BADGES["met"])
             facts.append(self._fact("Objectives", f"{met} of {len(objectives)} met",
                                     _count(verdicts, "not met", "not judged", "met with caution"), worst))
-        check = self.data.get("log_check")
-        return ("<header class='top'>\n" + (self._unverified(check) if check and not check.get("verified") else "")
+        check = self.data.log_check
+        return ("<header class='top'>\n" + (self._unverified(check) if check and not check.verified else "")
                 + "<div class='kicker'>After-action report · debrief</div>\n"
-                f"<div class='titlerow'><h1>{_e(self.data.get('title') or 'exercise')}</h1>"
+                f"<div class='titlerow'><h1>{_e(self.data.title or 'exercise')}</h1>"
                 f"{_badge(verdict, extra='verdict')}</div>\n"
                 + (f"<p class='source'>{_e(source)}</p>\n" if source else "")
                 + (f"<p class='stopped'><b>Stopped early:</b> {_e(stopped)} of the exercise ran. An objective is "
                    "judged only over the whole run, unless one of its criteria went above its limit before the "
                    "stop: the others are NOT JUDGED.</p>\n" if stopped else "")
                 + ("<p class='logcheck'>Session log verified: it is the log the session wrote on this installation, "
-                   "unchanged and whole (it ends with its end entry).</p>\n" if check and check.get("verified") else "")
+                   "unchanged and whole (it ends with its end entry).</p>\n" if check and check.verified else "")
                 + f"<dl class='facts'>{''.join(facts)}</dl>\n</header>")
 
     @staticmethod
-    def _unverified(check: dict) -> str:
+    def _unverified(check: LogCheck) -> str:
         """The banner of a debrief made from a log that is not verified, with why."""
-        reasons = "".join(f"<li>{_e(problem)}</li>" for problem in check.get("problems") or [])
+        reasons = "".join(f"<li>{_e(problem)}</li>" for problem in check.problems)
         return ("<div class='unverified' role='alert'><strong>UNVERIFIED LOG</strong>\n"
                 "<p>This debrief was made from a session log that cannot be shown to be the one the session "
                 "wrote:</p>\n" + (f"<ul>{reasons}</ul>\n" if reasons else "")
@@ -208,17 +215,17 @@ class _Page:
         return f"<div class='{level}'><dt>{name}</dt><dd>{_e(value)}{small}</dd></div>"
 
     def briefing_section(self) -> str:
-        briefing = self.data.get("briefing")
-        if not briefing:
+        briefing = self.data.briefing
+        if briefing is None:
             return ""
-        paragraphs = [p.strip() for p in (briefing.get("text") or "").split("\n\n") if p.strip()]
+        paragraphs = [p.strip() for p in (briefing.text or "").split("\n\n") if p.strip()]
         out = ["<section id='briefing'>\n<h2>Briefing</h2>"]
         out += [f"<p>{_reflow(p)}</p>" for p in paragraphs]
-        objectives = briefing.get("objectives") or []
+        objectives = briefing.objectives
         if objectives:
-            rows = [(_td(str(i), "num"), _td(_e(o.get("text", ""))),
-                     _td(_e(", ".join(o.get("criteria") or [])) or "<span class='muted'>—</span>"),
-                     _td(_badge(o.get("verdict") or "no value")))
+            rows = [(_td(str(i), "num"), _td(_e(o.text)),
+                     _td(_e(", ".join(o.criteria)) or "<span class='muted'>—</span>"),
+                     _td(_badge(o.verdict or "no value")))
                     for i, o in enumerate(objectives, start=1)]
             out.append("<h3>Objectives and how they went</h3>"
                        + _table((("#", "num"), "objective", "judged by", "verdict"), rows))
@@ -237,22 +244,22 @@ class _Page:
                "<span class='k'>&nbsp;<b style='color:var(--exceeded)'>▼A<i>n</i></b> alarm raised</span>. "
                "Grey at the start: the running window still filling, no value yet.</p>"]
         for criterion in self.criteria:
-            mine = [(n, a) for n, a in self.alarms if a.get("criterion") == criterion.get("name")]
+            mine = [(n, a) for n, a in self.alarms if a.criterion == criterion.name]
             png = criterion_png(criterion, self.duration, self.events, mine)
-            point = f" ({criterion['point']})" if criterion.get("point") else ""
-            alt = f"{criterion.get('name')}{point} over the run"
-            unit = criterion.get("unit")
+            point = f" ({criterion.point})" if criterion.point else ""
+            alt = f"{criterion.name}{point} over the run"
+            unit = criterion.unit
             bits = []
-            if criterion.get("value") is not None:
-                worst = with_unit(criterion["value"], unit)
-                bits.append(f"worst {worst} at {self.clock(criterion.get('value_at_s'))}")
-            if criterion.get("limit") is not None:
-                bits.append(f"limit {with_unit(criterion['limit'], unit)}")
-            if criterion.get("time_exceeded_s"):
-                bits.append(f"{criterion['time_exceeded_s']:.0f} s above the limit")
+            if criterion.value is not None:
+                worst = with_unit(criterion.value, unit)
+                bits.append(f"worst {worst} at {self.clock(criterion.value_at_s)}")
+            if criterion.limit is not None:
+                bits.append(f"limit {with_unit(criterion.limit, unit)}")
+            if criterion.time_exceeded_s:
+                bits.append(f"{criterion.time_exceeded_s:.0f} s above the limit")
             if mine:
                 bits.append(f"{len(mine)} alarm{'s' if len(mine) > 1 else ''}")
-            caption = (f"{_level_badge(_reading(criterion))} <b>{_e(criterion.get('name', ''))}</b>"
+            caption = (f"{_level_badge(criterion.reading)} <b>{_e(criterion.name)}</b>"
                        f"<span>{_e(' · '.join(bits))}</span>")
             out.append(f"<figure>{_img(png, alt)}<figcaption>{caption}</figcaption></figure>")
         return "\n".join(out) + "\n</section>"
@@ -262,17 +269,17 @@ class _Page:
             return ""
         rows = []
         for c in self.criteria:
-            unit, limit = c.get("unit"), c.get("limit")
-            alarms = sum(1 for _, a in self.alarms if a.get("criterion") == c.get("name"))
-            above = c.get("time_exceeded_s")
+            unit, limit = c.unit, c.limit
+            alarms = sum(1 for _, a in self.alarms if a.criterion == c.name)
+            above = c.time_exceeded_s
             share = "—" if above is None or not self.duration else f"{100 * above / self.duration:.1f} %"
-            point = f"<br><span class='muted'>{_e(c['point'])}</span>" if c.get("point") else ""
-            rows.append((_td(f"<b>{_e(c.get('name', ''))}</b>{point}"), _td(_level_badge(_reading(c))),
-                         _td("—" if c.get("value") is None else _e(with_unit(c["value"], unit)), "num"),
-                         _td(self.clock(c.get("value_at_s")) if c.get("value") is not None else "—", "num"),
+            point = f"<br><span class='muted'>{_e(c.point)}</span>" if c.point else ""
+            rows.append((_td(f"<b>{_e(c.name)}</b>{point}"), _td(_level_badge(c.reading)),
+                         _td("—" if c.value is None else _e(with_unit(c.value, unit)), "num"),
+                         _td(self.clock(c.value_at_s) if c.value is not None else "—", "num"),
                          _td("—" if limit is None else _e(with_unit(limit, unit)), "num"),
                          _td("—" if above is None else f"{above:.0f} s", "num"), _td(share, "num"),
-                         _td(str(alarms), "num"), _td(self.clock(c.get("first_exceeded_s")), "num")))
+                         _td(str(alarms), "num"), _td(self.clock(c.first_exceeded_s), "num")))
         return ("<section id='statistics'>\n<h2>Exceedance statistics</h2>\n"
                 f"<p class='intro'>Times are elapsed {'h:min:s' if self.long else 'min:s'} from the start of the "
                 "run; the share is of the whole run.</p>\n"
@@ -352,29 +359,29 @@ class _Page:
         if self.alarms:
             rows = []
             for n, a in self.alarms:
-                acked, cleared = a.get("acknowledged_s"), a.get("cleared_s")
-                value, limit = _value_limit(a.get("value"), a.get("limit"), self.units.get(a.get("criterion")))
-                rows.append((_td(f"A{n}", "tag"), _td(_e(a.get("criterion", ""))),
-                             _td(self.clock(a.get("raised_s")), "num"), _td(_e(f"{value} / {limit}"), "num"),
+                acked, cleared = a.acknowledged_s, a.cleared_s
+                value, limit = _value_limit(a.value, a.limit, self.units.get(a.criterion))
+                rows.append((_td(f"A{n}", "tag"), _td(_e(a.criterion)),
+                             _td(self.clock(a.raised_s), "num"), _td(_e(f"{value} / {limit}"), "num"),
                              _td("<span class='warn'>not acknowledged</span>" if acked is None else self.clock(acked),
                                  "num"),
-                             _td("—" if acked is None else f"{acked - a['raised_s']:.1f} s", "num"),
+                             _td("—" if acked is None else f"{acked - a.raised_s:.1f} s", "num"),
                              _td("<span class='muted'>not by the end</span>" if cleared is None
                                  else self.clock(cleared), "num")))
             out.append("<h3>Alarms</h3>" + _table(("#", "criterion", ("raised", "num"), ("value / limit", "num"),
                                                    ("acknowledged", "num"), ("acknowledgement delay", "num"),
                                                    ("back within limit", "num")), rows))
-        elif "alarms" in self.data:
+        elif self.data.alarms is not None:
             out.append("<p>No alarm was raised.</p>")
         return "\n".join(out) + "\n</section>"
 
     def sickness_section(self) -> str:
-        sickness = self.data.get("sickness") or []
+        sickness = self.data.sickness
         if not sickness:
             return ""
-        rows = [(_td(_e(s.get("point", ""))),
-                 _td("—" if s.get("msi_percent") is None else f"{s['msi_percent']:.1f} %", "num"),
-                 _td("—" if s.get("msdv_m_s1_5") is None else f"{s['msdv_m_s1_5']:.1f}", "num")) for s in sickness]
+        rows = [(_td(_e(s.point)),
+                 _td("—" if s.msi_percent is None else f"{s.msi_percent:.1f} %", "num"),
+                 _td("—" if s.msdv_m_s1_5 is None else f"{s.msdv_m_s1_5:.1f}", "num")) for s in sickness]
         return ("<section id='sickness'>\n<h2>Motion sickness</h2>\n<p class='intro'>MSI: the share of people "
                 "expected to vomit in a 2 h exposure (O'Hanlon &amp; McCauley); MSDV: the ISO 2631-1 motion sickness "
                 "dose value of the vertical acceleration, W<sub>f</sub>-weighted, over the exercise.</p>\n"
@@ -383,26 +390,25 @@ class _Page:
     def log_section(self) -> str:
         entries = []  # (time, order, tag, kind, text, class)
         for event in self.events:
-            what = event.get("what") or ""
-            trigger = f" ({event['trigger']})" if event.get("trigger") else ""
-            if event.get("happened_s") is not None:
-                entries.append((event["happened_s"], 0, f"E{event['index']}", "event" + trigger, what, ""))
+            what = event.what or ""
+            trigger = f" ({event.trigger})" if event.trigger else ""
+            if event.happened_s is not None:
+                entries.append((event.happened_s, 0, f"E{event.index}", "event" + trigger, what, ""))
             else:
-                entries.append((None, 0, f"E{event['index']}", "event" + trigger, f"{what} — did not happen",
+                entries.append((None, 0, f"E{event.index}", "event" + trigger, f"{what} — did not happen",
                                 "missed"))
         for n, alarm in self.alarms:
-            unit = self.units.get(alarm.get("criterion"))
-            value, limit = _value_limit(alarm.get("value"), alarm.get("limit"), unit)
-            entries.append((alarm["raised_s"], 1, f"A{n}", "alarm raised",
-                            f"{alarm.get('criterion', '')}: {value}, limit {limit}", ""))
-        said = {(e.get("happened_s"), e.get("message")) for e in self.events}
+            unit = self.units.get(alarm.criterion)
+            value, limit = _value_limit(alarm.value, alarm.limit, unit)
+            entries.append((alarm.raised_s, 1, f"A{n}", "alarm raised", f"{alarm.criterion}: {value}, limit {limit}",
+                            ""))
+        said = {(e.happened_s, e.message) for e in self.events}
         for message in self.messages:
-            if message.get("source") == "event" and (message["time_s"], message.get("text")) in said:
+            if message.source == "event" and (message.time_s, message.text) in said:
                 continue  # the event's own row says it
-            entries.append((message["time_s"], 2, "", f"message ({message.get('source') or 'event'})",
-                            message.get("text") or "", ""))
+            entries.append((message.time_s, 2, "", f"message ({message.source or 'event'})", message.text or "", ""))
         for action in self.actions:
-            entries.append((action["time_s"], 3, "", "action", action.get("what") or "", ""))
+            entries.append((action.time_s, 3, "", "action", action.what or "", ""))
         if not entries:
             return ""
         entries.sort(key=lambda r: (r[0] is None, r[0] or 0.0, r[1]))
@@ -412,45 +418,44 @@ class _Page:
                 + _table((("time", "num"), "", "what", "detail"), rows) + "\n</section>")
 
     def conditions_section(self) -> str:
-        c = self.conditions
-        if not c:
+        c = self.data.conditions
+        if c is None:
             return ""
         rows = []
-        if c.get("scenario"):
-            rows.append(("scenario", _file(c["scenario"], c.get("scenario_sha256"))))
-        if c.get("log"):
-            check = self.data.get("log_check") or {}
-            status = ("" if "verified" not in check else "<br><b>verified</b>" if check["verified"]
+        if c.scenario:
+            rows.append(("scenario", _file(c.scenario, c.scenario_sha256)))
+        if c.log:
+            check = self.data.log_check
+            status = ("" if check is None else "<br><b>verified</b>" if check.verified
                       else "<br><span class='warn'>UNVERIFIED</span>")
-            rows.append(("session log", _file(c["log"], c.get("log_sha256")) + status))
-        if c.get("seed") is not None:
-            rows.append(("random seed", _e(str(c["seed"]))))
-        if c.get("duration_s") is not None:
-            step = f", time step {c['dt_s']:g} s" if c.get("dt_s") is not None else ""
-            early = self.data.get("stopped_early")
+            rows.append(("session log", _file(c.log, c.log_sha256) + status))
+        if c.seed is not None:
+            rows.append(("random seed", _e(str(c.seed))))
+        if c.duration_s is not None:
+            step = f", time step {c.dt_s:g} s" if c.dt_s is not None else ""
+            early = self.data.stopped_early
             ran = f", stopped early: ran {_e(early)}" if early else ""
-            rows.append(("run", f"{c['duration_s']:g} s ({self.clock(c['duration_s'])}){ran}{step}"))
-        if c.get("marinesim"):
-            rows.append(("marinesim", _e(str(c["marinesim"]))))
-        vessel = c.get("vessel") or {}
-        if vessel.get("rao"):
-            rows.append(("vessel (RAO)", _file(vessel["rao"], vessel.get("rao_sha256"))))
-        if vessel.get("speed_kn") is not None or vessel.get("heading_deg") is not None:
-            rows.append(("speed, heading",
-                         f"{_plain(vessel.get('speed_kn'))} kn, {_plain(vessel.get('heading_deg'))}°"))
+            rows.append(("run", f"{c.duration_s:g} s ({self.clock(c.duration_s)}){ran}{step}"))
+        if c.marinesim:
+            rows.append(("marinesim", _e(str(c.marinesim))))
+        vessel = c.vessel
+        if vessel is not None and vessel.rao:
+            rows.append(("vessel (RAO)", _file(vessel.rao, vessel.rao_sha256)))
+        if vessel is not None and (vessel.speed_kn is not None or vessel.heading_deg is not None):
+            rows.append(("speed, heading", f"{_plain(vessel.speed_kn)} kn, {_plain(vessel.heading_deg)}°"))
         out = ["<section id='conditions'>\n<h2>Conditions</h2>",
                _table(("", ""), [(_td(f"<b>{name}</b>"), _td(value)) for name, value in rows], head=False)]
-        points = vessel.get("points_m") or {}
+        points = vessel.points_m if vessel is not None else {}
         if points:
             prows = [(_td(_e(name)), *(_td(_plain(x), "num") for x in (list(p) + [None] * 3)[:3]))
                      for name, p in points.items()]
             out.append("<h3>Points on the vessel</h3>"
                        + _table(("point", ("x (m)", "num"), ("y (m)", "num"), ("z (m)", "num")), prows, css="narrow"))
-        seas = c.get("sea") or []
+        seas = c.sea
         if seas:
-            srows = [(_td(str(i), "num"), _td(_unit(s.get("hs_m"), " m", ".2f"), "num"),
-                      _td(_unit(s.get("tp_s"), " s", ".1f"), "num"), _td(_unit(s.get("from_deg"), "°", ".0f"), "num"),
-                      _td(_unit(s.get("gamma"), "", "g"), "num"), _td(_unit(s.get("spreading_s"), "", "g"), "num"))
+            srows = [(_td(str(i), "num"), _td(_unit(s.hs_m, " m", ".2f"), "num"),
+                      _td(_unit(s.tp_s, " s", ".1f"), "num"), _td(_unit(s.from_deg, "°", ".0f"), "num"),
+                      _td(_unit(s.gamma, "", "g"), "num"), _td(_unit(s.spreading_s, "", "g"), "num"))
                      for i, s in enumerate(seas, start=1)]
             out.append("<h3>Sea at the start</h3>" + _table((("system", "num"), ("Hs", "num"), ("Tp", "num"),
                                                                ("from", "num"), ("JONSWAP γ", "num"),
@@ -487,12 +492,6 @@ def _floats(values: list | None) -> list[float]:
     return [float(v) for v in values or [] if v is not None]
 
 
-def _get(data: dict, *keys: str):
-    for key in keys:
-        data = (data or {}).get(key)
-    return data
-
-
 def _seed(seed: object) -> str:
     return "" if seed is None else f"seed {seed}"
 
@@ -511,19 +510,14 @@ def _unit(value: float | None, unit: str, fmt: str) -> str:
 
 def _badge(verdict: str, extra: str = "") -> str:
     """``verdict`` (an overall or an objective's verdict) on its colour: green, amber, red, grey."""
-    kind = LEVELS.get(verdict, "none")
+    kind = BADGES.get(verdict, "none")
     return f"<span class='badge {kind}{' ' + extra if extra else ''}'>{_e(verdict)}</span>"
 
 
-def _reading(criterion: dict) -> str | None:
-    """A criterion's level, or "not judged" where the run stopped before it could be judged."""
-    return criterion.get("level") if criterion.get("judged", True) else "not judged"
-
-
-def _level_badge(level: str | None) -> str:
-    """A criterion's level on its colour, in words (ok: within limits, settling: no value yet, not judged)."""
-    kind = LEVELS.get(level or "settling", "none")
-    return f"<span class='badge {kind}'>{_e(SHOWN.get(level or 'settling', level))}</span>"
+def _level_badge(reading: Level | None) -> str:
+    """A criterion's reading (:attr:`~marinesim.session.exercise.CriterionResult.reading`) on its colour, in words
+    (:data:`SHOWN`)."""
+    return f"<span class='badge {LEVEL_BADGES[reading]}'>{_e(SHOWN[reading])}</span>"
 
 
 def _td(inner: str, css: str = "") -> tuple[str, str]:

@@ -9,11 +9,16 @@ elapsed min:s (h:min:s past an hour), the way the report's tables give it (:func
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from marinesim import figures
 from marinesim.figures import DPI
+
+if TYPE_CHECKING:
+    from marinesim.report.debrief import Action, CriterionTrace, Message
+    from marinesim.session.exercise import AlarmResult, EventResult
 
 OK, CAUTION, EXCEEDED, NONE = "#2e9e44", "#f0a800", "#d0312d", "#6b7280"
 """The bridge alarm panel's colours: green, amber, red, and grey for no value."""
@@ -74,17 +79,17 @@ def clock(t_s: float, long: bool = False) -> str:
     return f"{sign}{minutes}:{sec:02d}{frac}"
 
 
-def criterion_png(criterion: dict, duration_s: float, events: list[dict], alarms: list[tuple[int, dict]]) -> bytes:
+def criterion_png(criterion: CriterionTrace, duration_s: float, events: list[EventResult],
+                  alarms: list[tuple[int, AlarmResult]]) -> bytes:
     """``criterion``'s running value over a run of ``duration_s``: its limit (red) and caution (amber, dashed)
     lines, the spans above the limit shaded, the settling start greyed, ``events`` and the numbered ``alarms``
     ((number, alarm) pairs raised by this criterion) marked."""
     figure, ax = _figure(2.9, top_px=30)
-    series = criterion.get("series") or {}
-    t = np.asarray(series.get("time_s") or [], float)
-    v = np.array([np.nan if x is None else x for x in series.get("value") or []], float)[: t.size]
+    t = np.asarray(criterion.series.time_s, float)
+    v = np.array([np.nan if x is None else x for x in criterion.series.value], float)[: t.size]
     t = t[: v.size]
-    limit, unit = criterion.get("limit"), criterion.get("unit")
-    caution = None if limit is None or criterion.get("caution") is None else criterion["caution"] * limit
+    limit, unit = criterion.limit, criterion.unit
+    caution = None if limit is None or criterion.caution is None else criterion.caution * limit
     span = _span(duration_s, t)
     finite = np.isfinite(v)
     values = [x for x in (np.nanmax(v) if finite.any() else None, limit) if x is not None]
@@ -117,22 +122,22 @@ def criterion_png(criterion: dict, duration_s: float, events: list[dict], alarms
         ax.axhline(caution, color=CAUTION, lw=1.4, ls=(0, (5, 3)), zorder=2)
         _line_label(ax, (t, v, span), caution, f"caution {with_unit(caution, unit)}", "#8a5e00", "top")
 
-    happened = sorted((e for e in events if e.get("happened_s") is not None), key=lambda e: e["happened_s"])
-    for event, lane in zip(happened, _lanes([e["happened_s"] for e in happened], 0.03 * span, 2)):
-        at = event["happened_s"]
+    happened = _happened(events)
+    for event, lane in zip(happened, _lanes([e.happened_s for e in happened], 0.03 * span, 2)):
+        at = event.happened_s
         ax.axvline(at, color=EVENT, lw=0.9, ls=(0, (2, 2)), zorder=1)
-        _tag(ax, at, 0.975 - 0.075 * lane, f"E{event['index']}", EVENT, _align(at, span))
-    for (number_, alarm), lane in zip(alarms, _lanes([a["raised_s"] for _, a in alarms], 0.05 * span, 2)):
+        _tag(ax, at, 0.975 - 0.075 * lane, f"E{event.index}", EVENT, _align(at, span))
+    for (number_, alarm), lane in zip(alarms, _lanes([a.raised_s for _, a in alarms], 0.05 * span, 2)):
         y = 0.83 - 0.07 * lane
-        ax.axvline(alarm["raised_s"], color=EXCEEDED, lw=0.9, zorder=1)
-        ax.plot([alarm["raised_s"]], [y], marker="v", ms=7, color=EXCEEDED, transform=ax.get_xaxis_transform(),
+        ax.axvline(alarm.raised_s, color=EXCEEDED, lw=0.9, zorder=1)
+        ax.plot([alarm.raised_s], [y], marker="v", ms=7, color=EXCEEDED, transform=ax.get_xaxis_transform(),
                 zorder=5, clip_on=False)
-        right = alarm["raised_s"] > 0.95 * span
-        ax.text(alarm["raised_s"], y, f"A{number_} " if right else f" A{number_}", transform=ax.get_xaxis_transform(),
+        right = alarm.raised_s > 0.95 * span
+        ax.text(alarm.raised_s, y, f"A{number_} " if right else f" A{number_}", transform=ax.get_xaxis_transform(),
                 ha="right" if right else "left", va="center", fontsize=9, color=EXCEEDED, fontweight="bold", zorder=5)
 
-    point = f" ({criterion['point']})" if criterion.get("point") else ""
-    title = f"{criterion['name']}{point} — {criterion.get('quantity', '')}, {window_text(criterion.get('window_s'))}"
+    point = f" ({criterion.point})" if criterion.point else ""
+    title = f"{criterion.name}{point} — {criterion.quantity}, {window_text(criterion.window_s)}"
     ax.set_title(title, fontsize=12, loc="left", color=INK, pad=7, fontweight="bold")
     if unit_text(unit) == "°":  # degrees on the ticks, as on an inclinometer
         from matplotlib.ticker import FuncFormatter
@@ -147,12 +152,12 @@ def criterion_png(criterion: dict, duration_s: float, events: list[dict], alarms
     return figures.png(figure)
 
 
-def timeline_png(duration_s: float, events: list[dict], messages: list[dict], actions: list[dict],
-                 alarms: list[tuple[int, dict]]) -> bytes:
+def timeline_png(duration_s: float, events: list[EventResult], messages: list[Message], actions: list[Action],
+                 alarms: list[tuple[int, AlarmResult]]) -> bytes:
     """The run as a strip: events (diamonds, E-numbered), messages, instructor actions, and each criterion's
     numbered alarms as bars, dark from raised to acknowledged (the delay written beside it), light on to
     back within the limit."""
-    criteria = list(dict.fromkeys(alarm["criterion"] for _, alarm in alarms))
+    criteria = list(dict.fromkeys(alarm.criterion for _, alarm in alarms))
     rows = ["events", "messages", "actions"] + [f"alarms: {name}" for name in criteria]
     y = {row: len(rows) - i for i, row in enumerate(rows)}
     figure, ax = _figure(0.62 + 0.46 * len(rows), top_px=8)
@@ -164,11 +169,11 @@ def timeline_png(duration_s: float, events: list[dict], messages: list[dict], ac
         ax.text(0.004 * span, y[row] + 0.26, row.upper(), fontsize=8, color=MUTED, va="bottom", ha="left",
                 fontweight="bold", zorder=1)
         ax.axhline(y[row], color="#e6e9ed", lw=0.8, zorder=0)
-    happened = sorted((e for e in events if e.get("happened_s") is not None), key=lambda e: e["happened_s"])
-    times = [e["happened_s"] for e in happened]
+    happened = _happened(events)
+    times = [e.happened_s for e in happened]
     gap = 0.03 * span
     for i, event in enumerate(happened):
-        at, label = event["happened_s"], f"E{event['index']}"
+        at, label = event.happened_s, f"E{event.index}"
         ax.plot([at], [y["events"]], "D", ms=6.5, color=EVENT, zorder=3, clip_on=False)
         # beside the marker (clear of the row's name above it): to the right, or to the left where the next event
         # is close, or under it where both neighbours are
@@ -180,18 +185,18 @@ def timeline_png(duration_s: float, events: list[dict], messages: list[dict], ac
         else:
             ax.text(at, y["events"] - 0.17, label, fontsize=9, color=EVENT, va="top", ha="center", fontweight="bold")
     for message in messages:
-        instructor = message.get("source") == "instructor"
-        ax.plot([message["time_s"]], [y["messages"]], "o", ms=6, zorder=3, color=MESSAGE, clip_on=False,
+        instructor = message.source == "instructor"
+        ax.plot([message.time_s], [y["messages"]], "o", ms=6, zorder=3, color=MESSAGE, clip_on=False,
                 markerfacecolor=MESSAGE if instructor else "white", markeredgewidth=1.4)
     for action in actions:
-        ax.plot([action["time_s"]], [y["actions"]], "s", ms=5.5, color=ACTION, zorder=3, clip_on=False)
+        ax.plot([action.time_s], [y["actions"]], "s", ms=5.5, color=ACTION, zorder=3, clip_on=False)
     lanes = {}  # an alarm's label goes above its bar, or below where the row's previous label is near
     for name in criteria:
-        mine = [(n, a) for n, a in alarms if a["criterion"] == name]
-        lanes.update(zip((n for n, _ in mine), _lanes([a["raised_s"] for _, a in mine], 0.3 * span, 2)))
+        mine = [(n, a) for n, a in alarms if a.criterion == name]
+        lanes.update(zip((n for n, _ in mine), _lanes([a.raised_s for _, a in mine], 0.3 * span, 2)))
     for number_, alarm in alarms:
-        row = y[f"alarms: {alarm['criterion']}"]
-        raised, acked, cleared = alarm["raised_s"], alarm.get("acknowledged_s"), alarm.get("cleared_s")
+        row = y[f"alarms: {alarm.criterion}"]
+        raised, acked, cleared = alarm.raised_s, alarm.acknowledged_s, alarm.cleared_s
         end = span if cleared is None else max(cleared, acked if acked is not None else raised)
         ax.barh(row, end - raised, left=raised, height=0.42, color=EXCEEDED, alpha=0.22, lw=0, zorder=2)
         if acked is not None:
@@ -250,7 +255,8 @@ def heading_curve(heading_deg, course_deg=None) -> tuple[np.ndarray, np.ndarray]
     return h, c
 
 
-def track_png(ship: dict, events: list[dict], alarms: list[tuple[int, dict]] | list[dict]) -> bytes:
+def track_png(ship: dict, events: list[EventResult],
+              alarms: list[tuple[int, AlarmResult]] | list[AlarmResult]) -> bytes:
     """``ship``'s track over the ground (midship, from the start; east right, north up, to scale, in m or in km
     past :data:`KM_ABOVE_M`): the start (open circle), her outline every few minutes along her heading with the
     time beside it, her outline at the end (filled), each event that happened (E-numbered diamond) and each of the
@@ -264,10 +270,9 @@ def track_png(ship: dict, events: list[dict], alarms: list[tuple[int, dict]] | l
     t = t[: min(north.size, east.size, heading.size)]
     north, east, heading = north[: t.size], east[: t.size], heading[: t.size]
     name = ship.get("name") or "the ship"
-    happened = sorted((e for e in events if e.get("happened_s") is not None), key=lambda e: e["happened_s"])
     numbered = [a if isinstance(a, tuple) else (n, a) for n, a in enumerate(alarms, start=1)]
-    marks = [(e["happened_s"], "E", e["index"]) for e in happened]
-    marks += [(a["raised_s"], "A", n) for n, a in numbered]
+    marks = [(e.happened_s, "E", e.index) for e in _happened(events)]
+    marks += [(a.raised_s, "A", n) for n, a in numbered]
     marks.sort(key=lambda m: (m[0], m[1] == "A", m[2]))
     reach = float(np.hypot(north, east).max()) if t.size else 0.0
     if reach < STATION_M:
@@ -357,7 +362,7 @@ def track_png(ship: dict, events: list[dict], alarms: list[tuple[int, dict]] | l
     return figures.png(figure)
 
 
-def handling_png(ship: dict, events: list[dict], duration_s: float) -> bytes:
+def handling_png(ship: dict, events: list[EventResult], duration_s: float) -> bytes:
     """``ship``'s handling over a run of ``duration_s``, four panels on one time axis: heading (with the autopilot's
     set course dashed where it steers), speed over ground, rudder angle and order (+ starboard), propeller rpm
     (astern negative); ``events`` that happened as dashed verticals, E-numbered."""
@@ -441,22 +446,27 @@ def handling_png(ship: dict, events: list[dict], duration_s: float) -> bytes:
     ax.plot(t, rpm, color=TRACK, lw=1.5, zorder=3)
     _panel_titles(ax, "Propeller (rpm, astern −)", [])
 
-    happened = sorted((e for e in events if e.get("happened_s") is not None), key=lambda e: e["happened_s"])
+    happened = _happened(events)
     for event in happened:
         for ax in axes:
-            ax.axvline(event["happened_s"], color=EVENT, lw=0.9, ls=(0, (2, 2)), zorder=1)
-    groups: list[list[dict]] = []  # events closer than a tag's width share one tag
+            ax.axvline(event.happened_s, color=EVENT, lw=0.9, ls=(0, (2, 2)), zorder=1)
+    groups: list[list[EventResult]] = []  # events closer than a tag's width share one tag
     for event in happened:
-        if groups and event["happened_s"] - groups[-1][0]["happened_s"] < 0.025 * span:
+        if groups and event.happened_s - groups[-1][0].happened_s < 0.025 * span:
             groups[-1].append(event)
         else:
             groups.append([event])
-    for group, lane in zip(groups, _lanes([g[0]["happened_s"] for g in groups], 0.06 * span, 2)):
-        at = group[0]["happened_s"]
-        _tag(axes[0], at, 0.975 - 0.16 * lane, _numbered("E", [e["index"] for e in group]), EVENT, _align(at, span))
+    for group, lane in zip(groups, _lanes([g[0].happened_s for g in groups], 0.06 * span, 2)):
+        at = group[0].happened_s
+        _tag(axes[0], at, 0.975 - 0.16 * lane, _numbered("E", [e.index for e in group]), EVENT, _align(at, span))
     figure.text(LEFT_PX / width, 1 - 8 / height, f"{ship.get('name') or 'the ship'} — handling", fontsize=12,
                 color=INK, fontweight="bold", ha="left", va="top")
     return figures.png(figure)
+
+
+def _happened(events: list[EventResult]) -> list[EventResult]:
+    """The events that happened, in the order they did."""
+    return sorted((e for e in events if e.happened_s is not None), key=lambda e: e.happened_s)
 
 
 def _panel_titles(ax, title: str, keys: list[tuple[str, str, str]]) -> None:

@@ -2,10 +2,11 @@
 run's time grid, and the criteria evaluated over it as it grows.
 
 The viewer moves it on frame by frame (:meth:`Exercise.advance`); ``marinesim assess``, the export
-and the headless run take its record block by block (:meth:`Exercise.blocks`). Both compute the rows
-at the grid times ``t_k = k dt`` and evaluate the criteria at the same rows (every
-:data:`~marinesim.criteria.monitor.EVALUATE_S`), with the clock stopped at each evaluation, so what
-the viewer shows at ``t`` is what ``assess`` reports at ``t``.
+and the headless run take its record block by block (:meth:`Exercise.blocks`), each through
+:func:`run_exercise` (built, run, closed). Both compute the rows at the grid times ``t_k = k dt`` and
+evaluate the criteria at the same rows (every :data:`~marinesim.criteria.monitor.EVALUATE_S`), with
+the clock stopped at each evaluation, so what the viewer shows at ``t`` is what ``assess`` reports
+at ``t``. What it reports is an :class:`Assessment` (:meth:`Exercise.assessment`).
 
 Events happen in time: one with ``at_s`` is asked of the timeline ahead of time and starts at
 ``at_s``; one with ``when`` is checked at every evaluation and happens the first time its condition
@@ -29,17 +30,18 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Iterator, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from typing import Any
 
 import numpy as np
 
-from marinesim.criteria.monitor import Criterion, Monitor, Tally, value_and_limit, watched
+from marinesim.criteria.monitor import Criterion, Level, Monitor, Tally, value_and_limit, watched
 from marinesim.errors import ParameterError
 from marinesim.progress import task
 from marinesim.scenario import Scenario
 from marinesim.scenario.model import WEATHER
 from marinesim.scenario.schema import Event
+from marinesim.session.assembly import Assembly
 from marinesim.session.timeline import PREPARE_S, Simulation
 
 BLOCK = 512
@@ -81,6 +83,95 @@ class Alarm:
     def line(self) -> str:
         value, limit = value_and_limit(self.value, self.limit)
         return f"t {self.raised_s:7.1f} s  ALARM {self.name}: {value} above the limit {limit}"
+
+
+@dataclass(frozen=True)
+class CriterionResult:
+    """One criterion over the run so far: its worst ``value`` (in ``unit``; None while settling) at ``value_at_s``
+    (s) against ``limit`` (caution at ``caution`` x limit) over ``window_s`` (s; None for a dose), the time spent
+    above the limit and when it first went above (s), its ``level`` from the worst value, and whether it is
+    ``judged`` (:meth:`Exercise.assessment`)."""
+
+    name: str
+    point: str | None
+    quantity: str
+    unit: str | None
+    window_s: float | None
+    value: float | None
+    value_at_s: float | None
+    limit: float | None
+    caution: float
+    exceeded: bool
+    time_exceeded_s: float
+    first_exceeded_s: float | None
+    level: Level
+    judged: bool
+
+    @property
+    def reading(self) -> Level | None:
+        """Its level where it is judged; None where the run stopped before it could be."""
+        return self.level if self.judged else None
+
+    def as_dict(self) -> dict:
+        """As the JSON outputs write it: these fields in this order, the level as its word."""
+        values = {field.name: getattr(self, field.name) for field in fields(CriterionResult)}
+        return values | {"level": self.level.value}
+
+
+@dataclass(frozen=True)
+class EventResult:
+    """Scripted event ``index``: its ``trigger`` in words (``at 480 s``, ``when roll > 8``), when it happened (s; None:
+    it did not), what it changes and its message."""
+
+    index: int
+    trigger: str
+    happened_s: float | None
+    what: str
+    message: str | None
+
+    def as_dict(self) -> dict:
+        return {field.name: getattr(self, field.name) for field in fields(self)}
+
+
+@dataclass(frozen=True)
+class AlarmResult:
+    """An alarm of the criterion named ``criterion``: raised at ``raised_s`` (s) with ``value`` above ``limit`` (the
+    criterion's unit), acknowledged and back within the limit at the times given (s; None: not by the end)."""
+
+    criterion: str
+    raised_s: float
+    value: float
+    limit: float
+    acknowledged_s: float | None = None
+    cleared_s: float | None = None
+
+    def as_dict(self) -> dict:
+        return {field.name: getattr(self, field.name) for field in fields(self)}
+
+
+@dataclass(frozen=True)
+class Assessment:
+    """The criteria, events and alarms of a run of ``scenario`` (its path) with ``seed`` at ``dt_s`` (s), as
+    ``marinesim assess`` reports them: ``duration_s`` the time run (s), ``planned_s`` the planned duration (s),
+    ``complete`` whether it ran through it, and the ``verdict`` (:meth:`Exercise.assessment`)."""
+
+    scenario: str
+    seed: int
+    duration_s: float
+    planned_s: float
+    complete: bool
+    dt_s: float
+    criteria: list[CriterionResult]
+    events: list[EventResult]
+    alarms: list[AlarmResult]
+    verdict: str
+
+    def as_dict(self) -> dict:
+        """The assessment as ``assess --json`` and the headless run's ``assessment.json`` write it (plain values,
+        the fields in this order, levels as their words)."""
+        values = {field.name: getattr(self, field.name) for field in fields(self)}
+        return values | {"criteria": [c.as_dict() for c in self.criteria], "events": [e.as_dict() for e in self.events],
+                         "alarms": [a.as_dict() for a in self.alarms]}
 
 
 CHANGE_KEYS = frozenset({"hs_factor", "tp_factor", "turn_waves_deg", "speed_kn", "heading_deg", "ramp_s"})
@@ -377,7 +468,7 @@ class Exercise:
         """The tally of a criterion the exercise evaluates (the scenario's, a condition's, or watched)."""
         return self.monitor.tallies[self.monitor.criteria.index(criterion)]
 
-    def readings(self) -> list[tuple[Criterion, float | None, str]]:
+    def readings(self) -> list[tuple[Criterion, float | None, Level]]:
         """(criterion, latest value or None while settling, level) of the scenario's criteria."""
         if self.monitor is None:
             return []
@@ -388,8 +479,8 @@ class Exercise:
         """Whether the run has gone through its planned duration: recorded the last row of its time grid."""
         return last_row(self.sim.time, self.dt) >= last_row(self.duration_s, self.dt)
 
-    def assessment(self) -> dict:
-        """The criteria and events of the run so far, as ``marinesim assess`` prints them: ``duration_s`` the time
+    def assessment(self) -> Assessment:
+        """The criteria and events of the run so far, as ``marinesim assess`` reports them: ``duration_s`` the time
         run (s), ``planned_s`` the run's planned duration (s), ``complete`` whether it ran through it. A criterion
         is ``judged`` if the run is complete or it went above its limit (an exceedance is a fact however early the
         run stopped; a value within the limit so far is not a pass). The verdict is ``exceeded`` if a criterion
@@ -400,22 +491,35 @@ class Exercise:
         tallies = self.monitor.tallies if self.monitor is not None else []
         for criterion, tally in zip(self.criteria, tallies):
             level = criterion.level(tally.worst)
-            criteria.append({
-                "name": criterion.label, "point": criterion.point, "quantity": criterion.quantity,
-                "unit": criterion.measure.unit, "window_s": criterion.window, "value": tally.worst,
-                "value_at_s": tally.worst_s, "limit": criterion.limit, "caution": criterion.caution,
-                "exceeded": tally.first_exceeded_s is not None, "time_exceeded_s": tally.time_exceeded_s,
-                "first_exceeded_s": tally.first_exceeded_s,
-                "level": level, "judged": complete or level == "exceeded"})
+            criteria.append(CriterionResult(
+                name=criterion.label, point=criterion.point, quantity=criterion.quantity,
+                unit=criterion.measure.unit, window_s=criterion.window, value=tally.worst, value_at_s=tally.worst_s,
+                limit=criterion.limit, caution=criterion.caution, exceeded=tally.first_exceeded_s is not None,
+                time_exceeded_s=tally.time_exceeded_s, first_exceeded_s=tally.first_exceeded_s, level=level,
+                judged=complete or level is Level.EXCEEDED))
         happened = {h.index: h.time_s for h in self.happened}
-        events = [{"index": i, "trigger": (f"at {e.at_s:g} s" if e.at_s is not None else f"when {e.condition}"),
-                   "happened_s": happened.get(i), "what": e.describe().partition(": ")[2], "message": e.message}
+        events = [EventResult(i, f"at {e.at_s:g} s" if e.at_s is not None else f"when {e.condition}", happened.get(i),
+                              e.describe().partition(": ")[2], e.message)
                   for i, e in enumerate(self.events)]
-        alarms = [{"criterion": a.name, "raised_s": a.raised_s, "value": a.value, "limit": a.limit,
-                   "acknowledged_s": a.acknowledged_s, "cleared_s": a.cleared_s} for a in self.alarms]
-        levels = {c["level"] for c in criteria}
-        verdict = ("exceeded" if "exceeded" in levels else "incomplete" if not complete
-                   else "caution" if "caution" in levels else "no value" if levels == {"settling"} else "within limits")
-        return {"scenario": str(self.scenario.path), "seed": self.scenario.run.seed,
-                "duration_s": self.sim.time, "planned_s": self.duration_s, "complete": complete, "dt_s": self.dt,
-                "criteria": criteria, "events": events, "alarms": alarms, "verdict": verdict}
+        alarms = [AlarmResult(a.name, a.raised_s, a.value, a.limit, a.acknowledged_s, a.cleared_s) for a in self.alarms]
+        levels = {c.level for c in criteria}
+        verdict = ("exceeded" if Level.EXCEEDED in levels else "incomplete" if not complete
+                   else "caution" if Level.CAUTION in levels else "no value" if levels == {Level.SETTLING}
+                   else "within limits")
+        return Assessment(str(self.scenario.path), self.scenario.run.seed, self.sim.time, self.duration_s, complete,
+                          self.dt, criteria, events, alarms, verdict)
+
+
+def run_exercise(scenario: Scenario, *, duration_s: float | None = None, log: Callable[[str], None] = quiet,
+                 watch: Sequence[Criterion] = (), assembly: Assembly | None = None,
+                 drive: Callable[[Exercise], object] | None = None) -> Exercise:
+    """``scenario``'s exercise (as :class:`Exercise`: over ``duration_s``, events to ``log``, ``watch``) on a
+    simulation without the wake (of ``assembly``, default a new one), driven by ``drive(exercise)`` (default
+    :meth:`Exercise.run` to its end) and closed after, whatever happens; returns the exercise run."""
+    with Simulation(scenario, wake=False, assembly=assembly) as simulation:
+        exercise = Exercise(simulation, duration_s, log, watch)
+        if drive is None:
+            exercise.run()
+        else:
+            drive(exercise)
+    return exercise

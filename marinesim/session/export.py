@@ -28,9 +28,9 @@ from marinesim.errors import MarinesimError, ParameterError, require_positive
 from marinesim.scenario.model import MAX_ROWS
 from marinesim.progress import Bar, task
 from marinesim.session.assembly import Assembly
-from marinesim.session.exercise import Exercise, last_row, quiet
+from marinesim.session.exercise import Exercise, last_row, quiet, run_exercise
 from marinesim.session.sidecar import column_units, run_sidecar, sha256, write_table
-from marinesim.session.timeline import Simulation, record_columns
+from marinesim.session.timeline import record_columns
 
 FORMATS = ("csv", "parquet")
 EXTENSIONS = {".csv": "csv", ".parquet": "parquet", ".pq": "parquet"}
@@ -100,26 +100,23 @@ def export_motions(assembly: Assembly, out: Path, file_format: str | None = None
                              "per export")
     assembly.response  # refuses a scenario without a vessel
     columns = record_columns(scenario.vessel.points, scenario.vessel.ship)
-    simulation = Simulation(scenario, wake=False, assembly=assembly)
-    exercise = Exercise(simulation, duration, log)
-
-    def write(temp: Path) -> None:
-        blocks = exercise.blocks()
-        with task(f"export {out.name}", steps) as bar:
-            (_write_csv if file_format == "csv" else _write_parquet)(temp, blocks, bar)
-
     coverage: dict = {}
+    sidecars: list[Path] = []
 
-    def describe() -> dict:
-        metadata = {"format": file_format, **motions_sidecar(exercise, steps, duration)}
-        coverage.update(metadata["outside_rao_table"])
-        return metadata
+    def write_motions(exercise: Exercise) -> None:
+        def write(temp: Path) -> None:
+            with task(f"export {out.name}", steps) as bar:
+                (_write_csv if file_format == "csv" else _write_parquet)(temp, exercise.blocks(), bar)
 
-    try:
-        sidecar = write_table(out, write, describe)
-    finally:
-        simulation.close()
-    return Export(out, sidecar, steps, columns, exercise, coverage)
+        def describe() -> dict:
+            metadata = {"format": file_format, **motions_sidecar(exercise, steps, duration)}
+            coverage.update(metadata["outside_rao_table"])
+            return metadata
+
+        sidecars.append(write_table(out, write, describe))
+
+    exercise = run_exercise(scenario, duration_s=duration, log=log, assembly=assembly, drive=write_motions)
+    return Export(out, sidecars[0], steps, columns, exercise, coverage)
 
 
 def motions_sidecar(exercise: Exercise, rows: int, duration_s: float) -> dict:

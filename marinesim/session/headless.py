@@ -60,7 +60,7 @@ def run_headless(assembly: Assembly, out_dir: Path, log: Callable[[str], None] =
     if scenario.criteria:
         result.files["assessment"] = out_dir / "assessment.json"
         with atomic_path(result.files["assessment"]) as temp:
-            temp.write_text(json_text(export.exercise.assessment()), encoding="utf-8")
+            temp.write_text(json_text(export.exercise.assessment().as_dict()), encoding="utf-8")
     if scenario.criteria or scenario.events:
         export.exercise.note("end")  # the session ran to its end: a log without this entry reads as cut short
         result.files["session_log"] = write_log(out_dir / "session.jsonl", export.exercise)

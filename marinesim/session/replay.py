@@ -17,11 +17,10 @@ from marinesim.criteria.monitor import Criterion
 from marinesim.errors import FileFormatError, MarinesimError, ScenarioError
 from marinesim.progress import task
 from marinesim.scenario import Scenario, load_scenario, with_run
-from marinesim.session.exercise import Exercise, quiet
+from marinesim.session.exercise import Exercise, quiet, run_exercise
 from marinesim.session.log import SessionLog, read_log, vessel_files
 from marinesim.session.recorder import Recorder
 from marinesim.session.sidecar import sha256
-from marinesim.session.timeline import Simulation
 
 SKIP = ("t", "kind", "action")
 """An action entry's keys that are not the action's fields."""
@@ -81,10 +80,8 @@ def replay_session(source: Path | SessionLog, export: Path | None = None, watch:
     CSV ``export`` as the session's recorder would have written them; returns the exercise run (``watch``: as
     :class:`Exercise`). Whether the log is verified is the caller's to say (:attr:`SessionLog.verification`)."""
     session = source if isinstance(source, SessionLog) else read_log(source)
-    scenario = session_scenario(session, session.path)
-    simulation = Simulation(scenario, wake=False)
-    try:
-        exercise = Exercise(simulation, log=log, watch=watch)
+
+    def drive(exercise: Exercise) -> None:
         recorder = Recorder(exercise, export) if export is not None else None
         replay = Replay(exercise, session)
         end = session.end_s
@@ -96,6 +93,5 @@ def replay_session(source: Path | SessionLog, export: Path | None = None, watch:
                 bar.update(round(replay.time) - round(before))
         if recorder is not None:
             recorder.stop()
-    finally:
-        simulation.close()
-    return exercise
+
+    return run_exercise(session_scenario(session, session.path), log=log, watch=watch, drive=drive)

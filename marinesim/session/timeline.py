@@ -130,7 +130,8 @@ class Leg:
 
 
 class Simulation:
-    """The scenario's ocean, vessel and wake, advanced by :meth:`advance` and queried at any time."""
+    """The scenario's ocean, vessel and wake, advanced by :meth:`advance` and queried at any time; a context manager
+    that closes it (:meth:`close`)."""
 
     def __init__(self, scenario: Scenario, *, wake: bool = True, wake_grid: WakeGrid = WAKE_GRID,
                  assembly: Assembly | None = None) -> None:
@@ -529,7 +530,15 @@ class Simulation:
             return f"wake: computing for {waiting[0] / KNOT:.1f} kn"
         return f"Kelvin wake Fn {froude:.2f}"
 
+    def __enter__(self) -> Simulation:
+        return self
+
+    def __exit__(self, *exc_info: object) -> None:
+        self.close()
+
     def close(self) -> None:
+        """Stop the sea-change and wake workers and release the solver (``with Simulation(...) as sim:`` does it on
+        leaving the block)."""
         self._preparing.shutdown(wait=False, cancel_futures=True)
         if self._pool is not None:
             self._pool.shutdown(wait=False, cancel_futures=True)
