@@ -19,7 +19,8 @@ FLAGS = ("--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-
          "--force-device-scale-factor=1")
 """Without the networking flags Chromium keeps trying hosts this machine cannot reach; scale 1: a
 screenshot's pixels are CSS pixels."""
-TIMEOUT_S = 120.0
+TIMEOUT_S = 900.0
+"""s: a Chromium run that has not ended by then hangs (a page is drawn in seconds, under load in well under a minute)."""
 
 
 def _run(args: list[str], timeout: float = TIMEOUT_S) -> subprocess.CompletedProcess:

@@ -276,10 +276,10 @@ def run_lengths(mask: np.ndarray) -> float:
 
 HANG_S = 1800.0
 """How long a test waits for a command to end, or for an event in a command's life (a file appearing, a library
-mapped), before it calls the wait a hang and fails: 30 minutes. The slowest wait, for a day's export to write its
-first rows (it computes the whole record first), took 263 s on a 2-core machine already running two other test
-sessions, and under a minute for every other wait; a busier machine slows them a few times more. Only a process
-that has stopped making progress gets near 30 minutes, and a hang still ends the test."""
+mapped), before it calls the wait a hang and fails: 30 minutes. The slowest wait, for a day's export to have
+written 100 kB of its table, took 71 s on a 2-core machine running the campaign's three workers, and 284 s with two
+CPU burners and other test sessions beside them (every other event awaited, under 30 s there). 30 minutes is six
+times the worst seen: only a process that has stopped making progress gets there, and a hang still ends the test."""
 
 
 def mapped(pid: int, library: str) -> bool:
@@ -327,7 +327,7 @@ class Hang(BaseException):
 def hang_guard(what: str) -> Iterator[None]:
     """Raise :class:`Hang` naming ``what`` in the block if it has not ended within :data:`HANG_S` (SIGALRM, so only
     in the main thread; elsewhere the block runs unguarded): a bound only a hang reaches, where a deadline of a few
-    seconds measured the machine's speed."""
+    seconds would measure the machine's speed."""
     if threading.current_thread() is not threading.main_thread():
         yield
         return

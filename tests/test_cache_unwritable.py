@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import DEFAULT, ROOT
+from conftest import DEFAULT, HANG_S, ROOT
 from staging import tmpfs
 
 WAKE = ["wake", str(ROOT / "hulls" / "wigley.stl"), "--speed-kn", "20", "--nx", "256", "--ny", "128", "--quiet"]
@@ -83,7 +83,7 @@ def test_fftw_wisdom_that_cannot_be_saved_is_warned_about_once(tmp_path):
               "Ocean(sea, seed=3, tile_count=2, resolution=64, threads=2).fields(1.0)\n"
               "Ocean(sea, seed=4, tile_count=2, resolution=32, threads=2).fields(1.0)\n")
     env = {**os.environ, "MARINESIM_CACHE_DIR": str(root), "PYTHONPATH": str(ROOT)}
-    done = subprocess.run([sys.executable, "-c", script], env=env, capture_output=True, text=True, timeout=120)
+    done = subprocess.run([sys.executable, "-c", script], env=env, capture_output=True, text=True, timeout=HANG_S)
     assert done.returncode == 0, done.stderr
     _one_warning(done.stderr)
     assert str(root) in done.stderr

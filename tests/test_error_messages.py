@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import DEFAULT, ROOT
+from conftest import DEFAULT, HANG_S, ROOT
 from staging import tmpfs
 from marinesim.cli import main
 from marinesim.scenario import load_scenario
@@ -75,7 +75,7 @@ def test_a_scenario_with_a_byte_order_mark_is_read(tmp_path):
 
 def _stderr_of(args: list[str], cwd: Path) -> list[str]:
     env = {**os.environ, "PYTHONPATH": str(ROOT)}
-    done = subprocess.run([sys.executable, *args], env=env, cwd=cwd, capture_output=True, text=True, timeout=120)
+    done = subprocess.run([sys.executable, *args], env=env, cwd=cwd, capture_output=True, text=True, timeout=HANG_S)
     return done.stderr.splitlines()
 
 

@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from conftest import HANG_S
 from marinesim.errors import FileFormatError, ParameterError
 from marinesim.vessel.native import write_native
 from marinesim.vessel.read import read_rao
@@ -23,18 +24,17 @@ ROOT = Path(__file__).resolve().parents[1]
 TANKER_RAO = ROOT / "rao" / "tanker" / "tanker.4"
 TANKER_HULL = ROOT / "hulls" / "tanker.gdf"
 S175 = ROOT / "rao" / "s175" / "input.re1"
-LIMIT_S = 60
 
 
 def marinesim(*args: str, process: bool = False) -> subprocess.CompletedProcess:
     """``marinesim ARGS`` through the command line's own entry (``marinesim.cli.main``) in this process, its
     exit status and output captured as a user would see them; with ``process``, ``python -m marinesim ARGS`` in a
-    process of its own (for what could block: a hang then fails the test after LIMIT_S). The subprocess path
-    itself (imports, signals) is tested by test_cli_main.py and the input campaign."""
+    process of its own (for what could block: a hang then fails the test after :data:`~conftest.HANG_S`). The
+    subprocess path itself (imports, signals) is tested by test_cli_main.py and the input campaign."""
     if process:
         env = dict(os.environ, PYTHONPATH=str(ROOT))
         return subprocess.run([sys.executable, "-m", "marinesim", *args], capture_output=True, text=True, env=env,
-                              timeout=LIMIT_S)
+                              timeout=HANG_S)
     from marinesim.cli import main
 
     out, err = io.StringIO(), io.StringIO()

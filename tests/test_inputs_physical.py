@@ -12,13 +12,12 @@ import signal
 import socket
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import numpy as np
 import pytest
 
-from conftest import ROOT
+from conftest import HANG_S, ROOT, wait_for
 from test_cli_operability import FOLLOWER, HAND_SCATTER
 from test_criteria_spectral import constant_heave
 from test_inputs_bounds import TANKER_HULL, TANKER_RAO, marinesim, refused, scenario
@@ -269,13 +268,9 @@ def test_ctrl_c_while_dask_starts_is_one_line_and_130(tmp_path, follower):
          "--out", str(tmp_path / "out"), "--headings", "90,180", "--time-domain", "1000", "--workers", "2",
          "--duration-h", "0.2", "--quiet"], stderr=subprocess.PIPE, text=True, env=env)
     try:
-        deadline = time.monotonic() + 120
-        while not _worker_started(process.pid):
-            assert process.poll() is None, process.stderr.read()
-            assert time.monotonic() < deadline, "no Dask worker started"
-            time.sleep(0.01)
+        wait_for(lambda: _worker_started(process.pid), process, "no Dask worker started")
         process.send_signal(signal.SIGINT)
-        _, stderr = process.communicate(timeout=120)
+        _, stderr = process.communicate(timeout=HANG_S)
     finally:
         taken.close()
         if process.poll() is None:

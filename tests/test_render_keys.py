@@ -13,7 +13,7 @@ import sys
 
 import pytest
 
-from conftest import DEFAULT, ROOT
+from conftest import DEFAULT, HANG_S, ROOT
 from marinesim.render.keys import CONTEXTS, KEYMAP, bindings, dispatch, help_lines, with_reference
 
 USAGE = ROOT / "docs" / "USAGE.md"
@@ -44,7 +44,7 @@ def pyglet_keys() -> set[str]:
     script = ("import json, pyglet; pyglet.options['headless'] = True; from pyglet.window import key; "
               "print(json.dumps(sorted({key.symbol_string(v) for n, v in vars(key).items() "
               "if n == n.upper() and isinstance(v, int) and not n.startswith(('_' * 2, 'MOD_', 'MOTION_'))})))")
-    result = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=120)
+    result = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=HANG_S)
     assert result.returncode == 0, result.stderr[-2000:]
     return set(json.loads(result.stdout))
 
@@ -176,7 +176,7 @@ def test_the_generator_writes_the_table_between_the_markers(tmp_path):
     page = tmp_path / "page.md"
     page.write_text("before\n<!-- keys:start -->\nstale row\n<!-- keys:end -->\nafter\n", encoding="utf-8")
     result = subprocess.run([sys.executable, "-m", "marinesim.render.keys", str(page)], capture_output=True,
-                            text=True, timeout=120)
+                            text=True, timeout=HANG_S)
     assert result.returncode == 0, result.stderr[-2000:]
     text = page.read_text(encoding="utf-8")
     assert text.startswith("before\n<!-- keys:start -->\n| who | keys |")

@@ -14,7 +14,6 @@ import stat
 import subprocess
 import sys
 import threading
-import time
 from pathlib import Path
 
 import pandas as pd
@@ -26,7 +25,7 @@ from marinesim.scenario import load_scenario, with_run
 from marinesim.session.assembly import Assembly
 from marinesim.session.export import export_motions
 
-from conftest import ROOT
+from conftest import HANG_S, ROOT, wait_for
 
 SCENARIO = f"""
 [ocean]
@@ -58,17 +57,12 @@ def scenario(tmp_path) -> Path:
 
 
 def start_export(scenario: Path, cwd: Path, *args: str) -> subprocess.Popen:
-    """``marinesim export`` of a day at 10 Hz in the background, once its temporary table is growing."""
+    """``marinesim export`` of a day at 10 Hz (``args`` may shorten it) in the background, once it has begun its
+    temporary table: it holds its lock then, and has its whole record still to compute and write."""
     process = subprocess.Popen([sys.executable, "-m", "marinesim", "export", str(scenario), "--out", "m.csv",
                                 "--quiet", *args], cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    deadline = time.time() + 120
-    while time.time() < deadline:
-        parts = list(cwd.glob(".m.*.part.csv"))
-        if parts and parts[0].stat().st_size > 100_000:
-            return process
-        time.sleep(0.05)
-    process.kill()
-    pytest.fail("the export never started writing")
+    wait_for(lambda: any(cwd.glob(".m.*.part.csv")), process, "the export never began its table")
+    return process
 
 
 def export(scenario: Path, cwd: Path, *args: str) -> subprocess.CompletedProcess:
@@ -106,7 +100,7 @@ def test_sigterm_discards_the_new_pair_and_keeps_the_old_one(tmp_path, scenario)
     (tmp_path / "m.csv.json").write_bytes(old_sidecar)
     process = start_export(scenario, tmp_path)
     process.send_signal(signal.SIGTERM)
-    _, stderr = process.communicate(timeout=60)
+    _, stderr = process.communicate(timeout=HANG_S)
     assert process.returncode == 143 and "terminated" in stderr and "Traceback" not in stderr
     assert len(stderr.strip().splitlines()) == 1
     assert (tmp_path / "m.csv").read_bytes() == old_table and (tmp_path / "m.csv.json").read_bytes() == old_sidecar
@@ -116,11 +110,16 @@ def test_sigterm_discards_the_new_pair_and_keeps_the_old_one(tmp_path, scenario)
 @pytest.mark.slow
 def test_a_second_writer_is_refused_while_the_first_runs(tmp_path, scenario):
     """Two exports to one file used to leave one's table beside the other's sidecar; now the second is refused
-    with the first's process named, and the first's pair is whole."""
+    with the first's process named, and the first's pair is whole. The first is stopped (SIGSTOP, its lock still
+    held) while the second tries, so that on no machine can it end before the second has started."""
     first = start_export(scenario, tmp_path, "--duration", "20000")
-    second = export(scenario, tmp_path, "--out", "m.csv", "--seed", "2", "--duration", "10")
+    first.send_signal(signal.SIGSTOP)
+    try:
+        second = export(scenario, tmp_path, "--out", "m.csv", "--seed", "2", "--duration", "10")
+    finally:
+        first.send_signal(signal.SIGCONT)
     assert second.returncode == 2 and f"another marinesim (process {first.pid}) is writing it" in second.stderr
-    assert first.wait(timeout=600) == 0
+    assert first.wait(timeout=HANG_S) == 0
     meta = json.loads((tmp_path / "m.csv.json").read_text())
     assert meta["seed"] == 1 and meta["data_sha256"] == hashlib.sha256((tmp_path / "m.csv").read_bytes()).hexdigest()
     assert not (tmp_path / "m.csv.lock").exists()

@@ -16,7 +16,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from conftest import ROOT
+from conftest import HANG_S, ROOT
 from marinesim import formats
 from marinesim.errors import FileFormatError
 from marinesim.sea.dispersion import k_from_omega
@@ -250,7 +250,7 @@ def test_command_line_refuses_a_broken_set_in_one_line(tmp_path):
     path = copy_set(tmp_path)
     (tmp_path / "tanker.hst").write_text("3 3 oops\n")
     result = subprocess.run([sys.executable, "-m", "marinesim", "rao", str(path)], capture_output=True, text=True,
-                            env=dict(os.environ, PYTHONPATH=str(ROOT)), timeout=60)
+                            env=dict(os.environ, PYTHONPATH=str(ROOT)), timeout=HANG_S)
     stderr = result.stderr.strip().splitlines()
     assert result.returncode == 2 and "Traceback" not in result.stderr and len(stderr) == 1, result.stderr
     assert str(tmp_path / "tanker.hst") in stderr[0]
