@@ -304,7 +304,7 @@ def test_a_log_without_its_end_time_may_run_past_the_planned_duration(copy):
 def test_a_replay_of_changed_vessel_files_is_refused(tmp_path):
     """The signature covers the log's bytes, and the header names the vessel's RAO table by its sha256: a table
     changed since the session would replay other physics under a verified log."""
-    from test_inputs_overwrite import SCENARIO
+    from test_atomic_overwrite import SCENARIO
 
     shutil.copytree(ROOT / "rao" / "tanker", tmp_path / "tanker")
     simulation = Simulation(load_scenario(write(tmp_path, SCENARIO.format(duration=20.0), "s.toml")), wake=False)

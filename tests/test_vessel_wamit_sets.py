@@ -27,7 +27,7 @@ from marinesim.vessel.write import write_wamit
 TANKER = ROOT / "rao" / "tanker"
 IEA = ROOT / "tests" / "data" / "iea15"
 PEAK_SHARE = 0.01
-"""Largest |computed - WAMIT .4| as a share of the DOF's largest |RAO| (tests/test_wamit_forces.py)."""
+"""Largest |computed - WAMIT .4| as a share of the DOF's largest |RAO| (tests/test_vessel_wamit_forces.py)."""
 
 
 def copy_set(folder: Path, suffixes=(".1", ".3", ".hst", ".frc", ".cfg", ".gdf")) -> Path:
@@ -219,7 +219,7 @@ def test_a_wamit_7_2_report_without_the_density_is_read_with_1025(tmp_path):
     of the header, solved with the hull's mass, gives the RAOs of the report as printed (same rho), with a note;
     it was refused for the missing line. The density scales the report's forces and added mass against the
     scenario's mass: another would change every RAO."""
-    from test_wamit_out import VOLTURN
+    from test_vessel_wamit_out import VOLTURN
 
     text = lzma.decompress((IEA / "IEA-15-240-RWT-UMaineSemi.out.xz").read_bytes()).decode()
     assert "Water density:" in text and "1025." in text.split("Water density:")[1].split()[0]

@@ -23,7 +23,7 @@ Source convention, converted here once (:func:`aqwa_to_internal`):
   prints both, they are checked to agree and one is kept.
 * ``PHASE`` is a phase *lag* in degrees relative to the wave at the reference point: the response is
   ``A cos(w t - PHASE)``, so marinesim's (lead) RAO is ``A exp(-i PHASE)``. Evidence (the WEC-Sim
-  cylinder, ``tests/test_reader_aqwa.py``): at 0.04 rad/s, waves along +X, surge prints phase +90 and
+  cylinder, ``tests/test_vessel_reader_aqwa.py``): at 0.04 rad/s, waves along +X, surge prints phase +90 and
   pitch -90; marinesim's long-wave limits are surge ``-i / tanh(kh)`` (phase -90) and pitch ``+i k``.
 * Rotations are in degrees per metre of wave amplitude (pitch / k -> 57.3 at long waves): converted to
   rad/m. Translations are m/m.

@@ -142,10 +142,10 @@ def mutate_bytes(data: bytes, rng: random.Random) -> bytes:
 # --- sources -----------------------------------------------------------------------------------------------
 
 def small_capytaine_file(folder: Path) -> Path:
-    """A small barge solved by Capytaine (tests/test_inputs_fuzz_more.py), written as NetCDF."""
+    """A small barge solved by Capytaine (tests/test_formats_fuzz_more.py), written as NetCDF."""
     import capytaine
 
-    from test_inputs_fuzz_more import small_capytaine_dataset
+    from test_formats_fuzz_more import small_capytaine_dataset
 
     path = folder / "barge.nc"
     capytaine.export_dataset(path, small_capytaine_dataset())
@@ -505,7 +505,7 @@ def snapshot(folder: Path) -> dict[str, bytes]:
 
 def tanker_scenario(folder: Path) -> Path:
     """The WAMIT tanker set copied into ``folder``/tanker and a short scenario ``s.toml`` naming it."""
-    from test_inputs_overwrite import SCENARIO
+    from test_atomic_overwrite import SCENARIO
 
     shutil.copytree(ROOT / "rao" / "tanker", folder / "tanker")
     path = folder / "s.toml"

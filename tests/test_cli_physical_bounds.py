@@ -20,7 +20,7 @@ import pytest
 from conftest import HANG_S, ROOT, wait_for
 from test_cli_operability import FOLLOWER, HAND_SCATTER
 from test_criteria_spectral import constant_heave
-from test_inputs_bounds import TANKER_HULL, TANKER_RAO, marinesim, refused, scenario
+from test_cli_bounds import TANKER_HULL, TANKER_RAO, marinesim, refused, scenario
 
 SUPPLY_HULL = ROOT / "hulls" / "supply_hull.stl"
 S175 = ROOT / "rao" / "s175" / "input.re1"

@@ -1,4 +1,4 @@
-"""Fuzzing the registered formats that tests/test_inputs_fuzz.py leaves out: Capytaine NetCDF and the
+"""Fuzzing the registered formats that tests/test_formats_fuzz.py leaves out: Capytaine NetCDF and the
 meshes trimesh reads (STL binary and ASCII, PLY, OFF, glTF binary). Same contract: every reader returns
 a valid object or raises a one-line :class:`MarinesimError`, never another exception, and ends (a read that
 has not ended after :data:`~conftest.HANG_S` fails as a hang; no deadline of a few seconds, which a loaded machine

@@ -81,7 +81,7 @@ def test_conversion_function():
 
 def test_the_partial_heading_set_makes_a_table_of_what_it_covers(cylinder):
     """Only 0 and 180 deg: a partial table covering each +-15 deg, answering head seas with the listing's own
-    180 deg RAOs (a sea it does not cover is refused when a run meets it: test_rao_partial_headings.py)."""
+    180 deg RAOs (a sea it does not cover is refused when a run meets it: test_vessel_rao_partial_headings.py)."""
     table = read_aqwa(CYLINDER)
     assert table.covered_text() == "165..195 deg (tabulated 180), 345..15 deg (tabulated 0)"
     head = list(cylinder.headings_deg).index(180.0)
