@@ -99,36 +99,42 @@ def test_the_time_domain_check_runs_on_a_cluster_and_resumes(follower, tmp_path,
     assert again.returncode == 0, again.stderr
 
 
-@pytest.mark.parametrize("limit,period_h,alpha,expected", [(0.5, 24.0, 0.73, 30.0), (0.75, 24.0, 0.745, 75.0),
-                                                           (0.75, 12.5, 0.745, 75.0), (0.75, 6.0, 0.775, 75.0),
-                                                           (1.5, 72.0, 0.72, 100.0)])
-def test_the_forecast_limit_is_the_alpha_of_the_reference_period_at_the_design_hs(follower, tmp_path, capsys,
-                                                                                    limit, period_h, alpha, expected):
-    """DNV's base case by hand: the design Hs is 4 x the heave limit; alpha is the table's row for T_R (a row
-    holds up to its hours: 12.5 h takes the 24 h row, 6 h the 12 h row), linear between its Hs columns
-    (3 m: halfway between 2 and 4 m; 6 m: the 6 m column). Operability counts the cells below alpha x 4 L:
-    2 m x 0.73 = 1.46 m keeps only Hs 1 (30 of 100); 3 m x 0.745 = 2.2 m keeps Hs 1 and 2."""
+@pytest.mark.parametrize("limit,period_h,alpha,expected", [(0.5, 24.0, 0.73, 30.0), (0.5, 20.0, 0.73, 30.0),
+                                                           (0.75, 24.0, 0.745, 75.0), (0.75, 12.5, 0.745, 75.0),
+                                                           (0.75, 6.0, 0.775, 75.0), (1.5, 72.0, 0.72, 100.0),
+                                                           (2.0, 72.0, 0.72, 100.0), (2.0, 24.0, 0.78, 100.0)])
+def test_the_forecast_limit_is_the_alpha_of_the_planned_period_at_the_design_hs(follower, tmp_path, capsys,
+                                                                                  limit, period_h, alpha, expected):
+    """DNV-OS-H101 Table 4-1 base case by hand: the design Hs is 4 x the heave limit; alpha is the table's row
+    for T_POP (a row holds up to its hours: 20 h and 12.5 h take the 24 h row, 6 h the 12 h row), linear between
+    its Hs columns (3 m: halfway between 2 and 4 m; 6 m: the 6 m column; 8 m: still the 6 m column, which the
+    standard holds for Hs >= 6 m). Operability counts the cells below alpha x 4 L: 2 m x 0.73 = 1.46 m keeps
+    only Hs 1 (30 of 100); 3 m x 0.745 = 2.2 m keeps Hs 1 and 2. A wrong row or an extrapolated column would
+    change the limiting Hs written to the file."""
     scenario = follower(limit)
     assert main(["operability", str(scenario), "--scatter", str(tmp_path / "site.csv"), "--out",
-                 str(tmp_path / "out"), "--headings", "0,180", "--reference-period-h", str(period_h), "--json"]) == 0
+                 str(tmp_path / "out"), "--headings", "0,180", "--planned-period-h", str(period_h), "--json"]) == 0
     result = json.loads(capsys.readouterr().out)
     assert result["operability_pct"] == {"0": expected, "180": expected}
     with xr.open_dataset(tmp_path / "out" / "operability.nc", engine="scipy") as data:
         np.testing.assert_allclose(data["limiting_hs_m_all"], alpha * 4 * limit, rtol=2e-4)
-        assert data.attrs["reference_period_h"] == period_h
+        assert data.attrs["planned_period_h"] == period_h
         assert data.attrs["alpha_table"].endswith("dnv_base_case.csv")
 
 
 @pytest.mark.parametrize("args,words", [
-    (["--scatter", "site.csv", "--reference-period-h", "96"], "--reference-period-h"),
-    (["--scatter", "site.csv", "--alpha-table", "site.csv"], "--alpha-table needs --reference-period-h"),
-    (["--scatter", "site.csv", "--reference-period-h", "24", "--alpha-table", "site.csv"], "reference_period_h"),
+    (["--scatter", "site.csv", "--planned-period-h", "72.5"], "--planned-period-h (T_POP) must be in (0, 72] h"),
+    (["--scatter", "site.csv", "--planned-period-h", "96"], "not weather-restricted"),
+    (["--scatter", "site.csv", "--alpha-table", "site.csv"], "--alpha-table needs --planned-period-h"),
+    (["--scatter", "site.csv", "--planned-period-h", "24", "--alpha-table", "site.csv"], "planned_period_h"),
     (["--scatter", "missing.csv"], "missing.csv"),
     (["--scatter", "site.csv", "--headings", "0:360:0"], "--headings"),
     (["--scatter", "site.csv", "--alpha", "1.5"], "--alpha"),
     (["--scatter", "site.csv", "--duration-h", "0"], "--duration-h"),
 ])
 def test_bad_input_is_one_line_and_exit_2(follower, tmp_path, args, words, capsys, monkeypatch):
+    """Each mistake (T_POP past the table, --alpha-table without a T_POP, a file that is no alpha table, a missing
+    file, bad headings, alpha or duration) must be one line naming what to fix, exit 2, not a traceback."""
     scenario = follower(0.5)
     monkeypatch.chdir(tmp_path)
     assert main(["operability", str(scenario), "--out", str(tmp_path / "out"), *args]) == 2

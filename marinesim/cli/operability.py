@@ -30,12 +30,12 @@ def add(commands: argparse._SubParsersAction) -> None:
     alpha = p.add_mutually_exclusive_group()
     alpha.add_argument("--alpha", type=float, default=1.0,
                        help="DNV-ST-N001 alpha factor: every limiting Hs times it (forecast uncertainty; default 1)")
-    alpha.add_argument("--reference-period-h", type=float, metavar="T_R",
-                       help="the operation's reference period T_POP + T_C, h: alpha from the alpha table at T_R "
-                            "and each limiting Hs")
+    alpha.add_argument("--planned-period-h", type=float, metavar="T_POP",
+                       help="the operation's planned period T_POP, h (without contingency; at most 72 h in the "
+                            "base case): alpha from the alpha table's row for T_POP at each limiting Hs")
     p.add_argument("--alpha-table", type=Path,
-                   help="alpha table CSV for --reference-period-h (default configs/alpha/dnv_base_case.csv, the "
-                        "DNV-OS-H101 / DNV-ST-N001 base case)")
+                   help="alpha table CSV for --planned-period-h (default configs/alpha/dnv_base_case.csv, the "
+                        "base case of DNV-OS-H101 Table 4-1 / DNV-ST-N001 Table 2-1)")
     p.add_argument("--time-domain", type=int, metavar="SEEDS",
                    help="also simulate SEEDS records of every selected cell at every heading (Dask)")
     p.add_argument("--cells", help="scatter cells (0-based rows) for --time-domain, comma list (default all)")
@@ -72,12 +72,12 @@ def handle(args: argparse.Namespace) -> int:
                         args.duration_h)
     log = (lambda line: print(line, file=sys.stderr)) if args.json else print
     alpha_table = None
-    if args.reference_period_h is not None:
+    if args.planned_period_h is not None:
         alpha_table = read_alpha_table(args.alpha_table or default_table())
     elif args.alpha_table is not None:
-        raise ParameterError("--alpha-table needs --reference-period-h (the operation's T_POP + T_C, h)")
-    estimates, result = run.evaluate(study, args.alpha, alpha_table, args.reference_period_h)
-    attrs = run.attributes(study, args.alpha, alpha_table, args.reference_period_h)
+        raise ParameterError("--alpha-table needs --planned-period-h (the operation's T_POP, h)")
+    estimates, result = run.evaluate(study, args.alpha, alpha_table, args.planned_period_h)
+    attrs = run.attributes(study, args.alpha, alpha_table, args.planned_period_h)
     extra = None
     if args.time_domain is not None:
         cells = (np.arange(study.scatter.hs.size) if args.cells is None
@@ -96,7 +96,7 @@ def handle(args: argparse.Namespace) -> int:
         for line in table(study, result):
             log(line)
         if alpha_table is not None:
-            log(f"limits are forecast limits: alpha of {args.reference_period_h:g} h at each limiting Hs from "
+            log(f"limits are forecast limits: alpha of T_POP {args.planned_period_h:g} h at each limiting Hs from "
                 f"{alpha_table.source}")
         elif args.alpha != 1.0:
             log(f"limits are forecast limits: alpha {args.alpha:g}")

@@ -151,21 +151,22 @@ def frequency_domain(study: Study) -> spectral.SpectralCriteria:
 
 
 def evaluate(study: Study, alpha: float = 1.0, table: AlphaTable | None = None,
-             reference_period_h: float | None = None) -> tuple[spectral.SpectralCriteria, Operability]:
+             planned_period_h: float | None = None) -> tuple[spectral.SpectralCriteria, Operability]:
     """The spectral criteria and the operability they give with forecast limits: every limiting Hs times
-    ``alpha`` (in (0, 1]), or with ``table`` the alpha of ``reference_period_h`` at that limiting Hs
+    ``alpha`` (in (0, 1]), or with ``table`` the alpha of the planned operation period ``planned_period_h``
+    (T_POP, h) at that limiting Hs
     (DNV-ST-N001's alpha factor, :mod:`marinesim.study.alpha`)."""
     if not 0.0 < alpha <= 1.0:
         raise ParameterError(f"--alpha must be in (0, 1], got {alpha!r}")
     estimates = frequency_domain(study)
     limiting = alpha * estimates.limiting_hs(np.array([c.limit for c in study.criteria], float))
     if table is not None:
-        limiting = table.forecast_limit(reference_period_h, limiting)
+        limiting = table.forecast_limit(planned_period_h, limiting)
     return estimates, operability(limiting, study.tp, study.headings_deg, study.scatter, study.cell_tp)
 
 
 def attributes(study: Study, alpha: float, table: AlphaTable | None = None,
-               reference_period_h: float | None = None) -> dict:
+               planned_period_h: float | None = None) -> dict:
     """The inputs and settings a study's files name (paths, sha256, spectrum shape, alpha factor)."""
     vessel = study.scenario.vessel
     spectrum = study.system.spectrum
@@ -178,7 +179,7 @@ def attributes(study: Study, alpha: float, table: AlphaTable | None = None,
             "duration_h": study.duration_s / 3600.0, "alpha": alpha,
             "scatter_period": study.scatter.period_kind,
             **({} if table is None else {"alpha_table": table.source, "alpha_table_sha256": sha256(Path(table.source)),
-                                         "reference_period_h": reference_period_h})}
+                                         "planned_period_h": planned_period_h})}
 
 
 def fingerprint(study: Study, attrs: dict, seeds: int, cells: np.ndarray, record_s: float) -> str:
