@@ -54,7 +54,7 @@ def main() -> None:
         puffs.append(len(spray.puffs))
     ms = 1e3
     print(f"{platform.processor() or platform.machine()}, {args.frames} frames of 1/60 s, "
-          f"{len(sim.response(0).components)} wave components, puffs in flight: median {np.median(puffs):.0f}, "
+          f"{len(sim.response_now().components)} wave components, puffs in flight: median {np.median(puffs):.0f}, "
           f"max {max(puffs)}")
     print(f"pose (baseline): median {np.median(pose) * ms:.2f} ms")
     print(f"spray update:    median {np.median(update) * ms:.2f} ms, mean {np.mean(update) * ms:.2f} ms, "

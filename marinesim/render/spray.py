@@ -9,19 +9,24 @@ derivative of the water's height over the stem's point on the calm waterline, li
 motion of a point: the incident sea along the stem's path (met at the encounter frequency) less the stem's heave
 and pitch, taken while the water is at the bow (between the forefoot and the deck). From :data:`SPRAY_ONSET` of
 the threshold on, a plunge sweeps up the flare and throws :data:`SLAM_PUFFS_PER_S`
-``x ((v / v_th)^2 - SPRAY_ONSET^2)`` puffs a second up and out from it, on top of the stem's own velocity, at
-Wagner's (1932) jet speed ``pi v / (2 tan beta)`` for a flare at ``beta`` 20-40 deg to the water.
+``x ((v / v_th)^2 - SPRAY_ONSET^2)`` puffs a second up and out from it, on top of the stem's own velocity. The
+flare meets the water as a wedge of deadrise ``beta`` 20-40 deg entering at ``v``: the spray root (where the water
+piles up against it) runs along it at ``(pi / 2) v cot(beta)`` (small ``beta``: Wagner 1932, Z. Angew. Math. Mech.
+12:193-215), and the jet leaves it at twice the root's speed relative to the body, ``pi v cot(beta)`` (Zhao &
+Faltinsen 1993, J. Fluid Mech. 246:593-612; :func:`jet_speed`).
 
 Spindrift. From Beaufort 8 (17.2 m/s at 10 m), when "edges of crests begin to break into spindrift" (WMO),
 crests within :data:`SPINDRIFT_RADIUS_M` of the vessel shed puffs at a rate proportional to the whitecap
 cover ``W = 3.84e-6 U^3.41`` (Monahan & O'Muircheartaigh 1980), faded in over Beaufort 8.
 
-A puff is drops of one size: their drag time ``tau`` is their terminal fall speed over g (Gunn & Kinzer 1949: a
-sheet breaks into drops of about 3 mm, 8.1 m/s; spindrift 0.4 mm, 1.6 m/s). They follow
-``dv/dt = -g z + (w - v) / tau`` with ``w`` the wind at 10 m (E frame), integrated exactly over each step for a
-steady wind, so the path does not depend on the frame rate. A puff spreads as it flies and is gone when it
-falls half a metre below the still water level or after :data:`LIFE_S`. The stream is seeded by the run's seed
-and the time: the same run gives the same spray.
+A puff is drops of one size, known by their terminal fall speed ``v_t`` (Gunn & Kinzer 1949: a sheet breaks into
+drops of about 3 mm, 8.06 m/s; spindrift 0.4 mm, 1.62 m/s). Their Reynolds number is far from Stokes's (3 mm at
+8 m/s: about 1600; 0.4 mm at 1.6 m/s: about 40), so the drag is taken as quadratic in the speed relative to the
+air, ``dv/dt = -g z - g |v - w| (v - w) / v_t^2`` with ``w`` the wind at 10 m (E frame): it balances gravity at
+``v_t`` (:func:`flown`). The puffs are stepped on the run's clock, :data:`STEP_S` at a time from their birth
+(which is on it too), and a frame shows them flown on from the last step: the path does not depend on the
+frame rate. A puff spreads as it flies and is gone when it falls half a metre below the still water level or
+after :data:`LIFE_S`. The stream is seeded by the run's seed and the time: the same run gives the same spray.
 """
 
 from __future__ import annotations
@@ -44,9 +49,9 @@ SPRAY_ONSET = 0.5
 """The bow throws spray from this fraction of the slamming threshold on: a plunge that sweeps up the flare."""
 SLAM_PUFFS_PER_S = 1000.0
 """Puffs a second for each unit of ``(v / v_th)^2 - SPRAY_ONSET^2``: at the threshold, 750 a second."""
-DROP_TAU_S, SPINDRIFT_TAU_S = 8.06 / G, 1.62 / G
-"""Drag time (s) of 3 mm drops (bow spray: a sheet breaks into large drops) and 0.4 mm drops (spindrift): their
-terminal speed over g (Gunn & Kinzer 1949)."""
+DROP_TERMINAL_M_S, SPINDRIFT_TERMINAL_M_S = 8.06, 1.62
+"""Terminal fall speed (m/s) in still air of 3 mm drops (bow spray: a sheet breaks into large drops) and 0.4 mm
+drops (spindrift) (Gunn & Kinzer 1949)."""
 BEAUFORT_8_M_S, BEAUFORT_9_M_S = 17.2, 20.8
 SPINDRIFT_RADIUS_M = 150.0
 SPINDRIFT_PUFFS_PER_M2_S = 0.01
@@ -60,7 +65,7 @@ LIFE_S = 6.0
 MAX_PUFFS = 4096
 """Most puffs in flight (the sprite buffer's size): the oldest go first."""
 STEP_S = 1.0 / 30.0
-"""The births' clock: puffs are born at multiples of it (their flight in between is exact)."""
+"""The puffs' clock: they are born at multiples of it and flown a step at a time (:func:`flown`)."""
 WARM_UP_S = 4.0
 """A jump in time (a first frame, a seek) starts the spray this long before, so that a still shows it in flight."""
 STEM_BLOCK = 32
@@ -72,13 +77,13 @@ BOW_REACH = 0.05
 
 @dataclass
 class Puffs:
-    """The puffs in flight: E-frame position (n, 3) and velocity (n, 3) (m, m/s), age (s), drag time (s), kind
-    (0 bow spray, 1 spindrift)."""
+    """The puffs in flight: E-frame position (n, 3) and velocity (n, 3) (m, m/s), age (s), terminal fall speed of
+    their drops (m/s), kind (0 bow spray, 1 spindrift)."""
 
     position: np.ndarray
     velocity: np.ndarray
     age: np.ndarray
-    tau: np.ndarray
+    terminal: np.ndarray
     kind: np.ndarray
 
     @classmethod
@@ -93,22 +98,55 @@ class Puffs:
         """These puffs and ``other``'s, the oldest of these dropped beyond :data:`MAX_PUFFS`."""
         keep = max(MAX_PUFFS - len(other), 0)
         return Puffs(*(np.concatenate([a[-keep:] if keep else a[:0], b]) for a, b in
-                       zip((self.position, self.velocity, self.age, self.tau, self.kind),
-                           (other.position, other.velocity, other.age, other.tau, other.kind))))
+                       zip((self.position, self.velocity, self.age, self.terminal, self.kind),
+                           (other.position, other.velocity, other.age, other.terminal, other.kind))))
 
     def where(self, keep: np.ndarray) -> Puffs:
         """The puffs where ``keep`` (n,) bool is true."""
-        return Puffs(self.position[keep], self.velocity[keep], self.age[keep], self.tau[keep], self.kind[keep])
+        return Puffs(self.position[keep], self.velocity[keep], self.age[keep], self.terminal[keep], self.kind[keep])
 
 
-def flown(position: np.ndarray, velocity: np.ndarray, tau: np.ndarray, wind: np.ndarray, h: float
+def flown(position: np.ndarray, velocity: np.ndarray, terminal: np.ndarray, wind: np.ndarray, h: float
           ) -> tuple[np.ndarray, np.ndarray]:
-    """Position and velocity (n, 3) after ``h`` s of ``dv/dt = -g z + (wind - v) / tau`` (exact for a steady wind;
-    ``wind`` (3,) m/s, ``tau`` (n,) s)."""
-    terminal = wind[None, :] - np.outer(G * tau, (0.0, 0.0, 1.0))
-    decay = np.exp(-h / tau)[:, None]
-    return (position + terminal * h + (velocity - terminal) * tau[:, None] * (1.0 - decay),
-            terminal + (velocity - terminal) * decay)
+    """Position and velocity (n, 3) (E frame, m, m/s) after ``h`` s of ``dv/dt = -g z - g |u| u / v_t^2``,
+    ``u = v - wind``, for drops of terminal fall speed ``terminal`` (n,) (m/s) in a steady ``wind`` (3,) (m/s).
+
+    In ``ceil(h / STEP_S)`` equal steps, each half of gravity's kick, the exact flow of the drag alone (``u`` keeps
+    its direction, its size ``s0 / (1 + g s0 t / v_t^2)``, the drop going ``ln(1 + g s0 t / v_t^2) v_t^2 / g``
+    along it while the wind carries it) and the other half: Strang splitting, second order and stable however
+    strong the drag."""
+    steps = math.ceil(h / STEP_S)
+    if steps <= 0:
+        return position, velocity
+    k = h / steps
+    kick = np.array([0.0, 0.0, 0.5 * G * k])
+    drag = (G * k / terminal ** 2)[:, None]
+    for _ in range(steps):
+        u = velocity - kick - wind
+        slowing = drag * np.linalg.norm(u, axis=1, keepdims=True)
+        travel = np.ones_like(slowing)
+        np.divide(np.log1p(slowing), slowing, out=travel, where=slowing > 0.0)
+        position = position + (wind + u * travel) * k
+        velocity = wind + u / (1.0 + slowing) - kick
+    return position, velocity
+
+
+def jet_speed(rising: float, deadrise: float | np.ndarray) -> float | np.ndarray:
+    """Speed (m/s) relative to the body of the jet thrown by a wedge of ``deadrise`` (rad) entering the water at
+    ``rising`` (m/s): twice the spray root's ``(pi / 2) rising cot(deadrise)`` (Wagner 1932; Zhao & Faltinsen
+    1993)."""
+    root = 0.5 * math.pi * rising / np.tan(deadrise)
+    return 2.0 * root
+
+
+def flying(puffs: Puffs, h: float, wind: np.ndarray) -> Puffs:
+    """``puffs`` :func:`flown` ``h`` s on in ``wind`` (3,) (m/s), those that fell half a metre into the sea or lived
+    :data:`LIFE_S` gone."""
+    if not len(puffs) or h <= 0.0:
+        return puffs
+    position, velocity = flown(puffs.position, puffs.velocity, puffs.terminal, wind, h)
+    p = Puffs(position, velocity, puffs.age + h, puffs.terminal, puffs.kind)
+    return p.where((p.age < LIFE_S) & (p.position[:, 2] > -0.5))
 
 
 def whitecap_fraction(u10: float) -> float:
@@ -156,39 +194,32 @@ class Spray:
         self.sim, self.bow = sim, bow
         self.puffs = Puffs.none()
         self.time: float | None = None
+        self._stepped, self._step = Puffs.none(), 0   # the puffs at the step ``_step STEP_S`` of the run's clock
         self._crest_set: tuple[Leg, Components, float] | None = None
         self._stem: tuple[Response, np.ndarray] | None = None
 
     def update(self, wind: np.ndarray) -> None:
         """Move the puffs on to the simulation's time in ``wind`` (3,) (E frame, m/s at 10 m); a jump (the first
         call, a seek, a step back) starts afresh :data:`WARM_UP_S` before. Puffs are born on the steps
-        ``k STEP_S`` of the run's clock, each step's from its own seeded stream, and fly exactly in between: the
-        same run gives the same spray whatever the frame rate."""
+        ``k STEP_S`` of the run's clock, each step's from its own seeded stream, and flown from step to step; the
+        frame shows them flown on from the last step: the same run gives the same spray whatever the frame
+        rate."""
         t = self.sim.time
         if self.time is None or t < self.time or t - self.time > WARM_UP_S:
-            self.puffs, self.time = Puffs.none(), max(t - WARM_UP_S, 0.0)
-        first, last = math.floor(self.time / STEP_S) + 1, math.floor(t / STEP_S)
+            self._stepped, self._step = Puffs.none(), math.floor(max(t - WARM_UP_S, 0.0) / STEP_S)
+        first, last = self._step + 1, math.floor(t / STEP_S)
         steps = np.arange(first, last + 1)
         stem = (self.at_stem(first * STEP_S, STEP_S, len(steps)) if len(steps) and self.bow is not None
                 and self.sim.vessel is not None else None)
         for i, k in enumerate(steps):
-            self._fly(k * STEP_S - self.time, wind)
-            self.time = k * STEP_S
+            self._stepped = flying(self._stepped, STEP_S, wind)
             rng = np.random.default_rng([self.sim.scenario.run.seed, 7, int(k)])
             if stem is not None:
-                self._bow_spray(self.time, stem[i], rng)
-            self._spindrift(self.time, wind, rng)
-        self._fly(t - self.time, wind)
+                self._bow_spray(k * STEP_S, stem[i], rng)
+            self._spindrift(k * STEP_S, wind, rng)
+        self._step = last
+        self.puffs = flying(self._stepped, t - self._step * STEP_S, wind)
         self.time = t
-
-    def _fly(self, h: float, wind: np.ndarray) -> None:
-        """The puffs ``h`` s on; those that fell half a metre into the sea or lived :data:`LIFE_S` are gone."""
-        p = self.puffs
-        if len(p) and h > 0.0:
-            position, velocity = flown(p.position, p.velocity, p.tau, wind, h)
-            p = Puffs(position, velocity, p.age + h, p.tau, p.kind)
-            self.puffs = p.where((p.age < LIFE_S) & (p.position[:, 2] > -0.5))
-
 
     def _crests(self) -> tuple[Components, float]:
         """The newest leg's largest wave components, :data:`CREST_VARIANCE` of its variance (where the crests are),
@@ -247,15 +278,17 @@ class Spray:
         body = np.c_[-rng.uniform(0.0, bow.reach_m, n), side * bow.half_breadth_m * rng.uniform(0.3, 1.0, n),
                      np.full(n, max(height, 0.0))]          # from the stem
         elevation = np.radians(rng.uniform(45.0, 75.0, n))
-        speed = rising * math.pi / (2.0 * np.tan(np.radians(rng.uniform(20.0, 40.0, n))))  # Wagner's jet
-        launch = np.c_[0.2 * speed, side * speed * np.cos(elevation), speed * np.sin(elevation)]
+        up_and_out = np.c_[np.full(n, 0.2), side * np.cos(elevation), np.sin(elevation)]
+        speed = jet_speed(rising, np.radians(rng.uniform(20.0, 40.0, n)))
+        launch = speed[:, None] * up_and_out / np.linalg.norm(up_and_out, axis=1, keepdims=True)
         pose = self.sim.pose(t)
         rotation = pose.matrix()[:3, :3]
         u = self.sim.velocity()
         at = pose.world(bow.stem[None, :])[0]
         at[2] = stem_z
-        self.puffs = self.puffs.joined(Puffs(at + body @ rotation.T, np.array([*u, stem_vz]) + launch @ rotation.T,
-                                             np.zeros(n), np.full(n, DROP_TAU_S), np.zeros(n, np.int8)))
+        velocity = np.array([*u, stem_vz]) + launch @ rotation.T
+        self._stepped = self._stepped.joined(Puffs(at + body @ rotation.T, velocity, np.zeros(n),
+                                                   np.full(n, DROP_TERMINAL_M_S), np.zeros(n, np.int8)))
 
     def _spindrift(self, t: float, wind: np.ndarray, rng: np.random.Generator) -> None:
         """Puffs torn off the crests around the vessel in the step from ``t`` (s) in ``wind`` (3,) (m/s)."""
@@ -281,5 +314,5 @@ class Spray:
             return
         position = np.c_[x[crest], y[crest], eta[crest] + 0.3]
         velocity = np.outer(rng.uniform(0.3, 0.8, n), wind) + np.c_[np.zeros((n, 2)), rng.uniform(0.5, 2.0, n)]
-        self.puffs = self.puffs.joined(Puffs(position, velocity, np.zeros(n), np.full(n, SPINDRIFT_TAU_S),
-                                             np.ones(n, np.int8)))
+        self._stepped = self._stepped.joined(Puffs(position, velocity, np.zeros(n),
+                                                   np.full(n, SPINDRIFT_TERMINAL_M_S), np.ones(n, np.int8)))
