@@ -56,8 +56,12 @@ def test_assess_prints_a_table(tmp_path):
     lines = done.stdout.splitlines()
     assert any("ALARM roll_rms_deg" in line for line in lines), "the alarm is logged as it is raised"
     head = next(i for i, line in enumerate(lines) if line.startswith("criterion"))
-    assert lines[head].split() == ["criterion", "worst", "limit", "unit", "level", "above", "limit", "first", "above"]
-    assert lines[head + 1].split()[:5] == ["roll_rms_deg", lines[head + 1].split()[1], "0.001", "deg", "exceeded"]
+    assert lines[head].split() == ["criterion", "worst", "limit", "unit", "level", "above", "limit", "first", "above",
+                                   "expected", "percentile", "chance", "above", "limit"]
+    row = lines[head + 1].split()
+    assert row[:5] == ["roll_rms_deg", row[1], "0.001", "deg", "exceeded"]
+    assert float(row[-4]) == pytest.approx(float(row[1]), rel=0.5), "the sea's expected RMS roll, near the run's"
+    assert 0 <= int(row[-3]) <= 100 and row[-2:] == [">99", "%"], "a limit of 0.001 deg is passed whatever the seed"
     assert lines[-1] == "verdict: exceeded"
 
 

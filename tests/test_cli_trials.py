@@ -43,11 +43,11 @@ def test_json_has_exactly_the_imo_trials_of_the_kvlcc2(tmp_path, capsys):
 
 
 def test_a_scenario_is_trialled_from_its_speed_and_a_vessel_on_station_is_refused(tmp_path, capsys):
-    """The heavy-weather transit's S175 at her 15 kn (the table names the approach); the semisubmersible held on
+    """The heavy-weather transit's S175 at her 10 kn (the table names the approach); the semisubmersible held on
     station has no manoeuvring model: one line, exit 2."""
     assert main(["trials", str(ROOT / "configs" / "training" / "heavy_weather_transit.toml"), "--quiet"]) == 0
     out = capsys.readouterr().out
-    assert out.startswith("S175: L 175.0 m, approach 15.00 kn, calm water") and "IMO MSC.137(76): " in out
+    assert out.startswith("S175: L 175.0 m, approach 10.00 kn, calm water") and "IMO MSC.137(76): " in out
     assert main(["trials", str(ROOT / "configs" / "training" / "helideck_landing.toml"), "--quiet"]) == 2
     error = capsys.readouterr().err.strip()
     assert error.endswith("no manoeuvring model to trial") and "\n" not in error

@@ -134,6 +134,6 @@ def test_windows_are_bounded_before_anything_is_kept():
 def test_every_quantity_has_a_unit_and_a_meaning():
     """The panel and the report print them; a quantity without would print a bare number."""
     for name, measure in QUANTITIES.items():
-        assert measure.what and (measure.unit or name.endswith("exceedance")), name
+        assert measure.what and (measure.unit or name.endswith(("exceedance", "probability"))), name
         assert (measure.value is None) == (measure.dose is not None), name
     assert Options().tipping_coefficient == 0.25

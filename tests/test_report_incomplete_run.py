@@ -1,5 +1,5 @@
-"""A run stopped early is not a pass. The shipped crane lift, shortened to 300 s, run as a session to its end
-is debriefed as before; the same session closed at 60 s (20 %) is debriefed INCOMPLETE, says how much of it
+"""A run stopped early is not a pass. The shipped crane lift, shortened to 300 s and with an objective judged by
+each of its three criteria, run as a session to its end is debriefed as before; the same session closed at 60 s (20 %) is debriefed INCOMPLETE, says how much of it
 ran and marks each objective it could not judge NOT JUDGED; with the roll limit made tight enough to be
 exceeded in the first minute, that objective stays NOT MET and the verdict EXCEEDED. Real runs, real logs,
 the real ``marinesim report`` and ``replay``; the header looked at in Chromium."""
@@ -66,25 +66,43 @@ def objective_verdicts(page: str) -> list[str]:
     return re.findall(r"<span class='badge \w+'>([^<]*)</span></td></tr>", briefing)
 
 
-@pytest.fixture(scope="module")
-def tight(tmp_path_factory):
-    """The crane lift with its roll limit at :data:`TIGHT_ROLL_DEG`, its files named from the checkout."""
+OBJECTIVES = "objectives = [\n" + "".join(
+    f'    {{ text = "{text}", criteria = ["{name}"] }},\n' for text, name in (
+        ("Lift only while the crane tip's vertical velocity is within its limit", "crane tip vertical velocity"),
+        ("Keep the crane tip's vertical acceleration within its limit", "crane tip vertical acceleration"),
+        ("Keep the roll within the deck-cargo limit", "roll"))) + "]"
+
+
+def crane_lift(folder, roll_limit_deg: float | None = None):
+    """The crane lift with :data:`OBJECTIVES`, its roll limit at ``roll_limit_deg`` if given, its files named from the
+    checkout: its path in ``folder``."""
     text = CRANE_LIFT.read_text(encoding="utf-8").replace('"../../', f'"{ROOT}/')
-    roll = text.index('name = "roll"')
-    text = text[:roll] + text[roll:].replace("limit = 4.0", f"limit = {TIGHT_ROLL_DEG}", 1)
-    path = tmp_path_factory.mktemp("tight") / "crane_lift_tight_roll.toml"
+    start = text.index("objectives = [")
+    text = text[:start] + OBJECTIVES + text[text.index("]", text.index("\n]", start)) + 1:]
+    if roll_limit_deg is not None:
+        roll = text.index('name = "roll"')
+        text = text[:roll] + re.sub(r"limit = [0-9.]+", f"limit = {roll_limit_deg}", text[roll:], count=1)
+    path = folder / "crane_lift.toml"
     path.write_text(text, encoding="utf-8")
     return path
 
 
 @pytest.fixture(scope="module")
+def tight(tmp_path_factory):
+    """The crane lift with its roll limit at :data:`TIGHT_ROLL_DEG`."""
+    return crane_lift(tmp_path_factory.mktemp("tight"), TIGHT_ROLL_DEG)
+
+
+@pytest.fixture(scope="module")
 def full(tmp_path_factory):
-    return session(CRANE_LIFT, tmp_path_factory.mktemp("full"), PLANNED_S)
+    folder = tmp_path_factory.mktemp("full")
+    return session(crane_lift(folder), folder, PLANNED_S)
 
 
 @pytest.fixture(scope="module")
 def early(tmp_path_factory):
-    return session(CRANE_LIFT, tmp_path_factory.mktemp("early"), STOP_S)
+    folder = tmp_path_factory.mktemp("early")
+    return session(crane_lift(folder), folder, STOP_S)
 
 
 def test_the_share_that_ran_in_words():

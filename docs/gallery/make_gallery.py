@@ -24,7 +24,7 @@ from marinesim.sea.seastate import scaled_sea
 
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parents[1]
-AT_S = {"heavy_weather_transit": 300.0, "helideck_landing": 920.0}
+AT_S = {"heavy_weather_transit": 1200.0, "helideck_landing": 1200.0}
 """When to take the picture (s): an exercise's moment to show, else a minute in."""
 NORTH_SEA = {"latitude_deg": 60.5, "longitude_deg": 2.0}
 
@@ -52,7 +52,8 @@ class Shot:
 
 SHOTS = (
     Shot("helideck_panels", "training/helideck_landing.toml", "The helideck landing at the pitch alarm with the "
-         "HUD's full panels (TAB): every criterion, the motions' strip charts.", at_s=920.0, hud="panels"),
+         "HUD's full panels (TAB): every criterion with its expected value and percentile, the motions' strip charts.",
+         at_s=900.0, hud="panels"),
     Shot("night_tanker_port_bow", "default.toml", "The tanker at night from her port bow: masthead lights, red "
          "sidelight, a waxing moon.", air={"time_utc": datetime(2026, 11, 22, 21, 0, tzinfo=timezone.utc),
                                            **NORTH_SEA}, azimuth_deg=200.0, elevation_deg=6.0),
@@ -67,15 +68,15 @@ SHOTS = (
               **NORTH_SEA}, azimuth_deg=140.0, elevation_deg=10.0),
     Shot("fog_bridge", "default.toml", "Fog from the tanker's bridge: visibility 800 m, overcast; her lights are "
          "lit (restricted visibility).", camera="bridge", air={"visibility_m": 800.0, "cloud_cover_oktas": 8.0}),
-    Shot("gale_transit", "training/heavy_weather_transit.toml", "The transit's gale at 900 s: Hs 6.5 m, "
-         "Beaufort 8 streaks, 7 oktas, 4 km visibility.", at_s=900.0),
+    Shot("gale_transit", "training/heavy_weather_transit.toml", "The transit's gale at 1200 s: Hs 9 m, "
+         "Beaufort 9 streaks, 7 oktas, 4 km visibility.", at_s=1200.0),
     Shot("storm_s175", "s175_heavy_weather.toml", "The S175 in a storm: the sea doubled, 24 m/s of wind (Beaufort "
          "9), overcast.", air={"wind_speed_m_s": 24.0, "cloud_cover_oktas": 8.0, "visibility_m": 5000.0},
          elevation_deg=12.0, hs_factor=2.0),
     Shot("turn_s175_bridge", "training/heavy_weather_transit.toml", "The S175 turning: 20 deg of starboard rudder "
          "ordered at 30 s, 65 s later; the conning line reads her heading, hand steering, the rudder, her rate of "
          "turn, "
-         "the rpm set for 15 kn, her speed and course over ground (her bow 8 deg inside her track); she heels 5 deg "
+         "the rpm set for 10 kn, her speed and course over ground (her bow 7 deg inside her track); she heels 3 deg "
          "outward, to port.", camera="bridge", at_s=95.0, orders=((30.0, {"rudder_deg": 20.0}),)),
     Shot("turn_s175_orbit", "training/heavy_weather_transit.toml", "The same moment from astern: she swings to "
          "starboard (her wash and wake are drawn straight astern of her, as on a straight course).", at_s=95.0,

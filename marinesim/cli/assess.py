@@ -48,9 +48,10 @@ def table(result: Assessment) -> list[str]:
     """The assessment as text lines: one per criterion, then the verdict; a run stopped early says how much of it
     ran, and the level of each criterion it could not judge is marked so."""
     from marinesim.criteria.monitor import value_and_limit
-    from marinesim.session.exercise import ran_words
+    from marinesim.session.exercise import ran_words, share_words
 
-    rows = [("criterion", "worst", "limit", "unit", "level", "above limit", "first above")]
+    rows = [("criterion", "worst", "limit", "unit", "level", "above limit", "first above", "expected", "percentile",
+             "chance above limit")]
     for c in result.criteria:
         if c.value is None:
             worst, limit = "settling", f"{c.limit:.3g}"
@@ -58,9 +59,15 @@ def table(result: Assessment) -> list[str]:
             worst, limit = value_and_limit(c.value, c.limit)
         first = "-" if c.first_exceeded_s is None else f"{c.first_exceeded_s:.0f} s"
         level = c.level.value if c.judged else f"{c.level.value} (not judged)"
-        rows.append((c.name, worst, limit, c.unit or "-", level, f"{c.time_exceeded_s:.0f} s", first))
+        rows.append((c.name, worst, limit, c.unit or "-", level, f"{c.time_exceeded_s:.0f} s", first,
+                     "-" if c.expected is None else f"{c.expected:.3g}",
+                     "-" if c.percentile is None else f"{c.percentile:.0f}",
+                     "-" if c.chance_exceeded is None else share_words(c.chance_exceeded)))
     widths = [max(len(row[i]) for row in rows) for i in range(len(rows[0]))]
     lines = [f"{result.scenario}: {result.duration_s:g} s at dt {result.dt_s:g} s, seed {result.seed}"]
+    if any(c.expected is not None for c in result.criteria):
+        lines.append("expected: the worst value's median over seeds in the sea met (docs/FORMULAS.md); percentile: "
+                     "where this run's worst falls among seeds")
     if not result.complete:
         lines.append(f"stopped early: ran {ran_words(result.duration_s, result.planned_s)}")
     lines += ["  ".join(cell.ljust(width) for cell, width in zip(row, widths)).rstrip() for row in rows]

@@ -44,10 +44,6 @@ def handle(args: argparse.Namespace) -> int:
     note = outside_table_note(result.outside_table)
     if note is not None:
         print(note)
-    if scenario.vessel is not None:
-        for note in scenario.vessel.rao.notes:
-            if note.startswith("implausible"):
-                print(f"note: {note}")
     for note in scenario.notes:
         print(f"note: {note}")
     return 0

@@ -159,6 +159,8 @@ def watched(condition: Condition, criteria: list[Criterion], points: dict) -> Cr
         raise ParameterError(f"{condition.subject!r} is neither a criterion ({', '.join(c.label for c in criteria) or 'none'})"
                              f" nor a quantity (known: {', '.join(QUANTITIES)})")
     check_point(quantity, point, points)
+    if "threshold_m" in QUANTITIES[quantity].options:
+        raise ParameterError(f"{quantity} needs a threshold_m: name a [[criteria]] entry that gives it")
     return Criterion(quantity, point=point)
 
 

@@ -18,6 +18,7 @@ lateral and normal specific force in the deck frame (:func:`~marinesim.criteria.
 | ``heave_rate_significant_m_s`` | 2 x RMS vertical velocity (helideck monitoring) | :mod:`.helideck` |
 | ``mahr_m_s`` | maximum average heave rate (helideck monitoring) | :mod:`.helideck` |
 | ``relative_motion_exceedance`` | Rayleigh probability per oscillation that the relative motion exceeds ``threshold_m`` | :mod:`.statistics` |
+| ``slamming_probability`` | probability per oscillation that the relative motion crosses ``threshold_m`` faster than ``threshold_velocity_m_s`` (Ochi 1964) | :func:`slamming_probability` |
 | ``msi_pct`` | motion sickness incidence, 2 h (O'Hanlon & McCauley 1974) | :mod:`.sickness` |
 | ``msdv_m_s1_5`` | motion sickness dose value over the run (ISO 2631-1, W_f) | :mod:`.sickness` |
 | ``mii_per_min`` | motion-induced interruptions, lateral tipping (Graham 1990) | :mod:`.interruptions` |
@@ -26,11 +27,13 @@ lateral and normal specific force in the deck frame (:func:`~marinesim.criteria.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
 import numpy as np
 
+from marinesim.constants import G
 from marinesim.criteria import helideck, interruptions, sickness, statistics
 
 WINDOW_S = 600.0
@@ -43,15 +46,23 @@ STATION_QUANTITIES = ("offset_max_m",)
 """Quantities of a vessel keeping station only (her record has their columns)."""
 LATERAL, NORMAL = "{p}_lateral_sf_m_s2", "{p}_normal_sf_m_s2"
 """The derived series: a point's specific force along the deck's y and z axes (m/s^2)."""
+OCHI_THRESHOLD = 0.093
+"""Ochi's (1964) slamming threshold velocity over sqrt(g L), L the ship's length."""
+
+
+def ochi_threshold_velocity(length_m: float) -> float:
+    """Ochi's slamming threshold velocity ``0.093 sqrt(g L)`` (m/s) for a ship of length ``length_m`` (m)."""
+    return OCHI_THRESHOLD * math.sqrt(G * length_m)
 
 
 @dataclass(frozen=True)
 class Options:
-    """A criterion's options a quantity may read: ``threshold_m`` (relative motion) and the
-    ``tipping_coefficient`` l/h (interruptions)."""
+    """A criterion's options a quantity may read: ``threshold_m`` (relative motion, m), the
+    ``tipping_coefficient`` l/h (interruptions) and ``threshold_velocity_m_s`` (slamming, m/s)."""
 
     threshold_m: float | None = None
     tipping_coefficient: float = interruptions.DEFAULT_TIPPING_COEFFICIENT
+    threshold_velocity_m_s: float | None = None
 
 
 @dataclass(frozen=True)
@@ -103,6 +114,32 @@ def _exceedance(series: list[np.ndarray], dt: float, options: Options) -> float:
     return statistics.rayleigh_exceedance(statistics.rms(series[0]), options.threshold_m)
 
 
+def relative_velocity(relative: np.ndarray, dt: float) -> np.ndarray:
+    """The rate (m/s) of a relative motion record ``relative`` (m, sampled every ``dt`` s) at its samples but the
+    first and last two: the fourth-order central difference ``(r[i-2] - 8 r[i-1] + 8 r[i+1] - r[i+2]) / (12 dt)``,
+    which gives a sinusoid of frequency w its rate times ``1 - (w dt)^4 / 30`` (1e-5 at w dt = 0.13)."""
+    r = np.asarray(relative, float)
+    return (r[:-4] - 8.0 * r[1:-3] + 8.0 * r[3:-1] - r[4:]) / (12.0 * dt)
+
+
+def slamming_probability(relative: np.ndarray, dt: float, threshold_m: float, threshold_velocity_m_s: float) -> float:
+    """Probability per oscillation (zero-upcrossing) that a zero-mean Gaussian relative motion ``relative`` (m, every
+    ``dt`` s) crosses ``threshold_m`` upwards faster than ``threshold_velocity_m_s`` (m/s), as many times as it
+    comes back down through it faster (Ochi's slam, at the re-entry): Rice's rate of those crossings over the
+    zero-upcrossing rate, ``exp(-T^2 / (2 sigma_r^2)) exp(-v^2 / (2 sigma_v^2))`` (the motion and its rate are
+    independent at one instant), sigma_r and sigma_v the RMS of the record and of its rate
+    (:func:`relative_velocity`); NaN for fewer than 5 samples."""
+    if np.size(relative) < 5:
+        return math.nan
+    emergence = statistics.rayleigh_exceedance(statistics.rms(relative), threshold_m)
+    return emergence * statistics.rayleigh_exceedance(statistics.rms(relative_velocity(relative, dt)),
+                                                      threshold_velocity_m_s)
+
+
+def _slamming(series: list[np.ndarray], dt: float, options: Options) -> float:
+    return slamming_probability(series[0], dt, options.threshold_m, options.threshold_velocity_m_s)
+
+
 def _mii(series: list[np.ndarray], dt: float, options: Options) -> float:
     return interruptions.mii_per_minute(series[0], series[1], dt, options.tipping_coefficient)
 
@@ -130,6 +167,9 @@ QUANTITIES: dict[str, Measure] = {
     "relative_motion_exceedance": Measure("", "probability the relative motion exceeds threshold_m",
                                           ("{p}_relative_m",), _exceedance, at_point=True,
                                           options=("threshold_m",)),
+    "slamming_probability": Measure("", "probability the relative motion crosses threshold_m faster than "
+                                        "threshold_velocity_m_s", ("{p}_relative_m",), _slamming,
+                                    at_point=True, options=("threshold_m", "threshold_velocity_m_s")),
     "msi_pct": Measure("%", "motion sickness incidence (2 h)", ("{p}_az_m_s2",),
                        lambda series, dt, options: sickness.msi_of_record(series[0], dt), at_point=True),
     "msdv_m_s1_5": Measure("m/s^1.5", "motion sickness dose value", ("{p}_az_m_s2",), at_point=True, dose=Dose),

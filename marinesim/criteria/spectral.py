@@ -15,7 +15,8 @@ The response series (small angles, as the criteria read them; REFERENCES section
 - a point p's vertical motion ``z = x3 + y_p x4 - x_p x5``, its velocity ``i w_e z``, acceleration ``-w_e^2 z``;
 - its lateral specific force in the deck frame ``a_y + g x4`` with ``a_y = -w_e^2 (x2 + x_p x6 - z_p x4)``
   (static roll phi gives g sin phi, :mod:`.interruptions`);
-- its motion relative to the incident wave at its mean position, ``z - exp(-i k (x_p cos b + y_p sin b))``;
+- its motion relative to the incident wave at its mean position, ``z - exp(-i k (x_p cos b + y_p sin b))`` (the
+  relative velocity's variance is that series' m2);
 - the W_f-weighted vertical acceleration, ``|W_f(w_e / 2 pi)|^2`` on the acceleration's spectrum.
 
 Short-term statistics of a zero-mean Gaussian response (sigma = sqrt(m0), Tz = 2 pi sqrt(m0 / m2)):
@@ -28,6 +29,7 @@ Short-term statistics of a zero-mean Gaussian response (sigma = sqrt(m0), Tz = 2
 | ``heave_rate_significant_m_s`` | 2 sigma of the vertical velocity | linear |
 | ``mahr_m_s`` | most probable largest oscillation height 2 sigma sqrt(2 ln N) over half of Tz (narrow band) | linear |
 | ``relative_motion_exceedance`` | exp(-threshold^2 / (2 sigma^2)) (the record's formula) | not linear: limiting Hs in closed form |
+| ``slamming_probability`` | exp(-threshold^2 / (2 m0) - threshold_velocity^2 / (2 m2)) (the record's formula) | not linear: limiting Hs in closed form |
 | ``msi_pct`` | O'Hanlon & McCauley of mean abs(a) = sigma_a sqrt(2/pi) at sqrt(m2/m0) of the acceleration | not linear: limiting Hs in closed form |
 | ``msdv_m_s1_5`` | sqrt(duration x m0 of the W_f-weighted acceleration) | linear |
 | ``mii_per_min`` | none: interruptions count level crossings of a ratio of forces; run the time-domain check | - |
@@ -61,7 +63,10 @@ DEG = 180.0 / math.pi
 LINEAR = {"roll_rms_deg", "pitch_rms_deg", "heave_rms_m", "vertical_acc_rms_m_s2", "lateral_acc_rms_m_s2",
           "roll_max_deg", "pitch_max_deg", "vertical_velocity_max_m_s", "inclination_max_deg",
           "heave_rate_significant_m_s", "mahr_m_s", "msdv_m_s1_5"}
-NONLINEAR = {"relative_motion_exceedance", "msi_pct"}
+EXCEEDANCES = {"relative_motion_exceedance", "slamming_probability"}
+"""Probabilities ``exp(-E / (2 Hs^2))`` of the relative motion, E = threshold^2 / m0 (+ threshold_velocity^2 / m2 for
+slamming) with the moments at Hs 1 m."""
+NONLINEAR = EXCEEDANCES | {"msi_pct"}
 """Quantities the frequency domain estimates: proportional to Hs, or not (solved for the limiting Hs)."""
 
 
@@ -76,17 +81,19 @@ class SpectralCriteria:
     sigma1: np.ndarray
     omega: np.ndarray
 
+    def moments1(self, c: int) -> tuple[np.ndarray, np.ndarray]:
+        """m0, m2 (T, H) of criterion ``c``'s series at Hs 1 m (m2 nil where m0 is)."""
+        m0 = self.sigma1[..., c] ** 2
+        return m0, np.where(m0 > 0, m0 * self.omega[..., c] ** 2, 0.0)
+
     def value(self, hs: np.ndarray) -> np.ndarray:
         """Each criterion's value in seas of ``hs`` (T, H) m: (T, H, C)."""
-        hs = np.asarray(hs, float)[..., None]
-        out = self.value1 * hs
+        hs = np.asarray(hs, float)
+        out = self.value1 * hs[..., None]
         for c, criterion in enumerate(self.criteria):
-            sigma = self.sigma1[..., c] * hs[..., 0]
-            if criterion.quantity == "relative_motion_exceedance":
-                with np.errstate(divide="ignore"):
-                    out[..., c] = np.exp(-criterion.options.threshold_m ** 2 / (2.0 * sigma ** 2))
-            elif criterion.quantity == "msi_pct":
-                out[..., c] = np.vectorize(msi_percent)(sigma * math.sqrt(2.0 / math.pi), self.omega[..., c])
+            if criterion.quantity in NONLINEAR:
+                m0, m2 = self.moments1(c)
+                out[..., c] = value_from_moments(criterion, m0 * hs ** 2, m2 * hs ** 2, duration_s=0.0)
         return out
 
     def limiting_hs(self, limits: np.ndarray) -> np.ndarray:
@@ -96,10 +103,10 @@ class SpectralCriteria:
             out = np.where(self.value1 > 0, limits / self.value1, np.inf)
             for c, criterion in enumerate(self.criteria):
                 sigma, limit = self.sigma1[..., c], limits[c]
-                if criterion.quantity == "relative_motion_exceedance":
-                    # exp(-t^2 / (2 Hs^2 sigma^2)) <= p  <=>  Hs <= t / (sigma sqrt(2 ln(1/p)))
+                if criterion.quantity in EXCEEDANCES:
+                    # exp(-E / (2 Hs^2)) <= p  <=>  Hs <= sqrt(E / (2 ln(1/p)))
                     out[..., c] = (np.inf if limit >= 1.0 else
-                                   criterion.options.threshold_m / (sigma * math.sqrt(2.0 * math.log(1.0 / limit))))
+                                   np.sqrt(_exponent(criterion, *self.moments1(c)) / (2.0 * math.log(1.0 / limit))))
                 elif criterion.quantity == "msi_pct":
                     # 100 Phi((log10(a/g) - mu) / 0.4) <= MSI  <=>  a <= g 10^(mu + 0.4 Phi^-1(MSI / 100))
                     mu = -0.819 + 2.32 * np.log10(self.omega[..., c]) ** 2
@@ -135,7 +142,7 @@ def criteria_at_unit_hs(rao: RaoTable, points: dict[str, tuple[float, float, flo
         grid_w, grid_b = np.meshgrid(omega, beta, indexing="ij")
         x = rao(grid_w.ravel(), grid_b.ravel(), speed_m_s).reshape(omega.size, beta.size, 6)  # (W, D, 6)
         omega_e = np.abs(omega[:, None] - speed_m_s * k[:, None] * np.cos(beta)[None, :])     # (W, D)
-        series = _Series(x, omega_e, k, beta, points, weight)
+        series = ResponseSeries(x, omega_e, k, beta, points, weight)
         for c, criterion in enumerate(criteria):
             value1[:, h, c], sigma1[:, h, c], upcrossing[:, h, c] = _estimate(criterion, series, duration_s)
     return SpectralCriteria(tuple(criteria), value1, sigma1, upcrossing)
@@ -153,7 +160,7 @@ def _directional(system: WaveSystem, tp: float, omega: np.ndarray, spread: np.nd
     return shaped.directional_density(grid_w, grid_t)
 
 
-class _Series:
+class ResponseSeries:
     """The transfer functions of one heading (W, D) and their spectral moments (T,) over ``weight``."""
 
     def __init__(self, x: np.ndarray, omega_e: np.ndarray, k: np.ndarray, beta: np.ndarray,
@@ -190,45 +197,68 @@ def _mpm(m0: np.ndarray, m2: np.ndarray, window_s: float) -> np.ndarray:
     return np.sqrt(m0) * np.sqrt(2.0 * np.log(np.maximum(count, 2.0)))
 
 
-def _estimate(criterion: Criterion, s: _Series, duration_s: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(value at Hs 1 m, sigma of its series, the series' zero-upcrossing frequency), each (T,)."""
-    q, p, window = criterion.quantity, criterion.point, criterion.window
+def transfers(criterion: Criterion, s: ResponseSeries) -> list[np.ndarray]:
+    """The transfer functions (W, D) of ``criterion``'s series to the wave, whose spectral moments add up to the
+    series' (one, or roll and pitch for the inclination)."""
+    q, p = criterion.quantity, criterion.point
     if q in ("roll_rms_deg", "pitch_rms_deg", "heave_rms_m", "roll_max_deg", "pitch_max_deg"):
-        m0, m2 = s.moments(s.dof({"roll": 3, "pitch": 4, "heave": 2}[q.split("_")[0]]))
-    elif q == "inclination_max_deg":
-        roll, pitch = s.moments(s.dof(3)), s.moments(s.dof(4))
-        m0, m2 = roll[0] + pitch[0], roll[1] + pitch[1]
-    elif q == "vertical_acc_rms_m_s2":
-        m0, m2 = s.moments(-s.omega_e ** 2 * s.vertical(p))
-    elif q == "msi_pct":
-        m0, m2 = s.moments(-s.omega_e ** 2 * s.vertical(p))
-    elif q == "msdv_m_s1_5":
-        m0, m2 = s.moments(-s.omega_e ** 2 * s.vertical(p) * wf_response(s.omega_e / (2.0 * math.pi)))
-    elif q in ("vertical_velocity_max_m_s", "heave_rate_significant_m_s"):
-        m0, m2 = s.moments(1j * s.omega_e * s.vertical(p))
-    elif q == "mahr_m_s":
-        m0, m2 = s.moments(s.vertical(p))
-    elif q == "lateral_acc_rms_m_s2":
-        m0, m2 = s.moments(s.lateral_force(p))
-    else:  # relative_motion_exceedance
-        m0, m2 = s.moments(s.relative(p))
+        return [s.dof({"roll": 3, "pitch": 4, "heave": 2}[q.split("_")[0]])]
+    if q == "inclination_max_deg":
+        return [s.dof(3), s.dof(4)]
+    if q in ("vertical_acc_rms_m_s2", "msi_pct"):
+        return [-s.omega_e ** 2 * s.vertical(p)]
+    if q == "msdv_m_s1_5":
+        return [-s.omega_e ** 2 * s.vertical(p) * wf_response(s.omega_e / (2.0 * math.pi))]
+    if q in ("vertical_velocity_max_m_s", "heave_rate_significant_m_s"):
+        return [1j * s.omega_e * s.vertical(p)]
+    if q == "mahr_m_s":
+        return [s.vertical(p)]
+    if q == "lateral_acc_rms_m_s2":
+        return [s.lateral_force(p)]
+    return [s.relative(p)]  # relative_motion_exceedance, slamming_probability
+
+
+def value_from_moments(criterion: Criterion, m0: np.ndarray, m2: np.ndarray, duration_s: float) -> np.ndarray:
+    """``criterion``'s spectral estimate (the table above) from the moments m0, m2 of its series (any shape);
+    ``duration_s`` the exposure of a dose (s)."""
+    q, window = criterion.quantity, criterion.window
+    m0, m2 = np.asarray(m0, float), np.asarray(m2, float)
     sigma = np.sqrt(m0)
     with np.errstate(divide="ignore", invalid="ignore"):
         omega = np.where(m0 > 0, np.sqrt(m2 / m0), np.nan)
     if q.endswith("_max_deg") or q == "vertical_velocity_max_m_s":
-        value = _mpm(m0, m2, window)
-    elif q == "heave_rate_significant_m_s":
-        value = 2.0 * sigma
-    elif q == "mahr_m_s":
-        value = 2.0 * _mpm(m0, m2, window) / (np.pi / np.where(omega > 0, omega, np.inf))
-    elif q == "msdv_m_s1_5":
-        value = np.sqrt(duration_s * m0)
-    elif q == "relative_motion_exceedance":
-        with np.errstate(divide="ignore"):
-            value = np.exp(-criterion.options.threshold_m ** 2 / (2.0 * m0))
-    elif q == "msi_pct":
-        value = np.array([msi_percent(a, w) if np.isfinite(w) else 0.0
-                          for a, w in zip(sigma * math.sqrt(2.0 / math.pi), omega)])
-    else:
-        value = sigma
-    return value, sigma, omega
+        return _mpm(m0, m2, window)
+    if q == "heave_rate_significant_m_s":
+        return 2.0 * sigma
+    if q == "mahr_m_s":
+        return 2.0 * _mpm(m0, m2, window) / (np.pi / np.where(omega > 0, omega, np.inf))
+    if q == "msdv_m_s1_5":
+        return np.sqrt(duration_s * m0)
+    if q in EXCEEDANCES:
+        return np.exp(-0.5 * _exponent(criterion, m0, m2))
+    if q == "msi_pct":
+        return np.vectorize(lambda a, w: msi_percent(a, w) if np.isfinite(w) else 0.0, otypes=[float])(
+            sigma * math.sqrt(2.0 / math.pi), omega)
+    return sigma
+
+
+def _exponent(criterion: Criterion, m0: np.ndarray, m2: np.ndarray) -> np.ndarray:
+    """E of an exceedance (:data:`EXCEEDANCES`), its probability being ``exp(-E / 2)``: ``threshold_m^2 / m0``, plus
+    ``threshold_velocity_m_s^2 / m2`` for slamming (Rice: the relative motion and its rate are independent Gaussians
+    of variances m0, m2); inf where a moment is nil."""
+    options = criterion.options
+    with np.errstate(divide="ignore"):
+        exponent = options.threshold_m ** 2 / m0
+        if criterion.quantity == "slamming_probability":
+            exponent = exponent + options.threshold_velocity_m_s ** 2 / m2
+    return exponent
+
+
+def _estimate(criterion: Criterion, s: ResponseSeries, duration_s: float
+              ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(value at Hs 1 m, sigma of its series, the series' zero-upcrossing frequency), each (T,)."""
+    moments = [s.moments(transfer) for transfer in transfers(criterion, s)]
+    m0, m2 = sum(m[0] for m in moments), sum(m[1] for m in moments)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        omega = np.where(m0 > 0, np.sqrt(m2 / m0), np.nan)
+    return value_from_moments(criterion, m0, m2, duration_s), np.sqrt(m0), omega

@@ -3,8 +3,9 @@
 A linear response in a stationary sea is a zero-mean Gaussian process: its RMS is sigma = sqrt(m0),
 its zero-upcrossings come every Tz = 2 pi sqrt(m0/m2) on average (Rice), and the amplitude of one
 oscillation of a narrow-band response is Rayleigh distributed, so the probability per oscillation
-that it exceeds h is exp(-h^2 / (2 sigma^2)) (Ochi 1964; the NORDFORSK 1987 slamming and deck
-wetness probabilities are defined this way). Records are 1-D arrays sampled every ``dt`` s.
+that it exceeds h is exp(-h^2 / (2 sigma^2)) (Ochi 1964: the NORDFORSK 1987 deck wetness probability, and the
+emergence that their slamming probability also asks a relative velocity of). Records are 1-D arrays sampled
+every ``dt`` s.
 """
 
 from __future__ import annotations

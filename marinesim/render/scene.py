@@ -60,6 +60,19 @@ def solver_wanted(ctx: moderngl.Context, choice: str) -> bool:
     return choice == "on" or (choice == "auto" and not is_software(ctx))
 
 
+PANEL_SHARE = 0.5
+"""The criteria panel takes at most this share of the target's width: beyond it the rows go without the expected
+values (a 640 px frame), which would cover the vessel."""
+
+
+def _reading(value: float | None, limit: float) -> tuple[str, str]:
+    """A criterion's value and its limit as the panel prints them: ``--`` while settling, 0 under 1e-4 of the limit,
+    else with the digits that tell them apart (:func:`~marinesim.criteria.monitor.value_and_limit`)."""
+    if value is None or abs(value) < 1e-4 * abs(limit):
+        return "--" if value is None else "0", f"{limit:.3g}"
+    return value_and_limit(value, limit)
+
+
 class Scene:
     """Draws ``scenario`` on ``ctx``: ``camera`` is one of :data:`CAMERAS`; the bridge camera
     sits on the scenario's point named ``bridge`` (else 10 m above the reference point)."""
@@ -154,9 +167,9 @@ class Scene:
                 self.hud.release()
                 self.hud = Hud(self.ctx, font_px_for(size))
             if self.panels:
-                lines, panel = self.hud_lines(size[0]), self.criteria_panel()
+                lines, panel = self.hud_lines(size[0]), self.criteria_panel(width=size[0])
             else:
-                lines, panel = self.strip_lines(size[0]), self.criteria_strip()
+                lines, panel = self.strip_lines(size[0]), self.criteria_strip(size[0])
             self.hud.draw(size, lines, self.charts(), help_lines, panel, self.exercise.messages(), self.banners(),
                           self.slider, self.footprint())
 
@@ -197,26 +210,39 @@ class Scene:
         """``keys`` (what a key does) after three spaces, in the window; nothing in a headless render."""
         return f"   {keys}" if self.interactive else ""
 
-    def criteria_panel(self, levels: tuple[Level, ...] = tuple(Level)) -> list[tuple[str, Level]]:
+    def criteria_panel(self, levels: tuple[Level, ...] = tuple(Level), width: int | None = None
+                       ) -> list[tuple[str, Level]]:
         """(text, level) rows of the criteria panel, those at ``levels``: name, latest value / limit and unit,
-        level. A value under 1e-4 of its limit reads 0 (a green-water probability of 1e-12 is none a crew
-        would see)."""
-        rows = []
-        readings = [reading for reading in self.exercise.readings() if reading[2] in levels]
-        width = max((len(c.label) for c, _, _ in readings), default=0)
-        for criterion, value, level in readings:
-            if value is None or abs(value) < 1e-4 * abs(criterion.limit):
-                shown, limit = "--" if value is None else "0", f"{criterion.limit:.3g}"
-            else:
-                shown, limit = value_and_limit(value, criterion.limit)
-            rows.append((f"{criterion.label:<{width}}  {shown:>8} / {limit:<6}"
-                         f"{criterion.measure.unit:<8}{level.value}", level))
-        return rows
+        level, and what the sea she meets makes of the window: its expected value (the median over seeds) and
+        the percentile of the latest value in that distribution (``exp 2.1 P64``), in columns as narrow as the
+        rows need; on a target ``width`` px wide where the rows would take more than :data:`PANEL_SHARE` of it,
+        without the expectation. A value under 1e-4 of its limit reads 0 (a green-water probability of 1e-12 is
+        none a crew would see)."""
+        cells = []
+        for i, (criterion, value, level) in enumerate(self.exercise.readings()):
+            if level not in levels:
+                continue
+            shown, limit = _reading(value, criterion.limit)
+            expected = self.exercise.expected_now(i)
+            odds = ""
+            if expected is not None:
+                odds = "exp " + _reading(expected.median, criterion.limit)[0]
+                odds += "" if value is None else f" P{min(expected.percentile(value), 99.0):.0f}"
+            cells.append(((criterion.label, shown, f"/ {limit}", criterion.measure.unit, level.value, odds), level))
+        if not cells:
+            return []
+        widths = [max(len(row[k]) for row, _ in cells) for k in range(6)]
+        if width is not None and (sum(widths) + 10) * self.hud.advance > PANEL_SHARE * width:
+            widths[5] = 0
+            cells = [((*row[:5], ""), level) for row, level in cells]
+        return [("  ".join(cell.rjust(width) if k == 1 else cell.ljust(width)
+                           for k, (cell, width) in enumerate(zip(row, widths))).rstrip(), level)
+                for row, level in cells]
 
-    def criteria_strip(self) -> list[tuple[str, Level]]:
-        """The criteria in the compact strip: each one at caution or exceeded as in the panel, else one row
-        counting them by level, coloured by the worst."""
-        alert = self.criteria_panel((Level.CAUTION, Level.EXCEEDED))
+    def criteria_strip(self, width: int | None = None) -> list[tuple[str, Level]]:
+        """The criteria in the compact strip: each one at caution or exceeded as in the panel (on a target ``width``
+        px wide), else one row counting them by level, coloured by the worst."""
+        alert = self.criteria_panel((Level.CAUTION, Level.EXCEEDED), width)
         levels = [level for _, _, level in self.exercise.readings()]
         if alert or not levels:
             return alert

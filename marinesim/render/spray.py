@@ -37,14 +37,13 @@ from dataclasses import dataclass
 import numpy as np
 
 from marinesim.constants import G
+from marinesim.criteria.quantities import ochi_threshold_velocity
 from marinesim.hull import Hull
 from marinesim.hull.waterplane import waterline_loops
 from marinesim.sea.ocean import Components
 from marinesim.session.timeline import Leg, Simulation
 from marinesim.vessel.response import Response
 
-OCHI_THRESHOLD = 0.093
-"""Slamming threshold velocity over sqrt(g L) (Ochi 1964)."""
 SPRAY_ONSET = 0.5
 """The bow throws spray from this fraction of the slamming threshold on: a plunge that sweeps up the flare."""
 SLAM_PUFFS_PER_S = 1000.0
@@ -262,7 +261,7 @@ class Spray:
 
     def threshold_m_s(self) -> float:
         """Ochi's slamming threshold velocity (m/s) for this bow."""
-        return OCHI_THRESHOLD * math.sqrt(G * self.bow.length_m)
+        return ochi_threshold_velocity(self.bow.length_m)
 
     def _bow_spray(self, t: float, stem: np.ndarray, rng: np.random.Generator) -> None:
         """Puffs thrown in the step from ``t`` (s), ``stem`` being :meth:`at_stem`'s row for ``t``."""

@@ -22,6 +22,7 @@ from marinesim.criteria.monitor import Criterion, Level
 from marinesim.criteria.sickness import MAX_WF_DT_S
 from marinesim.scenario import Scenario
 from marinesim.sea.seastate import SeaState
+from marinesim.session.decisions import judge
 from marinesim.session.exercise import AlarmResult, CriterionResult, EventResult, Exercise, ran_words
 from marinesim.session.log import SessionLog
 from marinesim.session.sidecar import sha256
@@ -41,7 +42,7 @@ class Series:
     value: list[float | None]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class CriterionTrace(CriterionResult):
     """A criterion's result over the run with its running value at every evaluation."""
 
@@ -54,12 +55,13 @@ class CriterionTrace(CriterionResult):
 
 @dataclass(frozen=True)
 class Objective:
-    """An objective of the briefing, the names of the criteria that judge it, and its verdict (:data:`VERDICTS`, or
-    "not judged")."""
+    """An objective of the briefing, the names of the criteria that judge it (or its decision is about), its verdict
+    (:data:`VERDICTS`, or "not judged") and, for a decision (:mod:`~marinesim.session.decisions`), why."""
 
     text: str
     criteria: list[str]
     verdict: str
+    why: str = ""
 
 
 @dataclass(frozen=True)
@@ -188,10 +190,14 @@ def debrief(exercise: Exercise, log: SessionLog | None = None) -> Debrief:
     briefing = None
     if scenario.briefing is not None:
         objectives = []
-        for text, names in scenario.briefing.objectives:
-            worst = max((levels[name] for name in names), default=Level.SETTLING)
+        for objective in scenario.briefing.objectives:
+            if objective.decision is not None:
+                judged = judge(exercise, objective)
+                objectives.append(Objective(objective.text, list(objective.criteria), judged.verdict, judged.why))
+                continue
+            worst = max((levels[name] for name in objective.criteria), default=Level.SETTLING)
             verdict = VERDICTS[worst] if result.complete or worst is Level.EXCEEDED else "not judged"
-            objectives.append(Objective(text, list(names), verdict))
+            objectives.append(Objective(objective.text, list(objective.criteria), verdict))
         briefing = Briefing(scenario.briefing.text, objectives)
     messages = [Message(h.time_s, h.event.message, "event") for h in exercise.happened if h.event.message]
     messages += [Message(t, text, "instructor") for t, text in exercise.said]

@@ -26,6 +26,7 @@ from pathlib import Path
 from marinesim.atomic import atomic_path
 from marinesim.criteria.monitor import Level
 from marinesim.report.debrief import Conditions, Debrief, LogCheck
+from marinesim.session.exercise import share_words
 from marinesim.report.plots import (CAUTION, EXCEEDED, NM, NONE, OK, STATION_M, clock, compass, criterion_png,
                                     footprint_png, handling_png, number, station_use_png, timeline_png, track_png,
                                     with_unit)
@@ -223,7 +224,8 @@ class _Page:
         out += [f"<p>{_reflow(p)}</p>" for p in paragraphs]
         objectives = briefing.objectives
         if objectives:
-            rows = [(_td(str(i), "num"), _td(_e(o.text)),
+            rows = [(_td(str(i), "num"),
+                     _td(_e(o.text) + (f"<br><span class='muted'>{_e(o.why)}</span>" if o.why else "")),
                      _td(_e(", ".join(o.criteria)) or "<span class='muted'>—</span>"),
                      _td(_badge(o.verdict or "no value")))
                     for i, o in enumerate(objectives, start=1)]
@@ -259,6 +261,10 @@ class _Page:
                 bits.append(f"{criterion.time_exceeded_s:.0f} s above the limit")
             if mine:
                 bits.append(f"{len(mine)} alarm{'s' if len(mine) > 1 else ''}")
+            if criterion.expected is not None:
+                bits.append(f"expected {with_unit(criterion.expected, unit)} in this sea"
+                            + (f", this run at the {_ordinal(criterion.percentile)} percentile"
+                               if criterion.percentile is not None else ""))
             caption = (f"{_level_badge(criterion.reading)} <b>{_e(criterion.name)}</b>"
                        f"<span>{_e(' · '.join(bits))}</span>")
             out.append(f"<figure>{_img(png, alt)}<figcaption>{caption}</figcaption></figure>")
@@ -280,12 +286,25 @@ class _Page:
                          _td("—" if limit is None else _e(with_unit(limit, unit)), "num"),
                          _td("—" if above is None else f"{above:.0f} s", "num"), _td(share, "num"),
                          _td(str(alarms), "num"), _td(self.clock(c.first_exceeded_s), "num")))
+        odds = [(_td(f"<b>{_e(c.name)}</b>"), _td("—" if c.value is None else _e(with_unit(c.value, c.unit)), "num"),
+                 _td("—" if c.limit is None else _e(with_unit(c.limit, c.unit)), "num"),
+                 _td(_e(with_unit(c.expected, c.unit)), "num"),
+                 _td("—" if c.percentile is None else _ordinal(c.percentile), "num"),
+                 _td("—" if c.chance_exceeded is None else _e(share_words(c.chance_exceeded)), "num"))
+                for c in self.criteria if c.expected is not None]
+        sea = ("<h3>What the sea made of it</h3>\n<p class='intro'>The same run's worst values against the sea the "
+               "vessel met, from the spectral estimate (docs/FORMULAS.md): <i>expected</i>, the median worst over "
+               "seeds; <i>percentile</i>, where this run's worst falls among seeds; <i>chance above the limit</i>, "
+               "how often the worst goes above it in that sea. A verdict at a high percentile owes more to the draw "
+               "of the waves than to the sea state.</p>\n"
+               + _table(("criterion", ("worst", "num"), ("limit", "num"), ("expected", "num"), ("percentile", "num"),
+                         ("chance above the limit", "num")), odds)) if odds else ""
         return ("<section id='statistics'>\n<h2>Exceedance statistics</h2>\n"
                 f"<p class='intro'>Times are elapsed {'h:min:s' if self.long else 'min:s'} from the start of the "
                 "run; the share is of the whole run.</p>\n"
                 + _table(("criterion", "level", ("worst", "num"), ("at", "num"), ("limit", "num"),
                           ("time above limit", "num"), ("share of run", "num"), ("alarms", "num"),
-                          ("first above", "num")), rows) + "\n</section>")
+                          ("first above", "num")), rows) + "\n" + sea + "\n</section>")
 
     def ship_section(self) -> str:
         """The ship's track over the ground and her handling (heading, speed, rudder, propeller), with a vessel."""
@@ -512,6 +531,13 @@ def _badge(verdict: str, extra: str = "") -> str:
     """``verdict`` (an overall or an objective's verdict) on its colour: green, amber, red, grey."""
     kind = BADGES.get(verdict, "none")
     return f"<span class='badge {kind}{' ' + extra if extra else ''}'>{_e(verdict)}</span>"
+
+
+def _ordinal(percentile: float) -> str:
+    """A percentile in words: '3rd', '64th', '99th' (rounded, within 1 to 99)."""
+    n = int(min(max(round(percentile), 1), 99))
+    suffix = "th" if 10 <= n % 100 <= 20 else {1: "st", 2: "nd", 3: "rd"}.get(n % 10, "th")
+    return f"{n}{suffix}"
 
 
 def _level_badge(reading: Level | None) -> str:

@@ -241,6 +241,10 @@ class VesselOptions(Section):
 
     rao: str = Field(description="RAO file (" + ", ".join(f"{f.name} {' '.join(f.extensions) or 'by content'}"
                                                           for f in formats("rao")) + ")")
+    rao_speeds_kn: Annotated[list[Annotated[float, Quantity("kn", ge=0.0, le=MAX_SPEED_KN)]] | None,
+                             Field(min_length=1, max_length=100)] = Field(
+        None, description="the RAO table's speeds to use, each one of the table's (absent: all): leave out a speed "
+                          "whose data are screened as non-physical, and say why in a comment")
     speed_kn: Annotated[float, Quantity("kn", ge=0.0, le=MAX_SPEED_KN)] = Field(
         0.0, description="speed, within the RAO table's speeds if it has several")
     heading_deg: Annotated[float, Quantity("deg", ge=0.0, le=360.0, what="a compass heading")] = Field(
@@ -513,6 +517,10 @@ class EventOptions(Section):
         return self
 
 
+SCRIPTED_SHARE = 0.8
+"""The least share of seeds in which an exercise's scripted outcome must hold (``[[criteria]] scripted``)."""
+
+
 class CriterionOptions(Section):
     """``[[criteria]]``: a quantity of the motions, at a point or of the vessel, against a limit."""
 
@@ -527,16 +535,24 @@ class CriterionOptions(Section):
     caution: Annotated[float, Quantity(gt=0.0, le=1.0)] = Field(
         CAUTION, description="fraction of the limit that raises a caution")
     threshold_m: Annotated[float | None, Quantity("m", gt=0.0)] = Field(
-        None, description="relative_motion_exceedance: freeboard (green water) or draft (slamming)")
+        None, description="relative_motion_exceedance: freeboard (green water) or draft (the forefoot's emergence); "
+                          "slamming_probability: draft at the point")
+    threshold_velocity_m_s: Annotated[float | None, Quantity("m/s", gt=0.0)] = Field(
+        None, description="slamming_probability: relative velocity of a slam; absent: Ochi's 0.093 sqrt(g L), L the "
+                          "ship's length")
     tipping_coefficient: Annotated[float | None, Quantity(gt=0.0, le=2.0)] = Field(
         None, description="mii_per_min: l/h of a standing person; absent: 0.25")
+    scripted: Literal["exceeded", "within"] | None = Field(
+        None, description=f"what the exercise is built to show with no action from the trainee: the criterion above "
+                          f"its limit, or within it, in at least {SCRIPTED_SHARE:.0%} of seeds (the assessment's "
+                          f"chance says how likely in the sea met)")
 
     @model_validator(mode="after")
     def _options_fit_the_quantity(self) -> CriterionOptions:
         if self.name is not None and any(op in self.name for op in "<>"):
             raise _refuse("name", "a criterion's name cannot hold < or > (conditions compare names)")
         takes = QUANTITIES[self.quantity].options
-        for key in ("threshold_m", "tipping_coefficient"):
+        for key in ("threshold_m", "tipping_coefficient", "threshold_velocity_m_s"):
             if getattr(self, key) is not None and key not in takes:
                 raise _refuse(key, f"{self.quantity} takes no {key}")
         if "threshold_m" in takes and self.threshold_m is None:
@@ -544,12 +560,36 @@ class CriterionOptions(Section):
         return self
 
 
+DECISIONS = {
+    "acknowledge": "every alarm of its criteria (of all criteria if it names none) acknowledged within within_s",
+    "act_before": "a course or speed order given before the expectation of one of its criteria (the median of "
+                  "its window's value in the sea she meets) passes the limit",
+}
+"""The decisions an objective may judge, in words."""
+
+
 class ObjectiveOptions(Section):
-    """One of ``[briefing] objectives``: what the trainee is to achieve, judged by the criteria it names."""
+    """One of ``[briefing] objectives``: what the trainee is to achieve, judged by the criteria it names (met: none
+    exceeded), or a decision the trainee is to take, judged from the session's journal (:data:`DECISIONS`)."""
 
     text: Annotated[str, Field(min_length=1, max_length=400)] = Field(description="the objective, as briefed")
     criteria: Annotated[list[str], Field(max_length=MAX_CRITERIA)] = Field(
-        default_factory=list, description="names of [[criteria]] that judge it (met: none exceeded)")
+        default_factory=list, description="names of [[criteria]] that judge it (met: none exceeded); for a "
+                                          "decision, the criteria it is about")
+    decision: Literal[tuple(DECISIONS)] | None = Field(
+        None, description="judge a decision instead: " + "; ".join(f"{k}: {v}" for k, v in DECISIONS.items()))
+    within_s: Annotated[float | None, Quantity("s", gt=0.0, le=3600.0)] = Field(
+        None, description="acknowledge: the longest an alarm may wait for its acknowledgement")
+
+    @model_validator(mode="after")
+    def _decision_has_what_it_needs(self) -> ObjectiveOptions:
+        if self.decision == "acknowledge" and self.within_s is None:
+            raise _refuse("within_s", "required by decision = 'acknowledge' (the longest an alarm may wait)")
+        if self.decision != "acknowledge" and self.within_s is not None:
+            raise _refuse("within_s", "only decision = 'acknowledge' takes it")
+        if self.decision == "act_before" and not self.criteria:
+            raise _refuse("criteria", "decision = 'act_before' needs the criteria whose expectation it is about")
+        return self
 
 
 class StationOptions(Section):
@@ -753,13 +793,21 @@ def reference() -> str:
     for name, section_field in ScenarioFile.model_fields.items():
         title = f"[[{name}]]" if get_origin(section_field.annotation) is list else f"[{name}]"
         for key, field in _model_in(section_field.annotation).model_fields.items():
-            quantity = _quantity([*field.metadata, field.annotation])
-            kind, choices = _type_name(field.annotation)
-            where, key = (f"[{name}.{key}]", "*name*") if get_origin(field.annotation) is dict else (title, key)
-            span = (quantity.span(unit=False).removeprefix("in ") or "any") if quantity else choices
-            rows.append(f"| `{where}` | `{key}` | {kind} | {quantity.unit if quantity else ''} | {span} | "
-                        f"{_default(field)} | {field.description} |")
+            where, shown = (f"[{name}.{key}]", "*name*") if get_origin(field.annotation) is dict else (title, key)
+            rows.append(_row(where, shown, field))
+            inner = [a for a in get_args(field.annotation) if isinstance(a, type) and issubclass(a, BaseModel)]
+            for sub_key, sub_field in (inner[0].model_fields.items() if inner else ()):  # a list of tables
+                rows.append(_row(f"{title} {key}[]", sub_key, sub_field))
     return "\n".join(rows) + "\n"
+
+
+def _row(where: str, key: str, field: Any) -> str:
+    """One key's row of :func:`reference`."""
+    quantity = _quantity([*field.metadata, field.annotation])
+    kind, choices = _type_name(field.annotation)
+    span = (quantity.span(unit=False).removeprefix("in ") or "any") if quantity else choices
+    return (f"| `{where}` | `{key}` | {kind} | {quantity.unit if quantity else ''} | {span} | {_default(field)} | "
+            f"{field.description} |")
 
 
 def _quantity(items: Any) -> Quantity | None:

@@ -18,7 +18,7 @@ from marinesim.angles import math_to_compass
 from marinesim.constants import KNOT
 from marinesim.criteria.interruptions import DEFAULT_TIPPING_COEFFICIENT
 from marinesim.criteria.monitor import Condition, Criterion, parse_condition
-from marinesim.criteria.quantities import STATION_QUANTITIES, Options
+from marinesim.criteria.quantities import QUANTITIES, STATION_QUANTITIES, Options, ochi_threshold_velocity
 from marinesim.errors import FileFormatError, MarinesimError, ScenarioError
 from marinesim.hull import Hull, VisualMesh, hydrostatics, load_hull, load_visual_mesh
 from marinesim.manoeuvring.ship import Ship
@@ -134,18 +134,29 @@ class Event:
 
 
 @dataclass(frozen=True)
-class Briefing:
-    """What the trainees are told (``text``) and the objectives: (text, names of the criteria that judge it)."""
+class Objective:
+    """An objective as briefed (``text``), the names of the criteria that judge it or that its ``decision`` is about
+    (:data:`~marinesim.scenario.model.DECISIONS`; None: met while none is exceeded), and a decision's ``within_s``."""
 
     text: str
-    objectives: tuple[tuple[str, tuple[str, ...]], ...] = ()
+    criteria: tuple[str, ...] = ()
+    decision: str | None = None
+    within_s: float | None = None
+
+
+@dataclass(frozen=True)
+class Briefing:
+    """What the trainees are told (``text``) and the objectives."""
+
+    text: str
+    objectives: tuple[Objective, ...] = ()
 
 
 @dataclass(frozen=True)
 class Scenario:
     """A validated scenario: the sea state, the ocean's options, the vessel (if any), the run, the
-    exercise's events (in file order) and criteria; ``notes``: lines for the user on what it asks of its files (a
-    table of one speed used far from it, :func:`_speed_notes`)."""
+    exercise's events (in file order) and criteria; ``notes``: lines for the user on what it asks of its files (the
+    RAO table's warnings, a table of one speed used far from it, :func:`_speed_notes`)."""
 
     path: Path
     sea: SeaState
@@ -158,6 +169,8 @@ class Scenario:
     environment: EnvironmentOptions = EnvironmentOptions()
     notes: tuple[str, ...] = ()
     station: StationSetup | None = None
+    scripted: tuple[tuple[str, str], ...] = ()
+    """(criterion name, "exceeded" or "within"): what the exercise is built to show (``[[criteria]] scripted``)."""
 
     @property
     def name(self) -> str:
@@ -235,17 +248,19 @@ def build_scenario(path: Path, file: ScenarioFile) -> Scenario:
         station = _station(path, file.station, vessel, depth)
         vessel = dataclasses.replace(vessel, ship=_station_vessel(station, vessel))
     events = tuple(_event(f"events[{i}]", e, depth, vessel) for i, e in enumerate(file.events))
-    criteria = tuple(_criterion(c) for c in file.criteria)
+    criteria = tuple(_criterion(f"criteria[{i}]", c, vessel) for i, c in enumerate(file.criteria))
     if station is not None and station.options.footprint_m is not None and not any(
             c.quantity in STATION_QUANTITIES for c in criteria):
         taken = {c.label for c in criteria}
         name = FOOTPRINT if FOOTPRINT not in taken else f"{FOOTPRINT} {station.footprint_m:g} m"
         criteria += (Criterion("offset_max_m", station.footprint_m, name=name),)
     briefing = None if file.briefing is None else Briefing(
-        file.briefing.text.strip(), tuple((o.text, tuple(o.criteria)) for o in file.briefing.objectives))
-    notes = () if vessel is None else _speed_notes(vessel, events)
+        file.briefing.text.strip(), tuple(Objective(o.text, tuple(o.criteria), o.decision, o.within_s)
+                                          for o in file.briefing.objectives))
+    notes = () if vessel is None else vessel.rao.warnings + _speed_notes(vessel, events)
+    scripted = tuple((c.label, options.scripted) for c, options in zip(criteria, file.criteria) if options.scripted)
     return Scenario(path.resolve(), sea, file.ocean, file.run, vessel, events, criteria, briefing, file.environment,
-                    notes, station)
+                    notes, station, scripted)
 
 
 def _station(path: Path, options: StationOptions, vessel: Vessel, depth: float) -> StationSetup:
@@ -356,10 +371,20 @@ def _event(where: str, options: EventOptions, depth: float, vessel: Vessel | Non
     return event
 
 
-def _criterion(options: CriterionOptions) -> Criterion:
+def _criterion(where: str, options: CriterionOptions, vessel: Vessel | None) -> Criterion:
+    """The criterion ``options`` (at ``where`` in the file) asks for; a slamming threshold velocity not given is
+    Ochi's for the ship's length (:func:`_length`)."""
     tipping = options.tipping_coefficient or DEFAULT_TIPPING_COEFFICIENT
+    velocity = options.threshold_velocity_m_s
+    if velocity is None and "threshold_velocity_m_s" in QUANTITIES[options.quantity].options:
+        length = None if vessel is None else _length(vessel)[0]
+        if length is None:
+            raise ScenarioError(f"{where}.threshold_velocity_m_s: required by {options.quantity}: the ship's length L "
+                                f"for Ochi's 0.093 sqrt(g L) is unknown (no vessel.hull, no length in the RAO file, "
+                                f"no manoeuvring model)")
+        velocity = ochi_threshold_velocity(length)
     return Criterion(options.quantity, options.limit, options.point, options.name, options.window_s, options.caution,
-                     Options(options.threshold_m, tipping))
+                     Options(options.threshold_m, tipping, velocity))
 
 
 def _check_speed(where: str, rao: RaoTable, speed_kn: float) -> None:
@@ -413,6 +438,8 @@ def _vessel(path: Path, options: VesselOptions) -> Vessel:
                                                    roll_damping=options.roll_damping_pct / 100.0,
                                                    body=options.rao_body, rigid_body=_rigid_body(options),
                                                    accept_resonance=options.accept_resonance))
+    if options.rao_speeds_kn is not None:
+        rao = _checked("vessel.rao_speeds_kn", lambda: rao.at_speeds([v * KNOT for v in options.rao_speeds_kn]))
     _check_speed("vessel.speed_kn", rao, options.speed_kn)
     speed = options.speed_kn * KNOT
     hull_path, hull = _mesh(path, options, "hull", HULL_OPTIONS, load_hull)

@@ -35,6 +35,7 @@ from typing import Any
 
 import numpy as np
 
+from marinesim.criteria.expectation import Expected
 from marinesim.criteria.monitor import Criterion, Level, Monitor, Tally, value_and_limit, watched
 from marinesim.errors import ParameterError
 from marinesim.progress import task
@@ -42,6 +43,7 @@ from marinesim.scenario import Scenario
 from marinesim.scenario.model import WEATHER
 from marinesim.scenario.schema import Event
 from marinesim.session.assembly import Assembly
+from marinesim.session.expectation import Expectations
 from marinesim.session.timeline import PREPARE_S, Simulation
 
 BLOCK = 512
@@ -90,7 +92,10 @@ class CriterionResult:
     """One criterion over the run so far: its worst ``value`` (in ``unit``; None while settling) at ``value_at_s``
     (s) against ``limit`` (caution at ``caution`` x limit) over ``window_s`` (s; None for a dose), the time spent
     above the limit and when it first went above (s), its ``level`` from the worst value, and whether it is
-    ``judged`` (:meth:`Exercise.assessment`)."""
+    ``judged`` (:meth:`Exercise.assessment`). What the sea the vessel met made of it
+    (:mod:`~marinesim.session.expectation`; None where its quantity has no spectral estimate): the worst value
+    ``expected`` (the median over seeds), the ``percentile`` of the worst value in that distribution, and the
+    ``chance_exceeded`` (0 to 1) that the worst goes above the limit."""
 
     name: str
     point: str | None
@@ -106,6 +111,9 @@ class CriterionResult:
     first_exceeded_s: float | None
     level: Level
     judged: bool
+    expected: float | None = None
+    percentile: float | None = None
+    chance_exceeded: float | None = None
 
     @property
     def reading(self) -> Level | None:
@@ -205,6 +213,12 @@ def ran_words(ran_s: float, planned_s: float) -> str:
     return f"{math.floor(ran_s + 1e-9):,d} s of {planned_s:,g} s ({share} %)"
 
 
+def share_words(p: float) -> str:
+    """A probability (0 to 1) in percent, the ends told apart from certainty: '<1 %', '43 %', '>99 %'."""
+    percent = 100.0 * p
+    return "<1 %" if percent < 0.5 else ">99 %" if percent > 99.5 else f"{percent:.0f} %"
+
+
 class Exercise:
     """``simulation``'s scenario as an exercise over ``duration_s`` (default: the run's); each event
     that happens is passed to ``log`` as one line. ``watch``: more criteria to evaluate (:meth:`tally`),
@@ -254,6 +268,9 @@ class Exercise:
         """The next grid row to record."""
         self._ahead: tuple[int, int, int, dict[str, np.ndarray]] | None = None
         """(first row, the timeline's version then, rows, their columns) computed ahead."""
+        self.expectations = Expectations(simulation, self.criteria) if self.monitor is not None else None
+        """What the sea the vessel meets makes of each criterion (computed when asked)."""
+        self._expected_now: dict[int, tuple[float, Expected | None]] = {}
 
     # -- moving on ----------------------------------------------------------------------------
 
@@ -475,6 +492,16 @@ class Exercise:
         return [(c, tally.value, c.level(tally.value))
                 for c, tally in zip(self.criteria, self.monitor.tallies)]
 
+    def expected_now(self, index: int) -> Expected | None:
+        """The distribution of criterion ``index``'s value over its window ending at the last evaluation (the panel's
+        value), in the sea she met (None: no spectral estimate for its quantity); kept until the next evaluation."""
+        if self.expectations is None:
+            return None
+        at = self.evaluated_s[-1] if self.evaluated_s else 0.0  # the panel's value is the last evaluation's
+        if self._expected_now.get(index, (None,))[0] != at:
+            self._expected_now[index] = (at, self.expectations.window(index, at))
+        return self._expected_now[index][1]
+
     def complete(self) -> bool:
         """Whether the run has gone through its planned duration: recorded the last row of its time grid."""
         return last_row(self.sim.time, self.dt) >= last_row(self.duration_s, self.dt)
@@ -489,14 +516,19 @@ class Exercise:
         complete = self.complete()
         criteria = []
         tallies = self.monitor.tallies if self.monitor is not None else []
-        for criterion, tally in zip(self.criteria, tallies):
+        for i, (criterion, tally) in enumerate(zip(self.criteria, tallies)):
             level = criterion.level(tally.worst)
+            expected = self.expectations.run(i, self.sim.time)
             criteria.append(CriterionResult(
                 name=criterion.label, point=criterion.point, quantity=criterion.quantity,
                 unit=criterion.measure.unit, window_s=criterion.window, value=tally.worst, value_at_s=tally.worst_s,
                 limit=criterion.limit, caution=criterion.caution, exceeded=tally.first_exceeded_s is not None,
                 time_exceeded_s=tally.time_exceeded_s, first_exceeded_s=tally.first_exceeded_s, level=level,
-                judged=complete or level is Level.EXCEEDED))
+                judged=complete or level is Level.EXCEEDED,
+                expected=None if expected is None else expected.median,
+                percentile=None if expected is None or tally.worst is None else expected.percentile(tally.worst),
+                chance_exceeded=None if expected is None or criterion.limit is None
+                else 1.0 - expected.cdf(criterion.limit)))
         happened = {h.index: h.time_s for h in self.happened}
         events = [EventResult(i, f"at {e.at_s:g} s" if e.at_s is not None else f"when {e.condition}", happened.get(i),
                               e.describe().partition(": ")[2], e.message)

@@ -114,6 +114,14 @@ class Leg:
     before: tuple[tuple[int, float], ...]
     after: int
 
+    def mix(self, w: float) -> dict[int, float]:
+        """The component sets' weights (set index -> weight) when ``after`` has the weight ``w``: the sets blended
+        before it share the rest."""
+        out = {self.after: w}
+        for index, weight in self.before if w < 1.0 else ():
+            out[index] = out.get(index, 0.0) + (1.0 - w) * weight
+        return out
+
     def weight(self, t: np.ndarray) -> np.ndarray:
         """The weight of ``after`` at ``t`` (s)."""
         s = np.clip((np.asarray(t, float) - self.start) / self.ramp_s, 0.0, 1.0) if self.ramp_s > 0 else 1.0
@@ -281,10 +289,7 @@ class Simulation:
     def _start(self, change: _Change) -> None:
         t, last = change.ready_at, self.legs[-1]
         self.ocean.ramp_to(change.prepared.result(), t, change.ramp_s)  # ready unless the machine is slow
-        w = float(last.weight(t))
-        before: dict[int, float] = {last.after: w}
-        for index, weight in last.before if w < 1.0 else ():  # a blend under way: it goes on from the mix of now
-            before[index] = before.get(index, 0.0) + (1.0 - w) * weight
+        before = last.mix(float(last.weight(t)))  # a blend under way: it goes on from the mix of now
         self.legs.append(Leg(t, change.ramp_s, change.sea, tuple(before.items()), self._new_set(t + change.ramp_s)))
         if self.station is not None:  # the waves' drift and motion change: she is stepped again from here
             self.voyage.changed(t)

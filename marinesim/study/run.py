@@ -32,6 +32,9 @@ from marinesim.vessel.response import OUTSIDE_HEADINGS_SHARE
 
 MAX_TASKS = 1_000_000
 """The most time-domain tasks one study may ask for."""
+FINE_STEP = ("msdv_m_s1_5", "msi_pct", "slamming_probability")
+"""Quantities whose time-domain check records at 0.1 s, not 0.5 s: W_f filters up to 0.63 Hz, and the slamming
+velocity is a difference of the record (14 % low at 0.5 s in head seas at speed, 0.3 % at 0.1 s)."""
 
 
 @dataclass(frozen=True)
@@ -217,8 +220,8 @@ def time_domain(study: Study, estimates: spectral.SpectralCriteria, seeds: int, 
     if cells.size == 0 or cells.min() < 0 or cells.max() >= study.scatter.hs.size:
         raise ParameterError(f"--cells must be indices of the scatter's {study.scatter.hs.size} cells")
     vessel = study.scenario.vessel
-    needs_wf = any(c.quantity in ("msdv_m_s1_5", "msi_pct") for c in study.criteria)
-    dt = 0.1 if needs_wf else 0.5
+    fine = any(c.quantity in FINE_STEP for c in study.criteria)
+    dt = 0.1 if fine else 0.5
     base = study.scenario.run.seed
     td = TimeDomainStudy(vessel.rao, vessel.points, vessel.speed_m_s, tuple(study.criteria), study.system,
                          study.depth_m, study.scatter.hs[cells], study.cell_tp[cells], study.headings_deg,

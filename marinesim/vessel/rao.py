@@ -24,6 +24,7 @@ that misses the forward-speed effects on the RAO itself, and :func:`one_speed_no
 from __future__ import annotations
 
 import math
+import dataclasses
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -61,6 +62,29 @@ MAX_ROTATION_SLOPES = 50.0
 RESONANCE_DAMPING = 0.1
 """Largest damping (fraction of critical) of a peak that may be a real resonance beyond the limits above (a moored
 spar's surge, a flap's roll): such a peak is described and left to the reader's caller to refuse or accept."""
+SPEED_JUMP_FACTOR = 3.0
+"""A rotation |RAO| at a speed between two others of the table above this multiple of both neighbouring speeds'
+(same frequency and heading) is noted as non-physical: the S175's VERES roll at 15 kn, 150 deg, 1.047 rad/s is
+7.38 deg/m against 0.892 and 1.25 at 10 and 20 kn (5.9 times), while no other speed of that table jumps above
+2.3 times both neighbours where it exceeds :data:`SPEED_JUMP_FLOOR`."""
+SPEED_JUMP_FLOOR = 0.25
+"""A jump over :data:`SPEED_JUMP_FACTOR` is noted only where the rotation exceeds this fraction of the wave slope
+k (rad/m): under it, the rotation stays under 3 deg even in waves as steep as ka = 0.2, and the S175's jumps in the
+noise of its shortest waves (10 kn, 2.51 rad/s: 0.04 of the slope) are left alone."""
+NEAR_RESONANCE = 1.5
+"""A speed whose encounter frequency is within this factor (either side) of the DOF's resonance may truly peak
+against its neighbouring speeds (speed sweeps the encounter frequency through the resonance): not a jump."""
+BEYOND_RESONANCE = 3.0
+"""At encounter frequencies beyond this multiple of a rotation's resonance the rotation is inertia-controlled: driven
+by the long-wave excitation (the one that gives |H| = k in long waves), an oscillator answers ``1 / (3^2 - 1)`` =
+1/8 of the wave slope k there, so :data:`BEYOND_RESONANCE_SLOPES` times the slope is noted as non-physical. Closer
+in, real tables exceed it: at 1.5 times the zero-speed roll resonance the S175's VERES roll at 10 kn reaches 3.1
+times the slope (its roll peak moves with speed). Beyond three times, the tables of rao/ and tests/data stay under
+0.44 times the slope (the semisubmersible's roll), but for the S175's roll at 15 and 20 kn (up to 1.4 and 3.5)."""
+BEYOND_RESONANCE_SLOPES = 1.0
+"""The rotation |RAO|, as a multiple of the wave slope k (rad/m), noted beyond :data:`BEYOND_RESONANCE`."""
+WARNING_WORDS = ("implausible", "non-physical")
+"""How the notes that warn of data no floating body gives begin (:attr:`RaoTable.warnings`)."""
 ONE_SPEED_FROUDE = 0.1
 """A table of one speed used at a Froude number ``U / sqrt(g L)`` more than this from its own is noted (not
 refused): at 15 kn (Fn 0.19) the S175's zero-speed table misses the head-sea pitch peak by tens of percent
@@ -206,6 +230,32 @@ class RaoTable:
         return np.concatenate([table, table[:1]], axis=0)
 
     @property
+    def warnings(self) -> tuple[str, ...]:
+        """The notes that warn of data no floating body gives (implausible translations, non-physical rotations)."""
+        return tuple(n for n in self.notes if n.startswith(WARNING_WORDS))
+
+    def at_speeds(self, speeds: list[float]) -> RaoTable:
+        """The table with only ``speeds`` (m/s, each one of its own to 0.01 kn), screened again (implausible
+        translations, :func:`non_physical_rotations`): its other notes kept, those on the speeds left out gone."""
+        keep = []
+        for speed in speeds:
+            match = np.flatnonzero(np.abs(self.speed - speed) <= 0.01 * KNOT)
+            if match.size == 0:
+                raise ParameterError(f"{speed / KNOT:g} kn is not one of the table's speeds "
+                                     f"({', '.join(f'{v / KNOT:g}' for v in self.speed)} kn)")
+            keep.append(int(match[0]))
+        keep = sorted(set(keep))
+        given = self.beta <= math.pi + 1e-9 if self.mirrored else np.ones(self.beta.size, bool)  # as read
+
+        def screened(speed: np.ndarray, values: np.ndarray) -> tuple[str, ...]:
+            dofs = {r.dof for r in self.resonances}
+            return (_implausible(self.omega, self.beta, speed, values, self.g, self.depth, dofs)[0]
+                    + non_physical_rotations(self.omega, self.beta[given], speed, values[:, given], self.g, self.depth))
+        before = set(screened(self.speed, self.values))
+        notes = tuple(n for n in self.notes if n not in before) + screened(self.speed[keep], self.values[keep])
+        return dataclasses.replace(self, speed=self.speed[keep], values=self.values[keep], notes=notes)
+
+    @property
     def speed_range(self) -> tuple[float, float]:
         return float(self.speed[0]), float(self.speed[-1])
 
@@ -315,6 +365,7 @@ def make_table(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: n
     _check_increasing("speeds", speed, minimum=None)
     if beta.size == 0 or not np.all(np.isfinite(beta)):
         raise HeadingError("RAO headings must be finite and at least one")
+    rotations = non_physical_rotations(omega, beta, speed, values, g, depth)
     order = np.argsort(beta, kind="stable")
     beta, values = beta[order], values[:, order]
     eps = 1e-9
@@ -340,8 +391,8 @@ def make_table(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: n
         covered = tuple((float(beta[a]), float(beta[b])) for a, b in zip(starts, np.roll(ends, -1), strict=True))
     implausible, orbit_resonances = _implausible(omega, beta, speed, values, g, depth, {r.dof for r in resonances})
     return RaoTable(omega, beta, speed, values, tuple(float(v) for v in reference_point), float(rho),
-                    float(g), str(source), source_format, tuple(notes) + implausible, mirrored, depth, covered,
-                    resonances + orbit_resonances, draft, length)
+                    float(g), str(source), source_format, tuple(notes) + implausible + rotations, mirrored, depth,
+                    covered, resonances + orbit_resonances, draft, length)
 
 
 def _where(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, index: tuple) -> str:
@@ -423,6 +474,82 @@ def _implausible(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values:
                          "restoring force to resonate with, so this is the source's (strip-theory surge at "
                          "speed is unreliable): treat surge at this speed with caution")
     return tuple(notes), tuple(resonances)
+
+
+def non_physical_rotations(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: np.ndarray, g: float,
+                           depth: float) -> tuple[str, ...]:
+    """Notes on roll, pitch and yaw |RAO| no floating body has, one per DOF and speed, naming the worst point.
+
+    ``values`` (speeds, headings, frequencies, 6) at ``omega`` (rad/s), ``beta`` (rad, as tabulated: each once)
+    and ``speed`` (m/s, increasing), wave slope ``k`` from ``w^2 = g k tanh(k depth)``. Two rules:
+
+    * a jump: at a speed between two others, over :data:`SPEED_JUMP_FACTOR` times both neighbouring speeds' at
+      the same frequency and heading and over :data:`SPEED_JUMP_FLOOR` times the wave slope, unless the encounter
+      frequency is within :data:`NEAR_RESONANCE` of the DOF's resonance;
+    * beyond the resonance: over :data:`BEYOND_RESONANCE_SLOPES` times the wave slope at an encounter frequency
+      ``|w - k U cos beta|`` over :data:`BEYOND_RESONANCE` times the DOF's resonance.
+
+    A DOF's resonance is the encounter frequency of its first peak over frequency at the table's first speed
+    (:func:`_rotation_resonance`; roll's: the beam-sea roll peak; yaw, which has no restoring, its first response
+    peak's).
+    """
+    k = k_from_omega(omega, depth, g)
+    encounter = np.abs(omega - k * speed[:, None, None] * np.cos(beta)[None, :, None])
+    notes = []
+    for j in ROTATIONS:
+        amp = np.abs(values[..., j])
+        resonance = _rotation_resonance(omega, encounter[0], amp[0])
+        slopes = amp / k
+        jump = np.zeros(amp.shape, dtype=bool)
+        if speed.size > 2:
+            near = (encounter[1:-1] < NEAR_RESONANCE * resonance) & (encounter[1:-1] > resonance / NEAR_RESONANCE)
+            jump[1:-1] = ((amp[1:-1] > SPEED_JUMP_FACTOR * np.maximum(amp[:-2], amp[2:]))
+                          & (slopes[1:-1] > SPEED_JUMP_FLOOR) & ~near)
+        beyond = (encounter > BEYOND_RESONANCE * resonance) & (slopes > BEYOND_RESONANCE_SLOPES)
+        for s in np.flatnonzero((jump | beyond).any(axis=(1, 2))):
+            notes.append(_rotation_note(omega, beta, speed, amp, k, encounter, resonance, jump, beyond, s, j))
+    return tuple(notes)
+
+
+def _rotation_resonance(omega: np.ndarray, encounter: np.ndarray, amp: np.ndarray) -> float:
+    """A rotation's resonance (rad/s) from its |RAO| ``amp`` (headings, frequencies) at one speed: the encounter
+    frequency (``encounter``, same shape) of the lowest-frequency peak over frequency of its largest over the
+    headings, so that a spike in shorter waves does not pass for it; the largest where there is no interior peak
+    (and the wave frequency where the encounter frequency there is zero)."""
+    largest = amp.max(axis=0)
+    peaks = np.flatnonzero((largest[1:-1] > largest[:-2]) & (largest[1:-1] >= largest[2:])) + 1
+    w = int(peaks[0]) if peaks.size else int(np.argmax(largest))
+    return float(encounter[int(np.argmax(amp[:, w])), w]) or float(omega[w])
+
+
+def _rotation_note(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, amp: np.ndarray, k: np.ndarray,
+                   encounter: np.ndarray, resonance: float, jump: np.ndarray, beyond: np.ndarray, s: int,
+                   j: int) -> str:
+    """The line of :func:`non_physical_rotations` for DOF ``j`` at speed index ``s``: its largest flagged |RAO|
+    ``amp`` (speeds, headings, frequencies; rad/m) with what it was compared with, then how many points each rule
+    flagged at this speed and where."""
+    dof, kn = DOFS[j], [f"{u / KNOT:.3g}" for u in speed]
+    flagged = jump[s] | beyond[s]
+    b, w = np.unravel_index(int(np.argmax(np.where(flagged, amp[s], -1.0))), flagged.shape)
+    heading = np.mod(np.degrees(beta), 360.0)
+    text = (f"non-physical {dof} RAO at {kn[s]} kn, {round(heading[b], 6):g} deg, {omega[w]:.4g} rad/s: "
+            f"{math.degrees(amp[s, b, w]):.3g} deg/m")
+    if jump[s, b, w]:
+        text += (f" against {math.degrees(amp[s - 1, b, w]):.3g} and {math.degrees(amp[s + 1, b, w]):.3g} at "
+                 f"{kn[s - 1]} and {kn[s + 1]} kn")
+    text += f" (wave slope {math.degrees(k[w]):.3g} deg/m"
+    if beyond[s, b, w]:
+        text += (f"; {amp[s, b, w] / k[w]:.3g}x it at an encounter frequency {encounter[s, b, w] / resonance:.2g}x "
+                 "the resonance")
+    counts = [f"{n} point{'s' * (n > 1)} {what}" for n, what in (
+        (int(jump[s].sum()), f"over {SPEED_JUMP_FACTOR:g}x both neighbouring speeds"),
+        (int(beyond[s].sum()), f"over {BEYOND_RESONANCE_SLOPES:g}x the wave slope beyond {BEYOND_RESONANCE:g}x the "
+                               "resonance")) if n]
+    rows, cols = np.nonzero(flagged)
+    return (f"{text}); at {kn[s]} kn {', '.join(counts)}, at headings {round(heading[rows].min(), 6):g}.."
+            f"{round(heading[rows].max(), 6):g} deg and {omega[cols].min():.3g}..{omega[cols].max():.3g} rad/s (the "
+            f"{dof} resonance: {resonance:.3g} rad/s, T {2 * math.pi / resonance:.3g} s, its first peak at "
+            f"{kn[0]} kn): the source's {dof} at this speed is suspect, not a floating body's")
 
 
 def _check_amplitudes(omega: np.ndarray, beta: np.ndarray, speed: np.ndarray, values: np.ndarray,

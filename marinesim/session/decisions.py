@@ -1,0 +1,100 @@
+"""Decisions an objective may ask of the trainee, judged from an exercise's journal
+(:data:`~marinesim.scenario.model.DECISIONS`):
+
+- ``acknowledge``: every alarm of the objective's criteria (all criteria if it names none) acknowledged within
+  ``within_s`` of being raised;
+- ``act_before``: a course or speed order (helm, telegraph, autopilot, a heading or speed change) that keeps the
+  expectation of its criteria within their limits: the median of each criterion's window in the sea she met
+  (:meth:`~marinesim.session.expectation.Expectations.window`), looked at every
+  :data:`~marinesim.session.expectation.STEP_S` once the window has settled. Met if it never passes (with an order
+  given, or none needed); not met if it passes, whatever was ordered before (an order that was too little, too
+  late, or that brought the passing on). A criterion without an expectation (its quantity has none, a regular
+  wave) leaves the decision not judged.
+
+A run stopped early judges what it can: an alarm still waiting for less than ``within_s``, or an expectation that
+has not passed its limit while no order was given, is "not judged".
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from marinesim.criteria.monitor import SETTLE_FRACTION
+from marinesim.scenario.schema import Objective
+from marinesim.session.exercise import Exercise
+from marinesim.session.expectation import STEP_S
+
+STEERING = frozenset({"rudder_deg", "engine", "speed_kn", "autopilot", "course_deg", "heading_deg"})
+"""The fields of an order or a change that alter course or speed."""
+
+
+@dataclass(frozen=True)
+class Judged:
+    """A decision's ``verdict`` ("met", "not met", "not judged") and ``why``, in words."""
+
+    verdict: str
+    why: str
+
+
+def judge(exercise: Exercise, objective: Objective) -> Judged:
+    """``objective``'s decision in ``exercise`` as it ran."""
+    if objective.decision == "acknowledge":
+        return _acknowledged(exercise, objective)
+    return _acted_before(exercise, objective)
+
+
+def _acknowledged(exercise: Exercise, objective: Objective) -> Judged:
+    names = set(objective.criteria) or {c.label for c in exercise.criteria}
+    alarms = [a for a in exercise.alarms if a.name in names]
+    end, within = exercise.sim.time, objective.within_s
+    late = [a for a in alarms if (a.acknowledged_s if a.acknowledged_s is not None else end) - a.raised_s > within]
+    waiting = [a for a in alarms if a.acknowledged_s is None and end - a.raised_s <= within]
+    if late:
+        first = late[0]
+        how = ("never acknowledged" if first.acknowledged_s is None
+               else f"acknowledged after {first.acknowledged_s - first.raised_s:.0f} s")
+        return Judged("not met", f"{len(late)} of {len(alarms)} alarms late: {first.name} at {first.raised_s:.0f} s "
+                                 f"{how} (within {within:g} s asked)")
+    if waiting:
+        return Judged("not judged", f"the run ended with an alarm waiting for less than {within:g} s")
+    if not alarms:
+        return Judged("not judged", "no alarm was raised")
+    slowest = max(a.acknowledged_s - a.raised_s for a in alarms)
+    return Judged("met", f"{len(alarms)} alarm{'s' if len(alarms) > 1 else ''} acknowledged, the slowest after "
+                         f"{slowest:.0f} s (within {within:g} s asked)")
+
+
+def _acted_before(exercise: Exercise, objective: Objective) -> Judged:
+    ordered = next((e["t"] for e in exercise.journal if e["kind"] == "action"
+                    and e["action"] in ("order", "change") and STEERING & e.keys()), None)
+    labels = [c.label for c in exercise.criteria]
+    if any(exercise.expectations.window(labels.index(name), exercise.sim.time) is None for name in objective.criteria):
+        return Judged("not judged", "no spectral expectation for its criteria (docs/FORMULAS.md)")
+    passed = _expectation_passed(exercise, objective)
+    if passed is None:
+        if ordered is not None:
+            return Judged("met", f"course or speed changed at {ordered:.0f} s; the expectation stayed within the "
+                                 "limit")
+        if not exercise.complete():
+            return Judged("not judged", "the run stopped before the expectation passed the limit")
+        return Judged("met", "the expectation stayed within the limit: no change was needed")
+    name, at = passed
+    when = "no course or speed change" if ordered is None else f"the first course or speed change at {ordered:.0f} s"
+    return Judged("not met", f"the expectation of {name} passed its limit at {at:.0f} s; {when}")
+
+
+def _expectation_passed(exercise: Exercise, objective: Objective) -> tuple[str, float] | None:
+    """(criterion name, time s) where the first of the objective's criteria's expectation went above its limit."""
+    labels = [c.label for c in exercise.criteria]
+    indices = [labels.index(name) for name in objective.criteria]
+    for step in range(1, math.floor(exercise.sim.time / STEP_S + 1e-9) + 1):
+        t = step * STEP_S
+        for i in indices:
+            criterion = exercise.criteria[i]
+            if criterion.window is not None and t < SETTLE_FRACTION * criterion.window:
+                continue
+            expected = exercise.expectations.window(i, t)
+            if expected is not None and criterion.limit is not None and expected.cdf(criterion.limit) < 0.5:
+                return criterion.label, t
+    return None
