@@ -3,7 +3,8 @@ night, at dusk, in fog, in a gale and throwing spray, as headless marinesim draw
 85, the HUD on: a tenth of a PNG of the sea's detail), and docs/gallery/README.md listing them, so that the next
 change to the picture can be compared by eye.
 
-Run from the repository root: python docs/gallery/make_gallery.py
+Run from the repository root: python docs/gallery/make_gallery.py [NAME ...]; with names (``heavy_weather_transit``,
+``gale_transit``, ...) only the pictures whose file name starts with one are drawn again, the README all the same.
 The frames are reproducible (headless renders use numpy.fft for the sea: the same scenario gives the same bytes).
 """
 
@@ -11,6 +12,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import sys
 from datetime import datetime, timezone
 from pathlib import Path
 
@@ -115,7 +117,8 @@ def light_words(scenario: Scenario, at_s: float) -> str:
             f"visibility {air.visibility_m / 1000:g} km; wind {light.wind[2]:.0f} m/s.")
 
 
-def main() -> None:
+def main(only: tuple[str, ...] = ()) -> None:
+    """Draw the gallery (only the pictures whose name starts with one of ``only``, if given) and write its README."""
     rows = []
     for path in sorted((ROOT / "configs").glob("*.toml")) + sorted((ROOT / "configs" / "training").glob("*.toml")):
         scenario = load_scenario(path)
@@ -123,7 +126,8 @@ def main() -> None:
         shots = []
         for camera in ("orbit", "bridge"):
             out = HERE / f"{path.stem}_{camera}.jpg"
-            save(scenario, out, camera, at)
+            if not only or out.stem.startswith(only):
+                save(scenario, out, camera, at)
             shots.append(f"![{path.stem}, {camera}]({out.name})")
         rows.append(f"## {path.relative_to(ROOT)} at {at:g} s\n\n{light_words(scenario, at)}\n\n"
                     + "\n".join(shots) + "\n")
@@ -139,8 +143,9 @@ def main() -> None:
         environment = type(scenario.environment).model_validate(air | shot.air)
         scenario = dataclasses.replace(scenario, sea=sea, environment=environment)
         out = HERE / f"{shot.name}.jpg"
-        save(scenario, out, shot.camera, shot.at_s, shot.azimuth_deg, shot.elevation_deg, shot.distance_m, shot.hud,
-             shot.orders)
+        if not only or out.stem.startswith(only):
+            save(scenario, out, shot.camera, shot.at_s, shot.azimuth_deg, shot.elevation_deg, shot.distance_m,
+                 shot.hud, shot.orders)
         rows.append(f"## {shot.name}: configs/{shot.scenario} at {shot.at_s:g} s\n\n{shot.what} "
                     f"{light_words(scenario, shot.at_s)}\n\n![{shot.name}]({out.name})\n")
     (HERE / "README.md").write_text("# Picture gallery\n\nEvery shipped scenario from the orbit camera and from its "
@@ -151,4 +156,4 @@ def main() -> None:
 
 
 if __name__ == "__main__":
-    main()
+    main(tuple(sys.argv[1:]))
