@@ -1,7 +1,8 @@
 """A run stopped early is not a pass. The shipped crane lift, shortened to 300 s and with an objective judged by
-each of its three criteria, run as a session to its end is debriefed as before; the same session closed at 60 s (20 %) is debriefed INCOMPLETE, says how much of it
-ran and marks each objective it could not judge NOT JUDGED; with the roll limit made tight enough to be
-exceeded in the first minute, that objective stays NOT MET and the verdict EXCEEDED. Real runs, real logs,
+each of its three criteria, run as a session to its end is debriefed as before; the same session closed at 60 s
+(20 %) is debriefed INCOMPLETE, says how much of it ran and marks each objective it could not judge NOT JUDGED;
+with the roll limit made tight enough to be exceeded in the first minute, that objective stays NOT MET and the
+verdict EXCEEDED. Real runs, real logs,
 the real ``marinesim report`` and ``replay``; the header looked at in Chromium."""
 
 from __future__ import annotations

@@ -24,8 +24,8 @@ ACT = Objective("act before the roll is expected to pass its limit", ("roll",), 
 
 
 def _run(tmp_path, limit: float, drive=None, extra: str = "", duration: float = 120.0) -> Exercise:
-    text = (VESSEL_SCENARIO.replace("duration_s = 120.0", f"duration_s = {duration}").replace("spreading_s = 10.0\n", "")
-            + ROLL.format(limit=limit))  # long-crested: a sea right astern rolls her not at all
+    text = VESSEL_SCENARIO.replace("duration_s = 120.0", f"duration_s = {duration}")
+    text = text.replace("spreading_s = 10.0\n", "") + ROLL.format(limit=limit)  # long-crested: right astern, no roll
     return run_exercise(load_scenario(write(tmp_path, text + extra)), drive=drive)
 
 

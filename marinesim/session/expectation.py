@@ -5,9 +5,10 @@ The sea of a moment is the timeline's: a sea change blends the component sets' a
 each wave cell keeping its seeded noise, so the directional spectrum of the blend is
 ``(w sqrt(S_after) + (1 - w) sum_b w_b sqrt(S_b))^2``. A stretch takes the sea, heading and speed of its start,
 the blend's weight to :data:`WEIGHT_STEP`, the heading to :data:`HEADING_STEP_DEG` and the speed to
-:data:`SPEED_STEP_M_S` (what is computed once and shared between stretches); a vessel keeping station is at rest, as her response is.
-An order or a sea change redraws the stretches from its time on. The ship's own heel in a turn,
-sampled every second, is the offset of the roll, the deck's inclination and the lateral specific force (:data:`HEELED`).
+:data:`SPEED_STEP_M_S` (what is computed once and shared between stretches); a vessel keeping station is at
+rest, as her response is. An order or a sea change redraws the stretches from its time on. The ship's own heel in
+a turn, sampled every second, is the offset of the roll, the deck's inclination and the lateral specific force
+(:data:`HEELED`).
 """
 
 from __future__ import annotations
