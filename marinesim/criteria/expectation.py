@@ -40,7 +40,8 @@ from scipy.special import gammainc
 
 from marinesim.criteria.monitor import EVALUATE_S, SETTLE_FRACTION, Criterion
 from marinesim.criteria.quantities import WINDOW_S
-from marinesim.criteria.spectral import ResponseSeries, transfers, value_from_moments
+from marinesim.criteria.spectral import (ResponseSeries, encounter_frequency, transfers, trapezoid_weights,
+                                         value_from_moments)
 from marinesim.sea.dispersion import k_from_omega
 from marinesim.sea.seastate import SeaState
 from marinesim.sea.spreading import LongCrested
@@ -155,16 +156,14 @@ class Met:
         grid_w, grid_b = np.meshgrid(OMEGA, beta, indexing="ij")
         x = rao(grid_w.ravel(), grid_b.ravel(), speed_m_s).reshape(OMEGA.size, THETA.size, 6)
         k = k_from_omega(OMEGA, depth_m, rao.g)
-        return cls(x, np.abs(OMEGA[:, None] - speed_m_s * k[:, None] * np.cos(beta)[None, :]), k, beta)
+        return cls(x, encounter_frequency(OMEGA, k, beta, speed_m_s), k, beta)
 
 
 def sea_moments(met: Met, points: dict[str, tuple[float, float, float]], criteria: Sequence[Criterion],
                 density: np.ndarray) -> list[Moments | None]:
     """The moments of each criterion's series (None where :data:`EXPECTED` has no family for it) in the sea of
     ``density`` (:func:`directional_density`) met as ``met`` says, the points in the body frame (m)."""
-    domega = np.gradient(OMEGA)
-    domega[[0, -1]] *= 0.5
-    weight = density * (domega[:, None] * (THETA[1] - THETA[0]))                            # (W, D) m^2
+    weight = density * (trapezoid_weights(OMEGA)[:, None] * (THETA[1] - THETA[0]))  # (W, D) m^2
     series = ResponseSeries(met.x, met.omega_e, met.k, met.beta, points, weight[None])
     out: list[Moments | None] = []
     for criterion in criteria:

@@ -131,8 +131,7 @@ def criteria_at_unit_hs(rao: RaoTable, points: dict[str, tuple[float, float, flo
     omega = np.geomspace(OMEGA_SPAN[0] * 2 * math.pi / tp.max(), OMEGA_SPAN[1] * 2 * math.pi / tp.min(), OMEGA_POINTS)
     spread = np.array([0.0]) if isinstance(system.spreading, LongCrested) else SPREAD
     dtheta = 1.0 if spread.size == 1 else SPREAD[1] - SPREAD[0]
-    domega = np.gradient(omega)                                                              # trapezoid weights
-    domega[[0, -1]] *= 0.5
+    domega = trapezoid_weights(omega)
     weight = np.stack([_directional(system, t, omega, spread) for t in tp]) * (domega[:, None] * dtheta)  # (T, W, D)
     k = k_from_omega(omega, depth_m, rao.g)
     shape = (tp.size, headings.size, len(criteria))
@@ -141,11 +140,24 @@ def criteria_at_unit_hs(rao: RaoTable, points: dict[str, tuple[float, float, flo
         beta = math.radians(heading) + spread                                                # (D,)
         grid_w, grid_b = np.meshgrid(omega, beta, indexing="ij")
         x = rao(grid_w.ravel(), grid_b.ravel(), speed_m_s).reshape(omega.size, beta.size, 6)  # (W, D, 6)
-        omega_e = np.abs(omega[:, None] - speed_m_s * k[:, None] * np.cos(beta)[None, :])     # (W, D)
+        omega_e = encounter_frequency(omega, k, beta, speed_m_s)                             # (W, D)
         series = ResponseSeries(x, omega_e, k, beta, points, weight)
         for c, criterion in enumerate(criteria):
             value1[:, h, c], sigma1[:, h, c], upcrossing[:, h, c] = _estimate(criterion, series, duration_s)
     return SpectralCriteria(tuple(criteria), value1, sigma1, upcrossing)
+
+
+def trapezoid_weights(omega: np.ndarray) -> np.ndarray:
+    """The trapezoid rule's weights (rad/s) on the increasing frequencies ``omega`` (W,)."""
+    out = np.gradient(omega)
+    out[[0, -1]] *= 0.5
+    return out
+
+
+def encounter_frequency(omega: np.ndarray, k: np.ndarray, beta: np.ndarray, speed_m_s: float) -> np.ndarray:
+    """``|w - U k cos b|`` (W, D), rad/s, of waves ``omega`` (W,) of wave number ``k`` (W,) met at relative headings
+    ``beta`` (D,) rad by a vessel at ``speed_m_s``."""
+    return np.abs(omega[:, None] - speed_m_s * k[:, None] * np.cos(beta)[None, :])
 
 
 def _directional(system: WaveSystem, tp: float, omega: np.ndarray, spread: np.ndarray) -> np.ndarray:
