@@ -134,3 +134,14 @@ def test_the_quadrature_spans_the_seas_of_ships():
         total = Jonswap(hs=1.0, tp=tp).density(np.geomspace(1e-3, 60.0, 200_000))
         inside = Jonswap(hs=1.0, tp=tp).density(OMEGA)
         assert np.trapezoid(inside, OMEGA) / np.trapezoid(total, np.geomspace(1e-3, 60.0, 200_000)) > 0.98
+
+
+def test_a_heel_in_a_turn_is_an_offset_under_the_waves(record):
+    """A steady 3-unit heel under the waves: the RMS's median is sqrt(m0 + 9) (the mean squares add); with no waves
+    at all the largest value is the heel itself, surely above a 2-unit limit and surely within a 4-unit one."""
+    _, moments = record
+    rms = window_expected(Criterion("roll_rms_deg", 1.0, window_s=WINDOW_S), [Stretch(WINDOW_S, moments, 9.0, 3.0)])
+    assert rms.median == pytest.approx(math.sqrt(moments.m0 + 9.0), rel=0.01)
+    calm = Moments(0.0, 0.0, 0.0, 0.0)
+    largest = window_expected(Criterion("roll_max_deg", 1.0, window_s=WINDOW_S), [Stretch(WINDOW_S, calm, 9.0, 3.0)])
+    assert largest.cdf(2.0) == 0.0 and largest.cdf(4.0) == 1.0

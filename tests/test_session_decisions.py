@@ -97,3 +97,4 @@ def test_a_decision_names_what_it_needs(tmp_path):
                            ('{ text = "a", criteria = ["roll"], within_s = 10.0 }', "within_s")):
         with pytest.raises(ScenarioError, match=key):
             load_scenario(write(tmp_path, base.replace("{o}", objective)))
+

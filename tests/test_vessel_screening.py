@@ -14,8 +14,10 @@ import math
 import numpy as np
 import pytest
 
-from conftest import ROOT, cli
+from conftest import ROOT, cli, write
 from marinesim.constants import KNOT
+from marinesim.errors import ScenarioError
+from marinesim.scenario import load_scenario
 from marinesim.vessel import read_rao
 from marinesim.vessel.rao import make_table
 from marinesim.vessel.veres import TITLE_LINES
@@ -175,3 +177,13 @@ def test_marinesim_rao_prints_the_note():
     assert report.returncode == 0, report.stderr
     lines = [line for line in report.stdout.splitlines() if line.startswith("note: non-physical")]
     assert len(lines) == 2 and lines[0].startswith("note: non-physical roll RAO at 15 kn, 150 deg, 1.047 rad/s: 7.38")
+
+
+def test_a_speed_the_rao_table_does_not_have_is_refused(tmp_path):
+    """rao_speeds_kn names speeds of the table: 7 kn, which the S175's VERES table does not have, is one line naming
+    the key and the speeds it has."""
+    text = (ROOT / "configs" / "training" / "heavy_weather_transit.toml").read_text().replace('"../../', f'"{ROOT}/')
+    path = write(tmp_path, text.replace("rao_speeds_kn = [0.0, 5.0, 10.0]", "rao_speeds_kn = [0.0, 7.0]"))
+    with pytest.raises(ScenarioError, match=r"vessel.rao_speeds_kn: .*7 kn is not one of the table's speeds "
+                                            r"\(0, 5, 10, 15, 20 kn\)"):
+        load_scenario(path)
