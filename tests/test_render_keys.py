@@ -18,13 +18,14 @@ from marinesim.render.keys import CONTEXTS, KEYMAP, bindings, dispatch, help_lin
 
 USAGE = ROOT / "docs" / "USAGE.md"
 SESSIONS = {
-    "ship": {"always", "free", "live", "typing", "ship"},
-    "station": {"always", "free", "live", "typing", "station"},
-    "moored": {"always", "free", "live", "typing", "station", "faults"},
-    "dp": {"always", "free", "live", "typing", "station", "faults", "dp"},
+    "ship": {"always", "free", "live", "instructor", "typing", "ship"},
+    "station": {"always", "free", "live", "instructor", "typing", "station"},
+    "moored": {"always", "free", "live", "instructor", "typing", "station", "faults"},
+    "dp": {"always", "free", "live", "instructor", "typing", "station", "faults", "dp", "dp_faults"},
     "replay": {"always", "free", "replay"},
+    "station of a served exercise": {"always", "free", "live", "follow", "typing", "ship"},
 }
-"""The contexts each kind of session can be in (``Controls.session_contexts``)."""
+"""The contexts each kind of session can be in (``Controls.session_contexts``; a station's in tests/test_net_station.py)."""
 SCENES = {"ship": DEFAULT, "station": ROOT / "configs" / "semisub_swell.toml",
           "moored": ROOT / "configs" / "semisub_moored.toml", "dp": ROOT / "configs" / "supply_dp.toml",
           "replay": DEFAULT}
@@ -116,7 +117,7 @@ def session(request, gl_context, tmp_path_factory):
         log = read_log(write_log(folder / "session.jsonl", scene.exercise))
         scene.release()
         scene = Scene(gl_context, scenario, options=options)
-        scene.replay = Replay(scene.exercise, log)
+        scene.replay = Replay(scene.exercise, log.actions(), log)
     controls = Controls(scene, recordings=folder, restart=lambda t: calls.append(("restart", t)),
                         on_quit=lambda: calls.append(("quit",)))
     if kind == "replay":

@@ -52,7 +52,7 @@ def test_good_scenario_converts_directions(tmp_path):
      "time_utc needs latitude_deg and longitude_deg"),
     (("[run]", "[environment]\ntime_utc = 2026-11-25T16:00:00Z\nlatitude_deg = 60.0\nlongitude_deg = 2.0\n"
                "sun_elevation_deg = 10.0\n[run]"), "or the sun's keys, not both"),
-    (("[run]", "[environment]\nlatitude_deg = 60.0\n[run]"), "only with time_utc"),
+    (("[run]", "[environment]\nlatitude_deg = 60.0\n[run]"), "latitude_deg and longitude_deg go together"),
     (("[run]", "[environment]\ncloud_cover_oktas = 9\n[run]"), "environment.cloud_cover_oktas: must be in 0..8"),
     (("[run]", "[environment]\nrain_mm_h = -1.0\n[run]"), "environment.rain_mm_h: must be in 0..200 mm/h"),
     (("[run]", "[environment]\nwind_speed_m_s = 100.0\n[run]"), "environment.wind_speed_m_s: must be in 0..60 m/s"),

@@ -21,7 +21,7 @@ LAYERS = (
     {"__init__", "errors", "constants", "angles", "atomic", "cache", "tokens", "recent", "progress",
      "resources", "formats", "pose", "gl", "figures"},
     {"sea"}, {"hull"}, {"vessel"}, {"manoeuvring"}, {"station"}, {"wake"}, {"solver"}, {"criteria"},
-    {"scenario"}, {"session"}, {"study"}, {"report"}, {"render"}, {"cli", "__main__"},
+    {"scenario"}, {"session"}, {"study"}, {"report"}, {"render"}, {"net"}, {"cli", "__main__"},
 )
 
 

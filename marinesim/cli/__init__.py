@@ -21,11 +21,11 @@ from typing import NoReturn
 from marinesim import __version__
 from marinesim.atomic import inputs_kept, signals_held
 from marinesim.cli import (assess, capability, examples, export, hull, operability, rao, render, replay, report, run,
-                           sea, trials, wake)
+                           sea, serve, trials, wake)
 from marinesim.errors import MarinesimError
 
-COMMANDS = (run, examples, render, export, assess, replay, report, trials, capability, operability, rao, hull, wake,
-            sea)
+COMMANDS = (run, serve, examples, render, export, assess, replay, report, trials, capability, operability, rao, hull,
+            wake, sea)
 """The command modules, in the order ``--help`` lists them."""
 
 

@@ -286,3 +286,39 @@ def _options_scenario(args: argparse.Namespace, path: Path, run: dict[str, float
         raise
     note_input(path)  # the run reads it: no output of the command may be written over it
     return scenario
+
+
+def next_log(name: str, folder: Path = Path("sessions")) -> Path:
+    """``folder/<name>-NNN.jsonl`` with the first number not taken: no session overwrites another."""
+    taken = {p.name for p in folder.glob(f"{name}-*.jsonl")} if folder.is_dir() else set()
+    number = next(n for n in range(1, len(taken) + 2) if f"{name}-{n:03d}.jsonl" not in taken)
+    return folder / f"{name}-{number:03d}.jsonl"
+
+
+def add_stream_options(p: argparse.ArgumentParser) -> None:
+    """``--nmea`` and ``--dis``: own-ship's state out to real equipment, each second."""
+    p.add_argument("--nmea", metavar="udp://HOST:PORT", help="stream NMEA 0183 (GGA, RMC, VTG, HDT, ROT, RSA, "
+                                                           "PASHR) at 1 Hz to this UDP address (an ECDIS, a helideck "
+                                                           "monitoring system); needs [environment] latitude_deg, "
+                                                           "longitude_deg")
+    p.add_argument("--dis", metavar="udp://HOST:PORT", help="send IEEE 1278.1 DIS Entity State PDUs for own-ship at "
+                                                          "1 Hz to this UDP address")
+
+
+def open_streams(args: argparse.Namespace, scenario):
+    """The NMEA and DIS streams ``--nmea`` and ``--dis`` ask for (None: neither), placed at the scenario's
+    ``[environment]`` position, their clock its ``time_utc`` (or midnight UTC, 1 January 2000)."""
+    if not (args.nmea or args.dis):
+        return None
+    from datetime import datetime, timezone
+
+    from marinesim.errors import ScenarioError
+    from marinesim.net.geo import Origin
+    from marinesim.net.streams import Streams
+
+    environment = scenario.environment
+    if environment.latitude_deg is None or environment.longitude_deg is None:
+        raise ScenarioError(f"{scenario.path}: --nmea and --dis need where the exercise is: [environment] "
+                            "latitude_deg and longitude_deg")
+    start = environment.time_utc or datetime(2000, 1, 1, tzinfo=timezone.utc)
+    return Streams(args.nmea, args.dis, Origin(environment.latitude_deg, environment.longitude_deg), start)

@@ -5,7 +5,8 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from marinesim.cli.common import add_motion_options, add_view_options, bars, motion_scenario, render_options
+from marinesim.cli.common import (add_motion_options, add_stream_options, add_view_options, bars, motion_scenario,
+                                  next_log, open_streams, render_options)
 
 HEADLESS_VIDEO = {"seconds": 10.0, "size": (640, 360), "fps": 25.0}
 """The video a headless ``run --video`` renders: short and small, so that a software renderer makes it in about
@@ -42,6 +43,15 @@ def add(commands: argparse._SubParsersAction) -> None:
                                             "a headless run of an exercise writes session.jsonl in its --out)")
     add_motion_options(p, "<out>/<RAO name>.toml: the run's output folder, --out or out/<RAO name>")
     add_view_options(p)
+    p.add_argument("--yaw-offset-deg", type=float, default=0.0, metavar="D",
+                   help="the bridge camera looks D deg to starboard of the bow (a 3-channel bridge: -60, 0, 60)")
+    g = p.add_argument_group("a station of a served exercise (marinesim serve)")
+    g.add_argument("--connect", metavar="ws://HOST:PORT/ws?token=T",
+                   help="follow the exercise marinesim serve runs there (the same scenario file): its clock, the "
+                        "instructor's changes and messages; this station's orders and reports (M) go to it")
+    g.add_argument("--station", default="bridge", help="this station's name, as the instructor's page lists it and "
+                                                        "addresses messages to it (default bridge)")
+    add_stream_options(p)
     p.set_defaults(handler=handle)
 
 
@@ -63,6 +73,9 @@ def handle(args: argparse.Namespace) -> int:
         print(f"manoeuvring: {vessel.ship.name}, {vessel.ship.describe()}")
     for note in scenario.notes:
         print(f"note: {note}")
+    streams = open_streams(args, scenario)
+    if args.connect:
+        return _station(args, scenario)
     if not args.headless:
         from marinesim.render.viewer import NoDisplay, Viewer
 
@@ -73,10 +86,15 @@ def handle(args: argparse.Namespace) -> int:
         except NoDisplay as reason:
             print(f"{reason}: running headless instead")
         else:
+            viewer.scene.cameras["bridge"].look_yaw_deg = -args.yaw_offset_deg
             print("viewer open: H lists the keys, ESC quits")
+            if streams is not None:
+                _stream_from_viewer(viewer, streams)
             viewer.run()
             return 0
     out_dir = args.out or Path("out") / scenario.name
+    if streams is not None:
+        _paced(scenario, streams)
     with reporting(bars(args.quiet)):
         headless = run_headless(Assembly(scenario), out_dir, log=print)
         for note in headless.notes:
@@ -93,11 +111,85 @@ def handle(args: argparse.Namespace) -> int:
     return 0
 
 
-def next_log(name: str, folder: Path = Path("sessions")) -> Path:
-    """``folder/<name>-NNN.jsonl`` with the first number not taken: no session overwrites another."""
-    taken = {p.name for p in folder.glob(f"{name}-*.jsonl")} if folder.is_dir() else set()
-    number = next(n for n in range(1, len(taken) + 2) if f"{name}-{n:03d}.jsonl" not in taken)
-    return folder / f"{name}-{number:03d}.jsonl"
+def _station(args: argparse.Namespace, scenario) -> int:
+    """Follow the exercise served at ``--connect`` as the station ``--station``: in the viewer, or without a display
+    headless, saying what the instructor sends this station."""
+    from marinesim.net.station import Station, follow_headless, station_url
+    from marinesim.progress import reporting
+
+    station_url(args.connect)  # refused before anything is built
+    if not args.headless:
+        from marinesim.render.viewer import NoDisplay, Viewer
+
+        try:
+            with reporting(bars(args.quiet)):
+                viewer = Viewer(scenario, args.camera, args.solver, options=render_options(args), log_path=None)
+        except NoDisplay as reason:
+            print(f"{reason}: following headless instead")
+        else:
+            viewer.scene.cameras["bridge"].look_yaw_deg = -args.yaw_offset_deg
+            viewer.scene.follow = station = Station.join(viewer.scene.exercise, args.connect, args.station,
+                                                         say=print)
+            print(f"station {args.station} open: following {station.link.address}; M reports to the instructor")
+            try:
+                viewer.run()
+            finally:
+                station.close()
+            return 0
+    from marinesim.session.exercise import Exercise
+    from marinesim.session.timeline import Simulation
+
+    with Simulation(scenario, wake=False) as simulation:
+        exercise = Exercise(simulation, log=print)
+        station = Station.join(exercise, args.connect, args.station, say=print)
+        shown = 0
+
+        def tell(_: Station) -> None:
+            nonlocal shown
+            messages = [(t, text, to) for t, text, to in exercise.said if to in ("all", args.station)]
+            for t, text, _to in messages[shown:]:
+                print(f"t {t:7.1f} s  instructor: {text}")
+            shown = len(messages)
+
+        print(f"station {args.station}: following {station.link.address} headless")
+        try:
+            follow_headless(station, tell)
+        finally:
+            station.close()
+        actions = sum(entry["kind"] == "action" for entry in station.journal)
+        print(f"station {args.station}: followed the exercise to t {exercise.sim.time:.1f} s "
+              f"({actions} action(s) applied at their times)")
+    return 0
+
+
+def _paced(scenario, streams) -> None:
+    """Run the exercise at real-time pace, streaming own-ship's state (``--nmea``, ``--dis``), before the headless
+    run's files are written."""
+    import asyncio
+
+    from marinesim.net.server import ExerciseServer
+    from marinesim.session.exercise import Exercise
+    from marinesim.session.timeline import Simulation
+
+    print(f"streaming own-ship in real time for {scenario.run.duration_s:g} s ({streams.describe()}); Ctrl-C stops")
+    with Simulation(scenario, wake=False) as simulation, streams:
+        asyncio.run(ExerciseServer(Exercise(simulation, log=print), None, streams=streams).run())
+    print(f"streamed {streams.sent_nmea} NMEA sentences and {streams.sent_dis} DIS PDUs")
+
+
+def _stream_from_viewer(viewer, streams) -> None:
+    """Own-ship's state out each second of the viewer's clock (``--nmea``, ``--dis``)."""
+    import numpy as np
+    import pyglet
+
+    streams.__enter__()
+
+    def send(_: float) -> None:
+        sim = viewer.scene.sim
+        if streams.due(sim.time):
+            streams.send(sim.time, {name: float(c[0]) for name, c in sim.frame(np.array([sim.time])).items()})
+
+    pyglet.clock.schedule_interval(send, 0.1)
 
 
 def _video(scenario, out_dir: Path, args: argparse.Namespace) -> dict[str, Path]:

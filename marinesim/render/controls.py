@@ -30,6 +30,9 @@ TIME_SCALES = (0.125, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0)
 FREE_SPEED_M_S = 40.0
 MESSAGE_S = 8.0
 """A status message stays up this long (s of wall time), then goes."""
+LAG_SHOWN_S = 0.5
+"""A station shows that it lags behind the served exercise once it is this far behind (s; it is a state message,
+a quarter of a second, behind as a rule)."""
 MAX_FRAME_S = 0.1
 """A frame never advances the simulation by more than this (s of wall time): after a stall or a
 paused debugger the ship does not jump, and the solver is not asked to catch up minutes."""
@@ -81,7 +84,8 @@ class Controls:
         """Every context this session's keys can act in: live or a replay, and the vessel's kind."""
         if self.scene.replay is not None:
             return {"always", "free", "replay"}
-        found = {"always", "free", "live", "typing"}
+        station = self.scene.follow is not None  # the instructor is elsewhere, on the served exercise's page
+        found = {"always", "free", "live", "typing", "follow" if station else "instructor"}
         sim = self.scene.sim
         if sim.vessel is not None:
             ship = sim.vessel.ship
@@ -90,7 +94,9 @@ class Controls:
             else:
                 found.add("station")
                 if sim.station is not None:
-                    found |= {"faults"} | ({"dp"} if ship.dp is not None else set())
+                    found |= ({"dp"} if ship.dp is not None else set())
+                    if not station:
+                        found |= {"faults"} | ({"dp_faults"} if ship.dp is not None else set())
         return found
 
     def help_lines(self) -> list[str]:
@@ -130,7 +136,12 @@ class Controls:
         self._opened_now = False
 
     def _act(self, action: str, **fields) -> None:
-        self.exercise.act(action, **fields)
+        """Apply ``action`` to the exercise; at a station of a served exercise, send it to the server, which
+        journals it and sends it back to every station."""
+        if self.scene.follow is not None:
+            self.scene.follow.send(action, fields)
+        else:
+            self.exercise.act(action, **fields)
 
     # the view and the session
 
@@ -176,8 +187,8 @@ class Controls:
 
     def send_message(self) -> None:
         text, self.typing = self.typing, None
-        if text.strip():
-            self._act("message", text=text)
+        if text.strip():  # at a station, a report to the instructor
+            self._act("report" if self.scene.follow is not None else "message", text=text)
 
     def cancel_message(self) -> None:
         self.typing = None
@@ -264,9 +275,7 @@ class Controls:
         holding (moored)."""
         sim = self.scene.sim
         ship, faults = sim.voyage.ship, sim.voyage.orders.faults
-        names = ([f"thruster:{t.name}" for t in ship.thrusters.units] if ship.thrusters is not None
-                 else [f"line:{name}" for name in ship.line_names])
-        left = [name for name in names if name not in faults]
+        left = [name for name in ship.unit_faults if name not in faults]
         if not left:
             self.say("every thruster is lost" if ship.thrusters is not None else "every line has parted")
             return
@@ -313,7 +322,7 @@ class Controls:
     def seek(self, t: float) -> None:
         """A replay's clock to ``t`` (s, within the session): forward through the log, back by starting again."""
         replay = self.scene.replay
-        t = min(max(t, 0.0), replay.log.end_s)
+        t = min(max(t, 0.0), replay.source.end_s)
         if t >= self.scene.sim.time:
             replay.advance_to(t)
             self.scene.sim.seek(t)
@@ -345,7 +354,11 @@ class Controls:
     def status(self) -> list[str]:
         state = "PAUSED" if self.paused else f"time x{self.time_scale:g}"
         recording = f"   REC {self.recorder.rows} rows" if self.recorder else ""
+        follow = self.scene.follow
         mode = "   REPLAY" if self.scene.replay is not None else ""
+        if follow is not None:
+            lag = follow.lag_s
+            mode = f"   STATION {follow.name}" + (f"   LAGS {lag:.1f} s" if lag > LAG_SHOWN_S else "")
         lines = [f"{state}{recording}{mode}   H: help"]
         if self.typing is not None:
             lines.append(f"message: {self.typing}_   (ENTER send, ESC cancel)")
@@ -356,10 +369,10 @@ class Controls:
         replay = self.scene.replay
         if replay is None:
             return None
-        end = max(replay.log.end_s, 1e-9)
+        end = max(replay.source.end_s, 1e-9)
         marks = [(entry["t"] / end, LEVEL_COLORS["exceeded"] if entry["kind"] == "alarm" else MESSAGE_COLOR)
-                 for entry in replay.log.entries if entry["kind"] in ("event", "alarm")]
+                 for entry in replay.source.entries if entry["kind"] in ("event", "alarm")]
         return Slider(self.scene.sim.time / end, marks,
-                      f"replay {self.scene.sim.time:7.1f} / {replay.log.end_s:.1f} s   "
+                      f"replay {self.scene.sim.time:7.1f} / {replay.source.end_s:.1f} s   "
                       "LEFT/RIGHT -/+30 s  HOME start  click: seek")
 

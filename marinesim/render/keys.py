@@ -42,11 +42,14 @@ CONTEXTS = {
     "always": "always",
     "free": "the free camera, while held",
     "live": "a live session",
+    "instructor": "the instructor at the viewer (not a station)",
+    "follow": "a station of a served exercise (run --connect)",
     "typing": "typing a message (M)",
     "ship": "a ship under helm and engine",
     "station": "a vessel held on station",
-    "faults": "a vessel on DP or moorings",
+    "faults": "the instructor, a vessel on DP or moorings",
     "dp": "a vessel on DP",
+    "dp_faults": "the instructor, a vessel on DP",
     "replay": "a replay",
 }
 """Where a binding acts, and the words for it: a session is in several at once (a live DP session: always, live,
@@ -118,7 +121,7 @@ KEYMAP = (
         Binding(("R",), "toggle_recording", "start / stop recording the motions (CSV)"),
         Binding(("ESCAPE",), "quit", "quit (a live session writes its log)"),
     )),
-    Group("sea", f"the sea (instructor; each change over {CHANGE_RAMP_S:g} s)", "live", (
+    Group("sea", f"the sea (instructor; each change over {CHANGE_RAMP_S:g} s)", "instructor", (
         Binding(("BRACKETRIGHT",), "wave_height", f"wave height up (x {HS_STEP:g})", (1,)),
         Binding(("BRACKETLEFT",), "wave_height", f"wave height down (/ {HS_STEP:g})", (-1,)),
         Binding(("PERIOD",), "wave_period", f"wave period up (x {TP_STEP:g})", (1,)),
@@ -128,13 +131,14 @@ KEYMAP = (
     )),
     Group("exercise", "the exercise", "live", (
         Binding(("ENTER",), "acknowledge", "acknowledge the alarms"),
-        Binding(("N",), "trigger_next", "instructor: the next scripted event now"),
-        Binding(("M",), "start_message", "instructor: type a message"),
+        Binding(("N",), "trigger_next", "instructor: the next scripted event now", when="instructor"),
+        Binding(("M",), "start_message", "instructor: type a message", when="instructor"),
+        Binding(("M",), "start_message", "station: type a report to the instructor", when="follow"),
         Binding(("ENTER",), "send_message", "typing a message: send it", when="typing"),
         Binding(("ESCAPE",), "cancel_message", "typing a message: drop it", when="typing"),
         Binding(("BACKSPACE",), "erase", "typing a message: rub out a character", when="typing"),
     )),
-    Group("instructor", "the instructor: weather and faults", "live", (
+    Group("instructor", "the instructor: weather and faults", "instructor", (
         Binding(("F",), "visibility", f"fog thickens (visibility / {VISIBILITY_STEP:g})", (-1,)),
         Binding(("G",), "visibility", f"fog lifts (visibility x {VISIBILITY_STEP:g})", (1,)),
         Binding(("K",), "clouds", "cloud cover + 1 okta", (1,)),
@@ -143,7 +147,7 @@ KEYMAP = (
         Binding(("Y",), "clock", f"clock - {TIME_STEP_H:g} h", (-1,)),
         Binding(("O",), "rain", "rain: none / light / heavy / violent showers"),
         Binding(("L",), "next_fault", "next thruster lost (DP) or line parted", when="faults"),
-        Binding(("Q",), "drift_reference", "the position reference drifts (DP)", when="dp"),
+        Binding(("Q",), "drift_reference", "the position reference drifts (DP)", when="dp_faults"),
     )),
     Group("ship", "the ship (trainee): helm, telegraph, autopilot", "ship", (
         Binding(("LEFT",), "helm", f"helm {HELM_STEP_DEG:g} deg to port (hand steering)", (-1,)),

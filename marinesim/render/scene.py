@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from datetime import timedelta, timezone
+from typing import Any, Protocol
 
 import moderngl
 import numpy as np
@@ -51,6 +52,23 @@ HELIDECK = "helideck"
 HELIDECK_LIGHTS = {Level.OK: ("GREEN", "landing permitted"), Level.CAUTION: ("AMBER", "landing with caution"),
                    Level.EXCEEDED: ("RED", "landing not permitted"), Level.SETTLING: ("--", "measuring motions")}
 """Helideck monitoring status by the worst level of the helideck's criteria (CAP 437 style)."""
+
+
+class Follow(Protocol):
+    """A served exercise the scene's clock follows, at a station (:class:`marinesim.net.station.Station`)."""
+
+    name: str
+    """The station's name: the instructor's messages to it are shown with those to all."""
+
+    @property
+    def lag_s(self) -> float:
+        """How far the scene's exercise is behind the server's (s)."""
+
+    def step(self, dt: float) -> None:
+        """Move the scene's exercise on by up to ``dt`` s, at the server's pace, never past the server's time."""
+
+    def send(self, action: str, fields: dict[str, Any]) -> None:
+        """The trainee's action, to the server (it comes back in the journal, and is applied then)."""
 
 
 def solver_wanted(ctx: moderngl.Context, choice: str) -> bool:
@@ -118,6 +136,8 @@ class Scene:
         video, a screenshot) shows no such hints."""
         self.replay: Replay | None = None
         """The session log the clock follows (a replay), or None (live)."""
+        self.follow: Follow | None = None
+        """The served exercise the clock follows (a station), or None."""
         self.slider: Slider | None = None
 
     @property
@@ -137,7 +157,9 @@ class Scene:
     def step(self, dt: float) -> None:
         """Advance the simulation ``dt`` s (through the replay's actions in a replay), sample the strip
         charts, bring the GPU up to date."""
-        if self.replay is not None:
+        if self.follow is not None:
+            self.follow.step(dt)
+        elif self.replay is not None:
             self.replay.advance_to(self.sim.time + dt)
         else:
             self.exercise.advance(dt)
@@ -170,8 +192,9 @@ class Scene:
                 lines, panel = self.hud_lines(size[0]), self.criteria_panel(width=size[0])
             else:
                 lines, panel = self.strip_lines(size[0]), self.criteria_strip(size[0])
-            self.hud.draw(size, lines, self.charts(), help_lines, panel, self.exercise.messages(), self.banners(),
-                          self.slider, self.footprint())
+            station = self.follow.name if self.follow is not None else None
+            self.hud.draw(size, lines, self.charts(), help_lines, panel, self.exercise.messages(station=station),
+                          self.banners(), self.slider, self.footprint())
 
     def charts(self) -> list[StripChart]:
         """The strip charts drawn: the motions' over the last minute, with the panels and a vessel."""

@@ -119,7 +119,7 @@ class Viewer:
         scene.clock = FrameClock()
         scene.interactive = True
         if self.replay_log is not None:
-            scene.replay = Replay(scene.exercise, self.replay_log)
+            scene.replay = Replay(scene.exercise, self.replay_log.actions(), self.replay_log)
         return scene
 
     def _restart(self, t: float) -> None:

@@ -23,7 +23,7 @@ from marinesim.criteria.sickness import MAX_WF_DT_S
 from marinesim.scenario import Scenario
 from marinesim.sea.seastate import SeaState
 from marinesim.session.decisions import judge
-from marinesim.session.exercise import AlarmResult, CriterionResult, EventResult, Exercise, ran_words
+from marinesim.session.exercise import EVERYONE, AlarmResult, CriterionResult, EventResult, Exercise, ran_words
 from marinesim.session.log import SessionLog
 from marinesim.session.sidecar import sha256
 from marinesim.session.station import line_columns, station_record, thruster_columns
@@ -200,7 +200,9 @@ def debrief(exercise: Exercise, log: SessionLog | None = None) -> Debrief:
             objectives.append(Objective(objective.text, list(objective.criteria), verdict))
         briefing = Briefing(scenario.briefing.text, objectives)
     messages = [Message(h.time_s, h.event.message, "event") for h in exercise.happened if h.event.message]
-    messages += [Message(t, text, "instructor") for t, text in exercise.said]
+    messages += [Message(t, text, "instructor" if to == EVERYONE else f"instructor to {to}")
+                 for t, text, to in exercise.said]
+    messages += [Message(t, text, f"report from {station or 'the trainee'}") for t, station, text in exercise.reports]
     actions = [Action(e["t"], _action(e)) for e in exercise.journal if e["kind"] == "action"]
     sickness = []
     if exercise.monitor is not None:
@@ -285,7 +287,10 @@ def _action(entry: dict) -> str:
     if entry["action"] == "trigger":
         return f"event {fields['index']} triggered early"
     if entry["action"] == "message":
-        return f"message: {fields['text']}"
+        to = fields.get("to", EVERYONE)
+        return f"message{'' if to == EVERYONE else ' to ' + to}: {fields['text']}"
+    if entry["action"] == "report":
+        return f"report from {fields.get('station') or 'the trainee'}: {fields['text']}"
     return "alarms acknowledged"
 
 

@@ -355,9 +355,10 @@ class EnvironmentOptions(Section):
         None, description="date and time of the run's start, with its offset (TOML 2026-11-25T15:30:00Z): the sun "
                           "and the moon at latitude_deg, longitude_deg; instead of the sun's keys")
     latitude_deg: Annotated[float | None, Quantity("deg", ge=-90.0, le=90.0)] = Field(
-        None, description="where the run is, north positive (with time_utc)")
+        None, description="where the run is, north positive: the sun's place with time_utc, and the position "
+                          "--nmea and --dis give")
     longitude_deg: Annotated[float | None, Quantity("deg", ge=-180.0, le=180.0)] = Field(
-        None, description="where the run is, east positive (with time_utc)")
+        None, description="where the run is, east positive (as latitude_deg)")
     sun_azimuth_deg: Annotated[float, Quantity("deg", ge=0.0, lt=360.0)] = Field(
         200.0, description="compass bearing of the sun (without time_utc)")
     sun_elevation_deg: Annotated[float, Quantity("deg", ge=-90.0, le=90.0)] = Field(
@@ -386,10 +387,10 @@ class EnvironmentOptions(Section):
     def _one_way_to_place_the_sun(self) -> EnvironmentOptions:
         position = {"latitude_deg", "longitude_deg"} & self.model_fields_set
         sun = {"sun_azimuth_deg", "sun_elevation_deg"} & self.model_fields_set
-        if self.time_utc is None and position:
-            raise PydanticCustomError("environment", "latitude_deg and longitude_deg place the sun only with time_utc")
         if self.time_utc is not None and len(position) < 2:
             raise PydanticCustomError("environment", "time_utc needs latitude_deg and longitude_deg")
+        if len(position) == 1:
+            raise PydanticCustomError("environment", "latitude_deg and longitude_deg go together")
         if self.time_utc is not None and sun:
             raise PydanticCustomError("environment", "give time_utc (the sun from the date) or the sun's keys, "
                                                      "not both")

@@ -191,10 +191,31 @@ ORDER_KEYS = frozenset({"rudder_deg", "engine", "speed_kn", "autopilot", "course
 WEATHER_KEYS = frozenset({*WEATHER, "hours"})
 """What a live weather change may give (:meth:`EnvironmentOptions.changed`'s keywords): new values, the clock moved."""
 ACTIONS = {"change": CHANGE_KEYS, "order": ORDER_KEYS, "weather": WEATHER_KEYS, "trigger": frozenset({"index"}),
-           "message": frozenset({"text"}), "acknowledge": frozenset()}
-"""Live actions and their fields: what :meth:`Exercise.act` applies and a replay applies again."""
+           "message": frozenset({"text", "to"}), "acknowledge": frozenset(), "report": frozenset({"text", "station"})}
+"""Live actions and their fields: what :meth:`Exercise.act` applies and a replay applies again. A ``message`` is the
+instructor's, to every station or the one named ``to``; a ``report`` is a trainee's at ``station`` to the
+instructor."""
 MAX_MESSAGE = 200
-"""The longest message an instructor may insert (characters)."""
+"""The longest message an instructor or a trainee may send (characters)."""
+MAX_STATION = 40
+"""The longest name of a station (characters): ``bridge``, ``crane``, ``helideck``..."""
+EVERYONE = "all"
+"""A message to every station."""
+
+
+def _words(text: object) -> str:
+    """A message's text on one line; refused empty or longer than :data:`MAX_MESSAGE`."""
+    text = " ".join(str(text).split())
+    if not text or len(text) > MAX_MESSAGE:
+        raise ParameterError(f"a message needs 1 to {MAX_MESSAGE} characters, got {len(text)}")
+    return text
+
+
+def _station(name: object) -> str:
+    """A station's name as given (:data:`EVERYONE` for all); refused if not a short name."""
+    if not (isinstance(name, str) and len(name) <= MAX_STATION and name.isprintable()):
+        raise ParameterError(f"a station's name needs at most {MAX_STATION} printable characters, got {name!r}")
+    return name
 
 
 def quiet(line: str) -> None:
@@ -252,8 +273,10 @@ class Exercise:
         self.monitor = Monitor(criteria, vessel.points, self.dt, self.duration_s) if vessel and criteria else None
         self.happened: list[Happened] = []
         self.alarms: list[Alarm] = []
-        self.said: list[tuple[float, str]] = []
-        """The instructor's messages: (time s, text)."""
+        self.said: list[tuple[float, str, str]] = []
+        """The instructor's messages: (time s, text, to: a station's name or :data:`EVERYONE`)."""
+        self.reports: list[tuple[float, str, str]] = []
+        """The trainees' reports to the instructor: (time s, station, text)."""
         self.journal: list[dict[str, Any]] = []
         """Everything that happened, in time order: ``{"t": s, "kind": ..., ...}`` (the session log's entries)."""
         self.evaluated_s: list[float] = []
@@ -426,7 +449,9 @@ class Exercise:
         elif action == "trigger":
             self._trigger(fields["index"])
         elif action == "message":
-            self._say(fields["text"])
+            self._say(fields["text"], fields.get("to", EVERYONE))
+        elif action == "report":
+            self._report(fields["text"], fields.get("station", ""))
         self.note("action", action=action, **fields)
         if action == "acknowledge":
             self._acknowledge()
@@ -452,12 +477,15 @@ class Exercise:
             self._change(event, now + (PREPARE_S if event.sea is not None else 0.0))
         self._happen(index, now, early=True)
 
-    def _say(self, text: str) -> None:
-        text = " ".join(str(text).split())
-        if not text or len(text) > MAX_MESSAGE:
-            raise ParameterError(f"a message needs 1 to {MAX_MESSAGE} characters, got {len(text)}")
-        self.said.append((self.sim.time, text))
-        self.log(f"t {self.sim.time:7.1f} s  instructor: {text}")
+    def _say(self, text: str, to: str) -> None:
+        text = _words(text)
+        self.said.append((self.sim.time, text, _station(to)))
+        self.log(f"t {self.sim.time:7.1f} s  instructor{'' if to == EVERYONE else ' to ' + to}: {text}")
+
+    def _report(self, text: str, station: str) -> None:
+        text = _words(text)
+        self.reports.append((self.sim.time, _station(station), text))
+        self.log(f"t {self.sim.time:7.1f} s  report from {station or 'the trainee'}: {text}")
 
     def _acknowledge(self) -> None:
         waiting = [alarm for alarm in self.alarms if alarm.acknowledged_s is None]
@@ -473,11 +501,13 @@ class Exercise:
 
     # -- what it shows ------------------------------------------------------------------------
 
-    def messages(self, t: float | None = None, span_s: float = 30.0) -> list[str]:
-        """The messages of the events that happened within ``span_s`` before ``t`` (default now), newest last."""
+    def messages(self, t: float | None = None, span_s: float = 30.0, station: str | None = None) -> list[str]:
+        """The messages of the events that happened within ``span_s`` before ``t`` (default now), newest last: the
+        instructor's to everyone and, at a named ``station``, to it (None: all of them)."""
         t = self.sim.time if t is None else t
         said = [(h.time_s, h.event.message) for h in self.happened if h.event.message]
-        said += [(time_s, f"instructor: {text}") for time_s, text in self.said]
+        said += [(time_s, f"instructor: {text}") for time_s, text, to in self.said
+                 if station is None or to in (EVERYONE, station)]
         return [f"t {time_s:6.0f} s  {text}" for time_s, text in sorted(said, key=lambda m: m[0])
                 if t - span_s <= time_s <= t]
 

@@ -41,7 +41,7 @@ from marinesim.formats import SIZE_LIMITS, check_file
 from marinesim.manoeuvring.actuators import TELEGRAPH
 from marinesim.scenario import Scenario
 from marinesim.scenario.model import MAX_DURATION_S
-from marinesim.session.exercise import ACTIONS, CHANGE_KEYS, MAX_MESSAGE, Exercise
+from marinesim.session.exercise import ACTIONS, CHANGE_KEYS, MAX_MESSAGE, MAX_STATION, WEATHER_KEYS, Exercise
 from marinesim.session.sidecar import sha256, write_table
 from marinesim.session.signing import installation_key, key_id, signature
 
@@ -260,30 +260,41 @@ def _sidecar_problems(path: Path, data: bytes, digest: str) -> list[tuple[str, s
 
 
 def _check_action(path: Path, number: int, entry: dict) -> None:
+    problem = action_problem(entry)
+    if problem is not None:
+        raise FileFormatError(path, number, problem)
+
+
+def action_problem(entry: dict) -> str | None:
+    """What is wrong with the action ``entry`` (``{"action": ..., its fields}``; ``t`` and ``kind`` aside) in one
+    line naming the key and what was expected, or None: what a log's reader and the exercise server both ask."""
     action = entry.get("action")
     fields = {key: value for key, value in entry.items() if key not in ("t", "kind", "action")}
     if action not in ACTIONS:
-        raise FileFormatError(path, number, f"key 'action': expected one of {', '.join(ACTIONS)}, got {action!r}")
+        return f"key 'action': expected one of {', '.join(ACTIONS)}, got {action!r}"
     unknown = sorted(fields.keys() - ACTIONS[action])
     if unknown:
-        raise FileFormatError(path, number, f"{action}: unknown key {unknown[0]!r} (known: "
-                         f"{', '.join(sorted(ACTIONS[action])) or 'none'})")
+        return f"{action}: unknown key {unknown[0]!r} (known: {', '.join(sorted(ACTIONS[action])) or 'none'})"
     for key, value in fields.items():
-        if key in CHANGE_KEYS | {"rudder_deg", "course_deg", "set_north_m", "set_east_m"} and not _is(value, float):
-            raise FileFormatError(path, number, f"key {key!r}: expected a number, got {value!r}")
+        if key in CHANGE_KEYS | WEATHER_KEYS | {"rudder_deg", "course_deg", "set_north_m", "set_east_m"} \
+                and not _is(value, float):
+            return f"key {key!r}: expected a number, got {value!r}"
     if action == "order":
         if "engine" in fields and fields["engine"] not in TELEGRAPH:
-            raise FileFormatError(path, number, f"key 'engine': expected one of {', '.join(TELEGRAPH)}, "
-                                                f"got {fields['engine']!r}")
+            return f"key 'engine': expected one of {', '.join(TELEGRAPH)}, got {fields['engine']!r}"
         if "autopilot" in fields and not isinstance(fields["autopilot"], bool):
-            raise FileFormatError(path, number, f"key 'autopilot': expected true or false, got {fields['autopilot']!r}")
+            return f"key 'autopilot': expected true or false, got {fields['autopilot']!r}"
         if "fault" in fields and not (isinstance(fields["fault"], str) and 0 < len(fields["fault"]) <= 80):
-            raise FileFormatError(path, number, f"key 'fault': expected a fault's name (1 to 80 characters), got "
-                                                f"{fields['fault']!r}")
+            return f"key 'fault': expected a fault's name (1 to 80 characters), got {fields['fault']!r}"
     if action == "trigger" and not _is(fields.get("index"), int):
-        raise FileFormatError(path, number, f"key 'index': expected an event's index, got {fields.get('index')!r}")
-    if action == "message" and not (isinstance(fields.get("text"), str) and 0 < len(fields["text"]) <= MAX_MESSAGE):
-        raise FileFormatError(path, number, f"key 'text': expected 1 to {MAX_MESSAGE} characters")
+        return f"key 'index': expected an event's index, got {fields.get('index')!r}"
+    if action in ("message", "report") and not (isinstance(fields.get("text"), str)
+                                                and 0 < len(fields["text"]) <= MAX_MESSAGE):
+        return f"key 'text': expected 1 to {MAX_MESSAGE} characters"
+    for key in ("to", "station"):
+        if key in fields and not (isinstance(fields[key], str) and len(fields[key]) <= MAX_STATION):
+            return f"key {key!r}: expected a station's name of at most {MAX_STATION} characters, got {fields[key]!r}"
+    return None
 
 
 def _is(value: Any, kind: type) -> bool:

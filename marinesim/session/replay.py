@@ -47,16 +47,22 @@ def session_scenario(log: SessionLog, where: Path) -> Scenario:
 
 
 class Replay:
-    """Moves ``exercise`` (a fresh one of the session's scenario) through ``log``, its actions at their times."""
+    """Moves ``exercise`` (a fresh one of the session's scenario) through ``actions`` (action entries of a journal,
+    in time order), each at its time; more may be added as they come (:meth:`add`: a station following a served
+    exercise). ``source``: the log they were read from, named with its line where one is refused."""
 
-    def __init__(self, exercise: Exercise, log: SessionLog) -> None:
-        self.exercise, self.log = exercise, log
-        self._actions = log.actions()
+    def __init__(self, exercise: Exercise, actions: list[dict], source: SessionLog | None = None) -> None:
+        self.exercise, self.source = exercise, source
+        self._actions = list(actions)
         self._next = 0
 
     @property
     def time(self) -> float:
         return self.exercise.sim.time
+
+    def add(self, entries: Sequence[dict]) -> None:
+        """Journal ``entries`` that came since: the actions among them are applied at their times."""
+        self._actions += [entry for entry in entries if entry.get("kind") == "action"]
 
     def advance_to(self, t: float, before_action: Callable[[], None] | None = None) -> None:
         """Go on to ``t`` (s), applying the actions on the way; ``before_action()`` runs with the clock at
@@ -69,7 +75,10 @@ class Replay:
             try:
                 self.exercise.act(entry["action"], **{k: v for k, v in entry.items() if k not in SKIP})
             except MarinesimError as error:  # an action the session could not have taken: the log was edited
-                raise FileFormatError(self.log.path, self.log.line_of(entry), f"{entry['action']}: {error}") from None
+                if self.source is None:
+                    raise
+                raise FileFormatError(self.source.path, self.source.line_of(entry),
+                                      f"{entry['action']}: {error}") from None
             self._next += 1
         self.exercise.advance_to(t)
 
@@ -83,7 +92,7 @@ def replay_session(source: Path | SessionLog, export: Path | None = None, watch:
 
     def drive(exercise: Exercise) -> None:
         recorder = Recorder(exercise, export) if export is not None else None
-        replay = Replay(exercise, session)
+        replay = Replay(exercise, session.actions(), session)
         end = session.end_s
         with task("replay", max(round(end), 1), unit="s") as bar:
             while replay.time < end:

@@ -269,6 +269,13 @@ class Station:
     def line_names(self) -> tuple[str, ...]:
         return () if self.moorings is None else self.moorings.names
 
+    @property
+    def unit_faults(self) -> tuple[str, ...]:
+        """The faults an instructor fails one unit with, in order: each thruster lost (DP), else each line parted."""
+        if self.thrusters is not None:
+            return tuple(f"thruster:{unit.name}" for unit in self.thrusters.units)
+        return tuple(f"line:{name}" for name in self.line_names)
+
     def line_tensions(self, s: ShipState, faults: frozenset[str]) -> np.ndarray:
         """Each mooring line's fairlead tension (N, (n_lines,)) in state ``s`` with ``faults``."""
         return self._lines(faults).tensions(s.north, s.east, s.psi)

@@ -1,0 +1,461 @@
+"""``marinesim serve``: one exercise, run at real-time pace in one authoritative process, for an instructor's web
+page and the stations that follow it, over WebSockets (aiohttp).
+
+The exercise (:class:`~marinesim.session.exercise.Exercise`: timeline, own-ship, criteria, alarms, journal) moves
+on every :data:`TICK_S` of wall time to the time the :class:`Pace` gives (frozen, or scaled). Actions from the page
+and the stations are checked as a session log's are (:func:`~marinesim.session.log.action_problem`), queued, and
+applied at the start of the next tick, at the exercise's time then, through :meth:`Exercise.act`: the journal is the
+one record, the session log is written from it when the exercise ends, and ``replay``/``report`` read it as they
+read a viewer's. Every :data:`STATE_S` each client gets the state (own-ship, criteria, alarms, the sea and the
+weather) and the journal entries since the last; a station applies their actions to its own copy of the exercise
+at the same times (:mod:`marinesim.net.station`), so it sees what the server sees.
+
+Safe by default: it binds the loopback unless told otherwise; the page, the WebSocket and every message need the
+token printed at start (compared in constant time); a message is at most :data:`MAX_MESSAGE_BYTES`, a client at most
+:data:`RATE_PER_S` a second (:data:`BURST` at once): what goes beyond is refused with a reason and changes nothing.
+The protocol is in ``docs/NETWORK.md``.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import hmac
+import json
+import math
+import re
+import secrets
+import time
+from collections import deque
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from marinesim import __version__
+from marinesim.angles import wave_compass_from_beta
+from marinesim.errors import MarinesimError, ParameterError
+from marinesim.session.exercise import Exercise, quiet
+from marinesim.session.log import action_problem, write_log
+from marinesim.session.sidecar import sha256
+
+TICK_S = 0.1
+"""The exercise moves on every this many seconds of wall time."""
+STATE_S = 0.25
+"""Every client gets the state this often (s of wall time): four times a second."""
+TRACK_S = 5.0
+"""Own-ship's track as the page draws it: one point every this many simulated seconds."""
+PREDICT_S, PREDICT_STEP_S = 180.0, 10.0
+"""The predicted track: this far ahead (s), a point every this many (s), at the present speed and rate of turn."""
+MAX_MESSAGE_BYTES = 4096
+"""The largest message a client may send (bytes); a larger one closes its connection (WebSocket code 1009)."""
+RATE_PER_S, BURST = 20.0, 40
+"""A client's messages: this many a second on average, this many at once; those beyond are refused."""
+SCALES = (0.25, 0.5, 1.0, 2.0, 4.0, 8.0)
+"""The time scales an instructor may set (``marinesim serve --time-scale`` offers the same)."""
+PAGE = Path(__file__).parent / "page"
+"""The instructor page's files (HTML, JS, CSS, uPlot)."""
+
+
+class Pace:
+    """The exercise's time (s) against the wall clock ``now()`` (s): ``scale`` simulated seconds a second, none while
+    frozen; each change starts again from the time reached."""
+
+    def __init__(self, start_s: float = 0.0, now: Callable[[], float] = time.monotonic) -> None:
+        self._now = now
+        self._anchor = (start_s, now())
+        self.scale = 1.0
+        self.frozen = False
+
+    def time(self) -> float:
+        sim, wall = self._anchor
+        return sim if self.frozen else sim + (self._now() - wall) * self.scale
+
+    def _restart(self) -> None:
+        self._anchor = (self.time(), self._now())
+
+    def freeze(self) -> None:
+        self._restart()
+        self.frozen = True
+
+    def resume(self) -> None:
+        self._restart()
+        self.frozen = False
+
+    def set_scale(self, scale: float) -> None:
+        self._restart()
+        self.scale = scale
+
+
+class Bucket:
+    """A token bucket: :data:`RATE_PER_S` messages a second, :data:`BURST` at once."""
+
+    def __init__(self, now: Callable[[], float] = time.monotonic) -> None:
+        self._now, self.tokens, self._at = now, float(BURST), now()
+
+    def take(self) -> bool:
+        now = self._now()
+        self.tokens = min(BURST, self.tokens + (now - self._at) * RATE_PER_S)
+        self._at = now
+        if self.tokens < 1.0:
+            return False
+        self.tokens -= 1.0
+        return True
+
+
+@dataclass
+class Load:
+    """The ticks' wall times (s): how many, their sum, the longest, and how many took longer than :data:`TICK_S`."""
+
+    ticks: int = 0
+    total_s: float = 0.0
+    longest_s: float = 0.0
+    over_budget: int = 0
+
+    def add(self, seconds: float) -> None:
+        self.ticks += 1
+        self.total_s += seconds
+        self.longest_s = max(self.longest_s, seconds)
+        self.over_budget += seconds > TICK_S
+
+
+@dataclass(eq=False)
+class Client:
+    """One connected page or station: its socket, its role, its station's name, its message budget."""
+
+    ws: Any
+    role: str = ""
+    station: str = ""
+    bucket: Bucket = field(default_factory=Bucket)
+    sent: int = 0
+    """Journal entries it has been sent."""
+    lag_s: float | None = None
+    """How far the station's own copy of the exercise is behind the server's (s), as it last said."""
+
+
+def ship_state(exercise: Exercise) -> dict[str, Any] | None:
+    """Own-ship now, as the page shows it (None without a vessel): the record's row at the exercise's time (position
+    north and east of the start in m, compass heading, course and speed over ground, rate of turn, rudder, roll,
+    pitch, heave), the set course and the engine order."""
+    sim = exercise.sim
+    if sim.vessel is None:
+        return None
+    row = {name: float(column[0]) for name, column in sim.frame(np.array([sim.time])).items()}
+    conning = sim.conning()
+    keys = ("north_m", "east_m", "heading_deg", "course_over_ground_deg", "speed_over_ground_kn",
+            "rate_of_turn_deg_min", "rudder_deg", "roll_deg", "pitch_deg", "heave_m")
+    return {key: round(row[key], 4) for key in keys} | {"course_deg": conning["course_deg"],
+                                                          "engine": conning["engine"]}
+
+
+def predicted(ship: dict[str, Any]) -> list[list[float]]:
+    """The track ahead (north, east in m) over :data:`PREDICT_S` at the ship's present speed and course over ground,
+    turning at her present rate: the curved predictor an ECDIS draws."""
+    speed = ship["speed_over_ground_kn"] * 1852.0 / 3600.0
+    course = math.radians(ship["course_over_ground_deg"])
+    rate = math.radians(ship["rate_of_turn_deg_min"]) / 60.0
+    points = []
+    for t in np.arange(PREDICT_STEP_S, PREDICT_S + 1e-9, PREDICT_STEP_S):
+        if abs(rate) < 1e-6:
+            north, east = speed * t * math.cos(course), speed * t * math.sin(course)
+        else:  # a circle of radius speed / rate
+            north = speed / rate * (math.sin(course + rate * t) - math.sin(course))
+            east = speed / rate * (math.cos(course) - math.cos(course + rate * t))
+        points.append([round(ship["north_m"] + north, 2), round(ship["east_m"] + east, 2)])
+    return points
+
+
+def paragraphs(text: str) -> str:
+    """``text`` as a page flows it: the lines of a paragraph joined, paragraphs kept apart by a blank line."""
+    return "\n\n".join(" ".join(block.split()) for block in re.split(r"\n\s*\n", text.strip()) if block.strip())
+
+
+def describe(exercise: Exercise, faults: tuple[str, ...]) -> dict[str, Any]:
+    """The exercise as the page's welcome gives it: name, briefing, objectives, events, criteria, faults."""
+    scenario = exercise.scenario
+    briefing = scenario.briefing
+    events = [{"index": i, "trigger": f"at {e.at_s:g} s" if e.at_s is not None else f"when {e.condition}",
+               "what": e.describe().partition(": ")[2], "message": e.message} for i, e in enumerate(exercise.events)]
+    criteria = [{"name": c.label, "unit": c.measure.unit, "limit": c.limit, "caution": c.caution}
+                for c in exercise.criteria]
+    return {"name": scenario.name, "title": scenario.name.replace("_", " "), "sha256": sha256(scenario.path),
+            "briefing": paragraphs(briefing.text) if briefing else "",
+            "objectives": [o.text for o in briefing.objectives] if briefing else [],
+            "duration_s": exercise.duration_s, "seed": scenario.run.seed, "events": events, "criteria": criteria,
+            "faults": list(faults)}
+
+
+class ExerciseServer:
+    """Serves ``exercise`` (fresh, at time 0) with ``token``; its session log goes to ``log_path`` when it ends (None:
+    none; a paced run that only streams, :meth:`run` without :meth:`start`).
+    ``streams``: where own-ship's state goes out each second besides (NMEA, DIS; :mod:`marinesim.net.streams`);
+    ``say``: where the server's lines go (a station joined, the exercise ended)."""
+
+    def __init__(self, exercise: Exercise, log_path: Path | None, token: str | None = None, streams: Any = None,
+                 say: Callable[[str], None] = quiet, pace: Pace | None = None) -> None:
+        self.exercise, self.log_path, self.streams, self.say = exercise, log_path, streams, say
+        self.token = token or secrets.token_urlsafe(24)
+        self.pace = pace or Pace()
+        self.clients: list[Client] = []
+        self.track: list[list[float]] = []
+        self.ended = asyncio.Event()
+        self.log_written: Path | None = None
+        self.load = Load()
+        """How long each tick took (wall s): the budget is :data:`TICK_S`."""
+        self._queue: deque[tuple[Client, dict]] = deque()
+        self._stop = False
+        sim = exercise.sim
+        ship = sim.voyage.ship if sim.vessel is not None else None
+        faults = ((*ship.unit_faults, *(("reference drift",) if ship.dp is not None else ()))
+                  if sim.station is not None else ())
+        self.scenario = describe(exercise, faults)
+        self._runner = None
+
+    # -- the web side --------------------------------------------------------------------------
+
+    def app(self):
+        from aiohttp import web
+
+        app = web.Application(client_max_size=MAX_MESSAGE_BYTES)
+        app.router.add_get("/", self._page)
+        app.router.add_get("/ws", self._socket)
+        app.router.add_static("/static/", PAGE, show_index=False, follow_symlinks=False)
+        return app
+
+    async def start(self, host: str = "127.0.0.1", port: int = 8765) -> tuple[str, int]:
+        """Listen on ``host:port`` (port 0: any free one); returns the address bound."""
+        from aiohttp import web
+
+        self._runner = web.AppRunner(self.app(), access_log=None)
+        await self._runner.setup()
+        site = web.TCPSite(self._runner, host, port, reuse_address=True)
+        try:
+            await site.start()
+        except OSError as error:
+            await self._runner.cleanup()
+            raise ParameterError(f"--bind {host}:{port}: cannot listen there ({error.strerror or error})") from None
+        bound = site._server.sockets[0].getsockname()
+        return bound[0], bound[1]
+
+    async def close(self) -> None:
+        for client in list(self.clients):
+            await client.ws.close()
+        if self._runner is not None:
+            await self._runner.cleanup()
+
+    def _allowed(self, token: object) -> bool:
+        return isinstance(token, str) and hmac.compare_digest(token.encode(), self.token.encode())
+
+    async def _page(self, request):
+        from aiohttp import web
+
+        if not self._allowed(request.query.get("token")):
+            return web.Response(status=403, text="marinesim serve: this page needs the token the server printed\n")
+        return web.FileResponse(PAGE / "instructor.html")
+
+    async def _socket(self, request):
+        from aiohttp import WSMsgType, web
+
+        if not self._allowed(request.query.get("token")):
+            return web.Response(status=403, text="marinesim serve: the WebSocket needs the server's token\n")
+        ws = web.WebSocketResponse(max_msg_size=MAX_MESSAGE_BYTES, heartbeat=20.0)
+        await ws.prepare(request)
+        client = Client(ws)
+        try:
+            async for message in ws:
+                if message.type != WSMsgType.TEXT:
+                    await self._refuse(client, "expected JSON text messages")
+                    continue
+                await self._receive(client, message.data)
+        finally:
+            if client in self.clients:
+                self.clients.remove(client)
+                if client.role == "station":
+                    self._queue.append((client, {"type": "leave"}))
+        return ws
+
+    async def _refuse(self, client: Client, why: str, fatal: bool = False) -> None:
+        """Tell ``client`` why its message changed nothing; ``fatal``: and why it cannot go on."""
+        if not client.ws.closed:
+            await client.ws.send_json({"type": "error", "message": why} | ({"fatal": True} if fatal else {}))
+
+    async def _receive(self, client: Client, data: str) -> None:
+        if not client.bucket.take():
+            await self._refuse(client, f"too many messages: at most {RATE_PER_S:g} a second; this one was dropped")
+            return
+        try:
+            message = json.loads(data)
+        except ValueError:
+            await self._refuse(client, "not JSON: each message is one JSON object")
+            return
+        if not isinstance(message, dict):
+            await self._refuse(client, "expected a JSON object")
+            return
+        if not self._allowed(message.get("token")):
+            await self._refuse(client, "refused: the message has no token or a wrong one; nothing was changed")
+            return
+        kind = message.get("type")
+        if kind == "hello":
+            await self._hello(client, message)
+        elif client not in self.clients:
+            await self._refuse(client, "say hello first: {\"type\": \"hello\", \"role\": ...}")
+        elif kind == "action":
+            entry = {"action": message.get("action"), **(message.get("fields") or {})} \
+                if isinstance(message.get("fields", {}), dict) else {"action": None}
+            problem = action_problem(entry)
+            if problem is None and entry["action"] == "report":
+                entry["station"] = client.station
+            if problem is not None:
+                await self._refuse(client, f"action refused: {problem}")
+            else:
+                self._queue.append((client, {"type": "action", "entry": entry}))
+        elif kind == "control" and client.role == "instructor":
+            control, value = message.get("control"), message.get("value")
+            if control in ("freeze", "resume") or (control == "scale" and value in SCALES):
+                self._queue.append((client, {"type": "control", "control": control, "value": value}))
+            else:
+                await self._refuse(client, f"control refused: expected freeze, resume or scale with one of "
+                                           f"{', '.join(map(str, SCALES))}")
+        elif kind == "lag" and client.role == "station" and isinstance(message.get("lag_s"), (int, float)):
+            client.lag_s = float(message["lag_s"])
+        else:
+            await self._refuse(client, f"unknown message type {kind!r} for a {client.role or 'client'}")
+
+    async def _hello(self, client: Client, message: dict) -> None:
+        role, station = message.get("role"), message.get("station", "")
+        if role not in ("instructor", "station"):
+            await self._refuse(client, f"hello: role must be instructor or station, got {role!r}")
+            return
+        if role == "station":
+            if not (isinstance(station, str) and 0 < len(station) <= 40 and station.isprintable()):
+                await self._refuse(client, "hello: a station needs a name of 1 to 40 characters")
+                return
+            for key, ours in (("scenario_sha256", self.scenario["sha256"]), ("marinesim", __version__)):
+                if message.get(key) != ours:
+                    what = (f"scenario file ({self.exercise.scenario.path})" if key == "scenario_sha256"
+                            else f"marinesim version ({__version__})")
+                    await self._refuse(client, f"hello: this server runs another {what}; {key} differs: a station "
+                                               "runs the same to follow it", fatal=True)
+                    await client.ws.close()
+                    return
+        client.role, client.station = role, station
+        self.clients.append(client)
+        if role == "station":
+            self._queue.append((client, {"type": "join"}))
+        journal = self.exercise.journal
+        client.sent = len(journal)
+        await client.ws.send_json({"type": "welcome", "marinesim": __version__, "t": self.exercise.sim.time,
+                                   "scenario": self.scenario | {"stations": self.stations()},
+                                   "track": self.track, "journal": journal[:client.sent]})
+
+    def stations(self) -> list[str]:
+        return sorted({c.station for c in self.clients if c.role == "station"})
+
+    # -- the exercise --------------------------------------------------------------------------
+
+    async def run(self) -> None:
+        """Move the exercise on at the pace until it ends (or :meth:`stop`), then write its session log."""
+        last_state = -math.inf
+        duration = self.exercise.duration_s
+        try:
+            while True:
+                started = time.monotonic()
+                target = min(self.pace.time(), duration)
+                replies = await asyncio.to_thread(self._tick, target)
+                for client, why in replies:
+                    await self._refuse(client, why)
+                now = time.monotonic()
+                end = self.exercise.sim.time >= duration or self._stop
+                if end or now - last_state >= STATE_S:
+                    last_state = now
+                    await self._broadcast(end)
+                self.load.add(time.monotonic() - started)
+                if end:
+                    break
+                await asyncio.sleep(TICK_S)
+        finally:
+            self._finish()
+
+    def stop(self) -> None:
+        """End the exercise at the next tick (its log says where it stopped)."""
+        self._stop = True
+
+    def _tick(self, target: float) -> list[tuple[Client, str]]:
+        """Apply what was queued at the exercise's time, then move it on to ``target`` (s); in a worker thread,
+        the one place the exercise changes. Returns the refusals to send."""
+        exercise, refused = self.exercise, []
+        while self._queue:
+            client, item = self._queue.popleft()
+            kind = item["type"]
+            if kind == "action":
+                try:
+                    exercise.act(**item["entry"])
+                except MarinesimError as error:
+                    refused.append((client, f"action refused: {error}"))
+            elif kind == "control":
+                self._control(item["control"], item["value"])
+            else:
+                exercise.note(kind, station=client.station)
+                self.say(f"t {exercise.sim.time:7.1f} s  station {client.station} {kind}s")
+        if not self.pace.frozen and target > exercise.sim.time:
+            exercise.advance_to(target)
+        t = exercise.sim.time
+        if self.exercise.sim.vessel is not None and (not self.track or t >= self.track[-1][0] + TRACK_S):
+            ship = ship_state(exercise)
+            self.track.append([round(t, 3), ship["north_m"], ship["east_m"]])
+        if self.streams is not None and self.exercise.sim.vessel is not None and self.streams.due(t):
+            row = {name: float(c[0]) for name, c in exercise.sim.frame(np.array([t])).items()}
+            self.streams.send(t, row)
+        return refused
+
+    def _control(self, control: str, value: float | None) -> None:
+        if control == "freeze" and not self.pace.frozen:
+            self.pace.freeze()
+            self.exercise.note("pause")
+        elif control == "resume" and self.pace.frozen:
+            self.pace.resume()
+            self.exercise.note("resume")
+        elif control == "scale":
+            self.pace.set_scale(float(value))
+            self.exercise.note("time_scale", scale=float(value))
+
+    def state(self, ended: bool = False) -> dict[str, Any]:
+        """What every client is sent four times a second (less the journal entries, which are each client's own)."""
+        exercise, sim = self.exercise, self.exercise.sim
+        ship = ship_state(exercise)
+        sea = sim.sea
+        largest = max(sea.systems, key=lambda system: system.spectrum.hs**2 / 16.0 if hasattr(system, "spectrum")
+                      else system.variance)
+        environment = sim.environment
+        return {"type": "state", "t": sim.time, "frozen": self.pace.frozen, "scale": self.pace.scale, "ended": ended,
+                "ship": ship, "predicted": predicted(ship) if ship else [],
+                "lag_s": {c.station: c.lag_s for c in self.clients if c.role == "station" and c.lag_s is not None},
+                "sea": {"hs_m": round(sea.hs, 3), "tp_s": round(sea.tp, 3),
+                        "from_deg": round(wave_compass_from_beta(largest.beta), 1)},
+                "weather": {key: getattr(environment, key) for key in
+                            ("visibility_m", "cloud_cover_oktas", "wind_speed_m_s", "rain_mm_h")},
+                "criteria": [{"value": value, "level": str(level)} for _, value, level in exercise.readings()],
+                "alarms": [{"criterion": a.name, "raised_s": a.raised_s, "value": a.value, "limit": a.limit,
+                            "acknowledged_s": a.acknowledged_s, "cleared_s": a.cleared_s} for a in exercise.alarms],
+                "pending": exercise.pending_events(), "stations": self.stations()}
+
+    async def _broadcast(self, ended: bool) -> None:
+        if not self.clients:
+            return
+        state = self.state(ended)
+        journal = self.exercise.journal
+        for client in list(self.clients):
+            message = state | {"journal": journal[client.sent:]}
+            client.sent = len(journal)
+            try:
+                await client.ws.send_str(json.dumps(message, allow_nan=False))
+            except (ConnectionError, RuntimeError):
+                self.clients.remove(client)
+
+    def _finish(self) -> None:
+        if self.log_written is None and self.log_path is not None:
+            self.exercise.note("end")
+            self.log_written = write_log(self.log_path, self.exercise)
+            self.say(f"t {self.exercise.sim.time:7.1f} s  the exercise ended: session log {self.log_written}")
+        self.ended.set()
