@@ -24,8 +24,8 @@ SHOTS = os.environ.get("MARINESIM_SHOTS")
 
 
 def test_the_instructors_page_changes_the_sea_triggers_an_event_and_messages_a_station(tmp_path):
-    """On the page: the sea made 1.5 times higher, the next scripted event triggered and a message sent to the
-    bridge. Each is journaled once, within a second of simulated time of the click, and the bridge station applies
+    """On the page: the sea made 1.5 times higher, the next scripted event triggered, the visibility brought down to
+    2 km over a minute and a message sent to the bridge. Each is journaled once, within a second of simulated time of the click, and the bridge station applies
     it at that time; a page or server that lost, doubled or delayed them would leave the trainee in another sea
     than the instructor set."""
     from playwright.sync_api import sync_playwright
@@ -53,20 +53,23 @@ def test_the_instructors_page_changes_the_sea_triggers_an_event_and_messages_a_s
                                        ".some(o => o.value === 'bridge')", timeout=WAIT_MS)
                 assert "heavy weather transit" in page.inner_text("#title").lower()
 
-                def now() -> float:
-                    return float(page.evaluate("document.body.dataset.t"))
+                def click(action: str, button: str) -> None:
+                    """Click ``button`` as the page's own script sees it, noting the exercise's time the page
+                    showed at that moment (the browser's latency is the test's, not the server's)."""
+                    page.wait_for_selector(button, state="visible", timeout=WAIT_MS)
+                    clicked[action] = float(page.evaluate(
+                        "b => { const t = +document.body.dataset.t; document.querySelector(b).click(); return t; }",
+                        button))
 
                 page.fill("#sea-hs-factor", "1.5")
-                clicked["change"] = now()
-                page.click("#sea-apply")
+                click("change", "#sea-apply")
                 pending = served.server.exercise.pending_events()
-                button = page.locator(f"#trigger-{pending[0]}")
-                clicked["trigger"] = now()
-                button.click()
+                click("trigger", f"#trigger-{pending[0]}")
+                page.fill("#weather-visibility", "2000")
+                click("weather", "#weather-apply")
                 page.fill("#message-text", "Bridge, reduce speed to 8 kn")
                 page.select_option("#message-to", "bridge")
-                clicked["message"] = now()
-                page.click("#message-send")
+                click("message", "#message-send")
                 page.wait_for_function("[...document.querySelectorAll('#journal *')]"
                                        ".some(e => e.textContent.includes('reduce speed to 8 kn'))", timeout=WAIT_MS)
                 if SHOTS:
@@ -75,9 +78,10 @@ def test_the_instructors_page_changes_the_sea_triggers_an_event_and_messages_a_s
                 assert not errors, errors
                 browser.close()
             actions = [e for e in served.server.exercise.journal if e["kind"] == "action"]
-            assert [a["action"] for a in actions] == ["change", "trigger", "message"]
-            change, trigger, message = actions
+            assert [a["action"] for a in actions] == ["change", "trigger", "weather", "message"]
+            change, trigger, weather, message = actions
             assert change["hs_factor"] == 1.5 and trigger["index"] == pending[0]
+            assert weather == weather | {"visibility_m": 2000, "ramp_s": 60}  # fog over a minute
             assert message == message | {"text": "Bridge, reduce speed to 8 kn", "to": "bridge"}
             for action in actions:
                 assert 0.0 <= action["t"] - clicked[action["action"]] <= 1.0, (action, clicked)

@@ -89,7 +89,8 @@ def test_two_stations_and_a_replay_draw_the_same_frames(tmp_path):
         served.close()
     assert end_s == served.server.exercise.sim.time == scenario.run.duration_s
     actions = [e for e in served.server.exercise.journal if e["kind"] == "action"]
-    assert [a["action"] for a in actions] == ["order", "change"] and actions[0]["rudder_deg"] > 0
+    assert sorted(a["action"] for a in actions) == ["change", "order"]  # from two machines: either may come first
+    assert next(a for a in actions if a["action"] == "order")["rudder_deg"] > 0
     for view in views:
         assert [e for e in view.scene.follow.journal if e["kind"] == "action"] == actions
     assert views[0].scene.sim.sea.hs != before

@@ -18,11 +18,11 @@ from marinesim.render.keys import CONTEXTS, KEYMAP, bindings, dispatch, help_lin
 
 USAGE = ROOT / "docs" / "USAGE.md"
 SESSIONS = {
-    "ship": {"always", "free", "live", "instructor", "typing", "ship"},
-    "station": {"always", "free", "live", "instructor", "typing", "station"},
-    "moored": {"always", "free", "live", "instructor", "typing", "station", "faults"},
-    "dp": {"always", "free", "live", "instructor", "typing", "station", "faults", "dp", "dp_faults"},
-    "replay": {"always", "free", "replay"},
+    "ship": {"always", "own_clock", "free", "live", "instructor", "typing", "ship"},
+    "station": {"always", "own_clock", "free", "live", "instructor", "typing", "station"},
+    "moored": {"always", "own_clock", "free", "live", "instructor", "typing", "station", "faults"},
+    "dp": {"always", "own_clock", "free", "live", "instructor", "typing", "station", "faults", "dp", "dp_faults"},
+    "replay": {"always", "own_clock", "free", "replay"},
     "station of a served exercise": {"always", "free", "live", "follow", "typing", "ship"},
 }
 """The contexts each kind of session can be in (``Controls.session_contexts``; a station's in tests/test_net_station.py)."""

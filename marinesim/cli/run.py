@@ -56,6 +56,7 @@ def add(commands: argparse._SubParsersAction) -> None:
 
 
 def handle(args: argparse.Namespace) -> int:
+    from marinesim.errors import ParameterError
     from marinesim.progress import reporting
     from marinesim.resources import default_scenario
     from marinesim.session.assembly import Assembly
@@ -73,9 +74,12 @@ def handle(args: argparse.Namespace) -> int:
         print(f"manoeuvring: {vessel.ship.name}, {vessel.ship.describe()}")
     for note in scenario.notes:
         print(f"note: {note}")
-    streams = open_streams(args, scenario)
     if args.connect:
+        if args.nmea or args.dis:
+            raise ParameterError("--nmea and --dis stream from marinesim serve, the exercise's one process, not "
+                                 "from a station")
         return _station(args, scenario)
+    streams = open_streams(args, scenario)
     if not args.headless:
         from marinesim.render.viewer import NoDisplay, Viewer
 
@@ -90,7 +94,11 @@ def handle(args: argparse.Namespace) -> int:
             print("viewer open: H lists the keys, ESC quits")
             if streams is not None:
                 _stream_from_viewer(viewer, streams)
-            viewer.run()
+            try:
+                viewer.run()
+            finally:
+                if streams is not None:
+                    streams.close()
             return 0
     out_dir = args.out or Path("out") / scenario.name
     if streams is not None:
@@ -182,12 +190,10 @@ def _stream_from_viewer(viewer, streams) -> None:
     import numpy as np
     import pyglet
 
-    streams.__enter__()
-
     def send(_: float) -> None:
         sim = viewer.scene.sim
-        if streams.due(sim.time):
-            streams.send(sim.time, {name: float(c[0]) for name, c in sim.frame(np.array([sim.time])).items()})
+        for at in streams.pending(sim.time):
+            streams.send(at, {name: float(c[0]) for name, c in sim.frame(np.array([at])).items()})
 
     pyglet.clock.schedule_interval(send, 0.1)
 

@@ -73,8 +73,8 @@ def handle(args: argparse.Namespace) -> int:
             print(f"serving {scenario.name} ({scenario.run.duration_s:g} s, seed {scenario.run.seed}) on {where}"
                   f"{'' if host in ('127.0.0.1', 'localhost', '::1') else ' (reachable from other machines)'}")
             print(f"instructor page: http://{where}/?token={server.token}")
-            print(f"a station joins: marinesim run {scenario.path} --connect 'ws://{where}/ws?token={server.token}' "
-                  f"--station NAME")
+            print(f"a station joins: marinesim run {scenario.path} --connect "
+                  f"'ws://{where}/ws?token={server.station_token}' --station NAME")
             try:
                 await server.run()
             finally:

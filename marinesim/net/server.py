@@ -36,7 +36,7 @@ import numpy as np
 from marinesim import __version__
 from marinesim.angles import wave_compass_from_beta
 from marinesim.errors import MarinesimError, ParameterError
-from marinesim.session.exercise import Exercise, quiet
+from marinesim.session.exercise import EVERYONE, MAX_STATION, Exercise, quiet
 from marinesim.session.log import action_problem, write_log
 from marinesim.session.sidecar import sha256
 
@@ -52,6 +52,13 @@ MAX_MESSAGE_BYTES = 4096
 """The largest message a client may send (bytes); a larger one closes its connection (WebSocket code 1009)."""
 RATE_PER_S, BURST = 20.0, 40
 """A client's messages: this many a second on average, this many at once; those beyond are refused."""
+MAX_CLIENTS = 64
+"""Pages and stations connected at once; one more is refused."""
+SEND_S = 2.0
+"""A client that has not taken a state within this many seconds is dropped: one slow machine does not hold up the
+exercise for everyone (it joins again at the current time)."""
+STATION_ACTIONS = frozenset({"order", "acknowledge", "report"})
+"""What a station may do: the trainee's orders (not the instructor's faults), acknowledgements, reports."""
 SCALES = (0.25, 0.5, 1.0, 2.0, 4.0, 8.0)
 """The time scales an instructor may set (``marinesim serve --time-scale`` offers the same)."""
 PAGE = Path(__file__).parent / "page"
@@ -134,6 +141,22 @@ class Client:
     """How far the station's own copy of the exercise is behind the server's (s), as it last said."""
 
 
+def _finite(value: object) -> bool:
+    """Whether ``value`` is a finite number (not a bool): JSON allows NaN and 1e400, the outputs do not."""
+    return isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
+
+
+def _plain(value: Any) -> Any:
+    """``value`` with each non-finite number as None: what JSON carries to a browser (which refuses NaN)."""
+    if isinstance(value, float):
+        return value if math.isfinite(value) else None
+    if isinstance(value, dict):
+        return {key: _plain(item) for key, item in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_plain(item) for item in value]
+    return value
+
+
 def ship_state(exercise: Exercise) -> dict[str, Any] | None:
     """Own-ship now, as the page shows it (None without a vessel): the record's row at the exercise's time (position
     north and east of the start in m, compass heading, course and speed over ground, rate of turn, rudder, roll,
@@ -196,6 +219,9 @@ class ExerciseServer:
                  say: Callable[[str], None] = quiet, pace: Pace | None = None) -> None:
         self.exercise, self.log_path, self.streams, self.say = exercise, log_path, streams, say
         self.token = token or secrets.token_urlsafe(24)
+        """The instructor's: the page, every action and control."""
+        self.station_token = secrets.token_urlsafe(24)
+        """The stations': the trainee's actions only (:data:`STATION_ACTIONS`)."""
         self.pace = pace or Pace()
         self.clients: list[Client] = []
         self.track: list[list[float]] = []
@@ -204,6 +230,9 @@ class ExerciseServer:
         self.load = Load()
         """How long each tick took (wall s): the budget is :data:`TICK_S`."""
         self._queue: deque[tuple[Client, dict]] = deque()
+        self._lock = asyncio.Lock()
+        """Held while the exercise moves (a tick) and while a welcome is read from it."""
+        self._ticking: asyncio.Future | None = None
         self._stop = False
         sim = exercise.sim
         ship = sim.voyage.ship if sim.vessel is not None else None
@@ -244,8 +273,12 @@ class ExerciseServer:
         if self._runner is not None:
             await self._runner.cleanup()
 
-    def _allowed(self, token: object) -> bool:
-        return isinstance(token, str) and hmac.compare_digest(token.encode(), self.token.encode())
+    def _allowed(self, token: object, role: str = "instructor") -> bool:
+        """Whether ``token`` is ``role``'s (the instructor's token serves a station too)."""
+        if not isinstance(token, str):
+            return False
+        tokens = (self.token,) if role == "instructor" else (self.token, self.station_token)
+        return any(hmac.compare_digest(token.encode(), ours.encode()) for ours in tokens)
 
     async def _page(self, request):
         from aiohttp import web
@@ -257,8 +290,10 @@ class ExerciseServer:
     async def _socket(self, request):
         from aiohttp import WSMsgType, web
 
-        if not self._allowed(request.query.get("token")):
+        if not self._allowed(request.query.get("token"), "station"):
             return web.Response(status=403, text="marinesim serve: the WebSocket needs the server's token\n")
+        if len(self.clients) >= MAX_CLIENTS:
+            return web.Response(status=503, text=f"marinesim serve: {MAX_CLIENTS} clients are connected already\n")
         ws = web.WebSocketResponse(max_msg_size=MAX_MESSAGE_BYTES, heartbeat=20.0)
         await ws.prepare(request)
         client = Client(ws)
@@ -269,16 +304,28 @@ class ExerciseServer:
                     continue
                 await self._receive(client, message.data)
         finally:
-            if client in self.clients:
-                self.clients.remove(client)
-                if client.role == "station":
-                    self._queue.append((client, {"type": "leave"}))
+            self._drop(client)
         return ws
 
     async def _refuse(self, client: Client, why: str, fatal: bool = False) -> None:
         """Tell ``client`` why its message changed nothing; ``fatal``: and why it cannot go on."""
-        if not client.ws.closed:
-            await client.ws.send_json({"type": "error", "message": why} | ({"fatal": True} if fatal else {}))
+        await self._send(client, json.dumps({"type": "error", "message": why} | ({"fatal": True} if fatal else {})))
+
+    async def _send(self, client: Client, text: str) -> None:
+        """Send ``text``; a client gone, or too slow to take it within :data:`SEND_S`, is dropped."""
+        if client.ws.closed:
+            return
+        try:
+            await asyncio.wait_for(client.ws.send_str(text), SEND_S)
+        except (ConnectionError, RuntimeError, asyncio.TimeoutError):
+            self._drop(client)
+            await client.ws.close()
+
+    def _drop(self, client: Client) -> None:
+        if client in self.clients:
+            self.clients.remove(client)
+            if client.role == "station":
+                self._queue.append((client, {"type": "leave"}))
 
     async def _receive(self, client: Client, data: str) -> None:
         if not client.bucket.take():
@@ -292,18 +339,26 @@ class ExerciseServer:
         if not isinstance(message, dict):
             await self._refuse(client, "expected a JSON object")
             return
-        if not self._allowed(message.get("token")):
+        role = message.get("role", "instructor") if message.get("type") == "hello" else client.role or "station"
+        if not self._allowed(message.get("token"), role):
             await self._refuse(client, "refused: the message has no token or a wrong one; nothing was changed")
             return
         kind = message.get("type")
         if kind == "hello":
-            await self._hello(client, message)
+            if client in self.clients:
+                await self._refuse(client, "hello: this connection has said hello already")
+            else:
+                await self._hello(client, message)
         elif client not in self.clients:
             await self._refuse(client, "say hello first: {\"type\": \"hello\", \"role\": ...}")
         elif kind == "action":
-            entry = {"action": message.get("action"), **(message.get("fields") or {})} \
-                if isinstance(message.get("fields", {}), dict) else {"action": None}
+            fields = message.get("fields", {})
+            entry = {"action": message.get("action"), **fields} if isinstance(fields, dict) else {"action": None}
             problem = action_problem(entry)
+            if problem is None and client.role == "station" and (entry["action"] not in STATION_ACTIONS
+                                                                 or "fault" in entry):
+                problem = f"{entry['action']}: the instructor's, not a station's (a station orders, acknowledges, " \
+                          "reports)"
             if problem is None and entry["action"] == "report":
                 entry["station"] = client.station
             if problem is not None:
@@ -312,13 +367,17 @@ class ExerciseServer:
                 self._queue.append((client, {"type": "action", "entry": entry}))
         elif kind == "control" and client.role == "instructor":
             control, value = message.get("control"), message.get("value")
-            if control in ("freeze", "resume") or (control == "scale" and value in SCALES):
+            if control in ("freeze", "resume") or (control == "scale" and not isinstance(value, bool)
+                                                   and value in SCALES):
                 self._queue.append((client, {"type": "control", "control": control, "value": value}))
             else:
                 await self._refuse(client, f"control refused: expected freeze, resume or scale with one of "
                                            f"{', '.join(map(str, SCALES))}")
-        elif kind == "lag" and client.role == "station" and isinstance(message.get("lag_s"), (int, float)):
-            client.lag_s = float(message["lag_s"])
+        elif kind == "lag" and client.role == "station":
+            if _finite(message.get("lag_s")):
+                client.lag_s = float(message["lag_s"])
+            else:
+                await self._refuse(client, f"lag: expected a finite number of seconds, got {message.get('lag_s')!r}")
         else:
             await self._refuse(client, f"unknown message type {kind!r} for a {client.role or 'client'}")
 
@@ -328,8 +387,13 @@ class ExerciseServer:
             await self._refuse(client, f"hello: role must be instructor or station, got {role!r}")
             return
         if role == "station":
-            if not (isinstance(station, str) and 0 < len(station) <= 40 and station.isprintable()):
-                await self._refuse(client, "hello: a station needs a name of 1 to 40 characters")
+            if not (isinstance(station, str) and 0 < len(station) <= MAX_STATION and station.isprintable()) \
+                    or station == EVERYONE:
+                await self._refuse(client, f"hello: a station needs a name of 1 to {MAX_STATION} characters (not "
+                                           f"{EVERYONE!r})", fatal=True)
+                return
+            if station in self.stations():
+                await self._refuse(client, f"hello: a station named {station!r} is connected already", fatal=True)
                 return
             for key, ours in (("scenario_sha256", self.scenario["sha256"]), ("marinesim", __version__)):
                 if message.get(key) != ours:
@@ -340,14 +404,15 @@ class ExerciseServer:
                     await client.ws.close()
                     return
         client.role, client.station = role, station
-        self.clients.append(client)
-        if role == "station":
-            self._queue.append((client, {"type": "join"}))
-        journal = self.exercise.journal
-        client.sent = len(journal)
-        await client.ws.send_json({"type": "welcome", "marinesim": __version__, "t": self.exercise.sim.time,
-                                   "scenario": self.scenario | {"stations": self.stations()},
-                                   "track": self.track, "journal": journal[:client.sent]})
+        async with self._lock:  # between ticks: the time and the journal agree
+            self.clients.append(client)
+            if role == "station":
+                self._queue.append((client, {"type": "join"}))
+            client.sent = len(self.exercise.journal)
+            welcome = {"type": "welcome", "marinesim": __version__, "t": self.exercise.sim.time,
+                       "scenario": self.scenario | {"stations": self.stations()}, "track": list(self.track),
+                       "journal": self.exercise.journal[:client.sent]}
+        await self._send(client, json.dumps(_plain(welcome), allow_nan=False))
 
     def stations(self) -> list[str]:
         return sorted({c.station for c in self.clients if c.role == "station"})
@@ -362,11 +427,15 @@ class ExerciseServer:
             while True:
                 started = time.monotonic()
                 target = min(self.pace.time(), duration)
-                replies = await asyncio.to_thread(self._tick, target)
+                async with self._lock:
+                    self._ticking = asyncio.ensure_future(asyncio.to_thread(self._tick, target))
+                    replies = await asyncio.shield(self._ticking)
                 for client, why in replies:
                     await self._refuse(client, why)
                 now = time.monotonic()
                 end = self.exercise.sim.time >= duration or self._stop
+                if end:
+                    self.exercise.note("end")  # in the last state's journal: every station has it
                 if end or now - last_state >= STATE_S:
                     last_state = now
                     await self._broadcast(end)
@@ -375,6 +444,8 @@ class ExerciseServer:
                     break
                 await asyncio.sleep(TICK_S)
         finally:
+            if self._ticking is not None and not self._ticking.done():  # cancelled (Ctrl-C) while the exercise moved
+                await asyncio.wait([self._ticking])
             self._finish()
 
     def stop(self) -> None:
@@ -393,6 +464,9 @@ class ExerciseServer:
                     exercise.act(**item["entry"])
                 except MarinesimError as error:
                     refused.append((client, f"action refused: {error}"))
+                except Exception as error:  # noqa: BLE001 (an action the vessel cannot take must not end the exercise)
+                    refused.append((client, f"action refused: {item['entry']['action']} cannot be applied to this "
+                                            f"exercise ({type(error).__name__}: {error})"))
             elif kind == "control":
                 self._control(item["control"], item["value"])
             else:
@@ -404,9 +478,9 @@ class ExerciseServer:
         if self.exercise.sim.vessel is not None and (not self.track or t >= self.track[-1][0] + TRACK_S):
             ship = ship_state(exercise)
             self.track.append([round(t, 3), ship["north_m"], ship["east_m"]])
-        if self.streams is not None and self.exercise.sim.vessel is not None and self.streams.due(t):
-            row = {name: float(c[0]) for name, c in exercise.sim.frame(np.array([t])).items()}
-            self.streams.send(t, row)
+        if self.streams is not None and self.exercise.sim.vessel is not None:
+            for at in self.streams.pending(t):  # each output time passed, at that time: none skipped by a slow tick
+                self.streams.send(at, {name: float(c[0]) for name, c in exercise.sim.frame(np.array([at])).items()})
         return refused
 
     def _control(self, control: str, value: float | None) -> None:
@@ -445,17 +519,17 @@ class ExerciseServer:
             return
         state = self.state(ended)
         journal = self.exercise.journal
-        for client in list(self.clients):
-            message = state | {"journal": journal[client.sent:]}
+        clients = list(self.clients)
+        texts = []
+        for client in clients:
+            texts.append(json.dumps(_plain(state | {"journal": journal[client.sent:]}), allow_nan=False))
             client.sent = len(journal)
-            try:
-                await client.ws.send_str(json.dumps(message, allow_nan=False))
-            except (ConnectionError, RuntimeError):
-                self.clients.remove(client)
+        await asyncio.gather(*(self._send(client, text) for client, text in zip(clients, texts)))
 
     def _finish(self) -> None:
         if self.log_written is None and self.log_path is not None:
-            self.exercise.note("end")
+            if not self.exercise.journal or self.exercise.journal[-1]["kind"] != "end":
+                self.exercise.note("end")
             self.log_written = write_log(self.log_path, self.exercise)
             self.say(f"t {self.exercise.sim.time:7.1f} s  the exercise ended: session log {self.log_written}")
         self.ended.set()

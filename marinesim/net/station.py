@@ -18,6 +18,7 @@ import asyncio
 import json
 import queue
 import threading
+import time
 from collections.abc import Callable
 from typing import Any
 from urllib.parse import parse_qs, urlsplit
@@ -71,10 +72,10 @@ class Link:
         self.hello = hello | {"token": self.token}
         self.say = say
         self._inbox: queue.SimpleQueue = queue.SimpleQueue()
+        self._closing = False
         self._loop = asyncio.new_event_loop()
         self._outbox: asyncio.Queue = asyncio.Queue()
-        self._thread = threading.Thread(target=self._loop.run_until_complete, args=(self._main(),), daemon=True,
-                                        name="marinesim-station-link")
+        self._thread = threading.Thread(target=self._run, daemon=True, name="marinesim-station-link")
         self._thread.start()
 
     def received(self, wait_s: float | None = None) -> list[dict[str, Any]]:
@@ -93,9 +94,18 @@ class Link:
         self._loop.call_soon_threadsafe(self._outbox.put_nowait, message | {"token": self.token})
 
     def close(self) -> None:
+        self._closing = True
         if self._thread.is_alive():
             self._loop.call_soon_threadsafe(self._outbox.put_nowait, None)
             self._thread.join(timeout=10.0)
+
+    def _run(self) -> None:
+        """The thread: the connection until the exercise ends or the station closes; whatever stops it otherwise
+        is put in the inbox, so the station says so instead of waiting for ever."""
+        try:
+            self._loop.run_until_complete(self._main())
+        except Exception as error:  # noqa: BLE001 (any failure of the link is the station's to report)
+            self._inbox.put({"type": "failed", "message": f"--connect {self.address}: the link failed ({error})"})
 
     async def _main(self) -> None:
         import aiohttp
@@ -110,7 +120,7 @@ class Link:
                         if await self._session(ws):
                             return
                 except aiohttp.WSServerHandshakeError as error:
-                    why = "wrong token" if error.status == 403 else error.message
+                    why = {403: "wrong token", 503: "the server is full"}.get(error.status, error.message)
                     self._inbox.put({"type": "failed", "message": f"--connect {self.address}: the server refused the "
                                                                   f"station ({error.status}: {why})"})
                     return
@@ -141,13 +151,16 @@ class Link:
                 self._inbox.put(data)
                 if data.get("ended"):
                     return True
-            return sender.done()  # the station closed (None in the outbox)
+            return self._closing
         finally:
             sender.cancel()
 
     async def _send_all(self, ws) -> None:
         while (message := await self._outbox.get()) is not None:
-            await ws.send_json(message)
+            try:
+                await ws.send_json(message)
+            except ConnectionError:  # the socket dropped: the reader sees it and joins again
+                return
         await ws.close()
 
 
@@ -232,9 +245,11 @@ def follow_headless(station: Station, on_step: Callable[[Station], None] = lambd
                     wait_s: float = 5.0) -> None:
     """Follow ``station``'s exercise to its end without a window: each time the server speaks, catch up to its time,
     then ``on_step(station)``."""
+    said = -LAG_REPORT_S
     while not station.ended:
         station.poll(wait_s)
         station.catch_up()
         on_step(station)
-        if station.joined:
+        if station.joined and time.monotonic() - said >= LAG_REPORT_S:
+            said = time.monotonic()
             station.link.send({"type": "lag", "lag_s": station.lag_s})

@@ -60,6 +60,14 @@ class Streams:
             return False
         return t_s * self.rate_hz >= self._next - _TIME_SLACK
 
+    def pending(self, t_s: float) -> list[float]:
+        """The output times (s, multiples of 1 / ``rate_hz``) reached by ``t_s`` and not sent yet, in order: a
+        simulation that moved on by more than a period sends each of them."""
+        if self._nmea is None and self._dis is None:
+            return []
+        last = math.floor(t_s * self.rate_hz + _TIME_SLACK)
+        return [k / self.rate_hz for k in range(self._next, last + 1)]
+
     def send(self, t_s: float, row: Mapping[str, float]) -> None:
         """Send the record row of time ``t_s`` (s) and schedule the next output after ``t_s``."""
         self._next = math.floor(t_s * self.rate_hz + _TIME_SLACK) + 1

@@ -83,9 +83,9 @@ class Controls:
     def session_contexts(self) -> set[str]:
         """Every context this session's keys can act in: live or a replay, and the vessel's kind."""
         if self.scene.replay is not None:
-            return {"always", "free", "replay"}
+            return {"always", "own_clock", "free", "replay"}
         station = self.scene.follow is not None  # the instructor is elsewhere, on the served exercise's page
-        found = {"always", "free", "live", "typing", "follow" if station else "instructor"}
+        found = {"always", "free", "live", "typing"} | ({"follow"} if station else {"instructor", "own_clock"})
         sim = self.scene.sim
         if sim.vessel is not None:
             ship = sim.vessel.ship

@@ -40,6 +40,7 @@ SEEK_STEP_S = 30.0
 
 CONTEXTS = {
     "always": "always",
+    "own_clock": "a session on its own clock (not a station)",
     "free": "the free camera, while held",
     "live": "a live session",
     "instructor": "the instructor at the viewer (not a station)",
@@ -105,9 +106,9 @@ KEYMAP = (
     Group("view", "the view and the session", "always", (
         Binding(("H",), "toggle_help", "this help"),
         Binding(("TAB",), "toggle_panels", "HUD: compact strip / full panels and charts"),
-        Binding(("SPACE",), "toggle_pause", "freeze / resume"),
-        Binding(("PLUS", "EQUAL", "NUM_ADD"), "scale_time", "time faster", (1,)),
-        Binding(("MINUS", "NUM_SUBTRACT"), "scale_time", "time slower", (-1,)),
+        Binding(("SPACE",), "toggle_pause", "freeze / resume", when="own_clock"),
+        Binding(("PLUS", "EQUAL", "NUM_ADD"), "scale_time", "time faster", (1,), "own_clock"),
+        Binding(("MINUS", "NUM_SUBTRACT"), "scale_time", "time slower", (-1,), "own_clock"),
         Binding(("_1",), "camera", "orbit camera", ("orbit",)),
         Binding(("_2",), "camera", "bridge camera", ("bridge",)),
         Binding(("_3",), "camera", "free camera", ("free",)),

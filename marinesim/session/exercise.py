@@ -188,8 +188,9 @@ and heading are orders to the engine and the autopilot)."""
 ORDER_KEYS = frozenset({"rudder_deg", "engine", "speed_kn", "autopilot", "course_deg", "set_north_m", "set_east_m",
                         "fault"})
 """What a live order may give (:meth:`Simulation.order`'s keywords)."""
-WEATHER_KEYS = frozenset({*WEATHER, "hours"})
-"""What a live weather change may give (:meth:`EnvironmentOptions.changed`'s keywords): new values, the clock moved."""
+WEATHER_KEYS = frozenset({*WEATHER, "hours", "ramp_s"})
+"""What a live weather change may give (:meth:`Simulation.change_weather`'s keywords): new values, the clock moved,
+the time the new values blend in over (s)."""
 ACTIONS = {"change": CHANGE_KEYS, "order": ORDER_KEYS, "weather": WEATHER_KEYS, "trigger": frozenset({"index"}),
            "message": frozenset({"text", "to"}), "acknowledge": frozenset(), "report": frozenset({"text", "station"})}
 """Live actions and their fields: what :meth:`Exercise.act` applies and a replay applies again. A ``message`` is the

@@ -302,7 +302,10 @@ def _is(value: Any, kind: type) -> bool:
     if isinstance(value, bool):
         return False
     if kind is float:
-        return isinstance(value, (int, float)) and math.isfinite(value)
+        try:
+            return isinstance(value, (int, float)) and math.isfinite(value)
+        except OverflowError:  # an integer past any float (10**400)
+            return False
     return isinstance(value, kind)
 
 

@@ -32,13 +32,13 @@ import numpy as np
 
 from marinesim.angles import math_to_compass, wave_compass_from_beta
 from marinesim.constants import KNOT
-from marinesim.errors import ParameterError, require_at_least, require_positive
+from marinesim.errors import ParameterError, require_at_least, require_positive, require_within
 from marinesim.manoeuvring.ship import STEP_S
 from marinesim.manoeuvring.voyage import SHIP_COLUMNS, Voyage
 from marinesim.pose import Pose
 from marinesim.recent import Recent
 from marinesim.scenario import Scenario
-from marinesim.scenario.model import CHANGE_RAMP_S, MAX_SPEED_KN, WEATHER, EnvironmentOptions
+from marinesim.scenario.model import CHANGE_RAMP_S, MAX_DURATION_S, MAX_SPEED_KN, WEATHER, EnvironmentOptions
 from marinesim.sea.ocean import Components, smoothstep
 from marinesim.sea.seastate import SeaState, scaled_sea
 from marinesim.session.assembly import Assembly
@@ -55,6 +55,9 @@ if TYPE_CHECKING:  # the solver's module (moderngl's compute side) loads only wh
 STATION_HEADING_DEG = 0.5
 """A vessel keeping station responds to the waves as on her heading to this step (deg): the RAOs change little
 over it, and a heading held by a DP wandering a tenth of a degree keeps one response."""
+FACTOR_RANGE = (0.1, 10.0)
+"""What a live change may multiply the wave heights or periods by, at once (the ocean's tiles carry the periods; a
+sea ten times higher is a different exercise)."""
 PREPARE_S = 0.5
 """A sea change starts this long (s) after it is asked for: meanwhile a worker thread computes its amplitudes
 (:meth:`Ocean.prepare`, 0.1-0.2 s at 4 x 256^2), so the frames go on without a hitch. The start is a fixed time,
@@ -233,6 +236,10 @@ class Simulation:
         from ``at`` (s; default :data:`PREPARE_S` from now) whatever the sea is doing then; ``speed_kn`` and
         ``heading_deg`` are orders to the engine and the autopilot (:meth:`order`), given at ``at`` (default now)."""
         start = self.time if at is None else require_at_least("start of a change (s)", at, 0.0)
+        require_within("hs_factor", hs_factor, *FACTOR_RANGE)
+        require_within("tp_factor", tp_factor, *FACTOR_RANGE)
+        require_within("turn_waves_deg", turn_waves_deg, -360.0, 360.0, "deg")
+        require_within("ramp_s", ramp_s, 0.0, MAX_DURATION_S, "s")
         if (hs_factor, tp_factor, turn_waves_deg) != (1.0, 1.0, 0.0):
             if sea is not None:
                 raise ParameterError("give a new sea or factors of the present one, not both")
@@ -279,7 +286,7 @@ class Simulation:
         ``ramp_s`` (s) from the weather of the moment; the clock (``hours``, with ``time_utc``) moves at once."""
         before = self.environment
         after = before.changed(hours, **keys)
-        ramp = require_at_least("ramp time (s)", ramp_s, 0.0)
+        ramp = require_within("ramp_s", ramp_s, 0.0, MAX_DURATION_S, "s")
         self._weather = _WeatherRamp(self.time, ramp, before.changed(hours) if hours else before, after)
         if self.station is not None and "wind_speed_m_s" in keys:  # from the step it acts at, as an order
             start = self.voyage.step_of(self.time) * STEP_S

@@ -1088,7 +1088,9 @@
       showError("weather: fill in at least one field", true);
       return;
     }
-    if (sendAction("weather", fields)) for (const [id] of WEATHER) $(id).value = "";
+    const ramp = readFields([["weather-ramp", "ramp_s", "ramp (s)"]]);
+    if (ramp === null) return;
+    if (sendAction("weather", Object.assign(fields, ramp))) for (const [id] of WEATHER) $(id).value = "";
   });
 
   function sendMessage() {
