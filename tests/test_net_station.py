@@ -63,6 +63,7 @@ def test_two_stations_and_a_replay_draw_the_same_frames(tmp_path):
             view.scene.follow = Station.join(view.scene.exercise, served.url, name)
         bridge = Controls(views[0].scene, recordings=tmp_path)
         assert "instructor" not in bridge.session_contexts() and "follow" in bridge.session_contexts()
+        assert "STATION bridge" in bridge.status()[0]
         _follow(views[0], STEPS_S[0], lambda s: s.server_s > 4.0)
         before = views[0].scene.sim.sea.hs
         bridge.press("RIGHT")  # helm 5 deg to starboard: to the server, back in the journal, then applied
@@ -127,3 +128,43 @@ def test_a_station_of_another_scenario_is_told_so(tmp_path):
             station.close()
     finally:
         served.close()
+
+
+def test_a_station_that_drops_joins_again_at_the_current_time(tmp_path):
+    """The server drops the station's connection mid-exercise (a network fault); the station joins again, takes the
+    journal it missed, and follows to the end with every action the server applied. A station that stayed away, or
+    applied the missed actions at the wrong time, would leave its trainee in another exercise."""
+    from marinesim.net.station import follow_headless
+    from marinesim.session.exercise import Exercise
+    from marinesim.session.timeline import Simulation
+
+    scenario = with_run(load_scenario(TRANSIT), 30.0)
+    served = ServedInThread(scenario, tmp_path / "served.jsonl", scale=4.0)
+    instructor = Link(served.url, {"type": "hello", "role": "instructor"})
+    said: list[str] = []
+    dropped = []
+
+    def drop_once(station: Station) -> None:
+        """After 5 s, the server closes the station's socket once, and the instructor changes the sea while the
+        station is away."""
+        if not dropped and station.server_s > 5.0:
+            dropped.append(station.server_s)
+            client = next(c for c in served.server.clients if c.role == "station")
+            served.loop.call_soon_threadsafe(lambda: served.loop.create_task(client.ws.close()))
+            instructor.send({"type": "action", "action": "change", "fields": {"hs_factor": 1.2, "ramp_s": 5.0}})
+
+    try:
+        with Simulation(scenario, wake=False) as local:
+            station = Station.join(Exercise(local), served.url, "bridge", say=said.append)
+            follow_headless(station, drop_once, wait_s=1.0)
+            station.close()
+            assert local.time == scenario.run.duration_s
+    finally:
+        instructor.close()
+        served.close()
+    assert dropped and any("joining again" in line for line in said), said
+    joins = [e["kind"] for e in served.server.exercise.journal if e["kind"] in ("join", "leave")]
+    assert joins[:3] == ["join", "leave", "join"]
+    actions = [e for e in served.server.exercise.journal if e["kind"] == "action"]
+    assert [a["action"] for a in actions] == ["change"]
+    assert [e for e in station.journal if e["kind"] == "action"] == actions

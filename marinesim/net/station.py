@@ -119,6 +119,8 @@ class Link:
                         tries = 0
                         if await self._session(ws):
                             return
+                    self.say("the server closed the connection; joining again at the current time")
+                    await asyncio.sleep(RECONNECT_S[0])
                 except aiohttp.WSServerHandshakeError as error:
                     why = {403: "wrong token", 503: "the server is full"}.get(error.status, error.message)
                     self._inbox.put({"type": "failed", "message": f"--connect {self.address}: the server refused the "
