@@ -421,7 +421,7 @@ class ExerciseServer:
 
     async def run(self) -> None:
         """Move the exercise on at the pace until it ends (or :meth:`stop`), then write its session log."""
-        last_state = -math.inf
+        next_state = time.monotonic()  # states on a grid of STATE_S: four a second on average, whatever the ticks
         duration = self.exercise.duration_s
         try:
             while True:
@@ -436,8 +436,8 @@ class ExerciseServer:
                 end = self.exercise.sim.time >= duration or self._stop
                 if end:
                     self.exercise.note("end")  # in the last state's journal: every station has it
-                if end or now - last_state >= STATE_S:
-                    last_state = now
+                if end or now >= next_state:
+                    next_state = next_state + STATE_S if now - next_state < STATE_S else now + STATE_S
                     await self._broadcast(end)
                 self.load.add(time.monotonic() - started)
                 if end:
