@@ -85,7 +85,8 @@ def hull_from_args(args: argparse.Namespace):
 
 def add_view_options(p: argparse.ArgumentParser) -> None:
     g = p.add_argument_group("view")
-    g.add_argument("--camera", choices=CAMERAS, default="orbit", help="orbit (default), bridge or free")
+    g.add_argument("--camera", default="orbit", metavar="NAME",
+                   help=f"{', '.join(CAMERAS)} (default orbit), or one of the scenario's [[cameras]]")
     g.add_argument("--solver", choices=("auto", "on", "off"), default="auto",
                    help="the local wave solver around the hull: auto = on with a GPU, off on a software renderer")
     g.add_argument("--cascades", choices=CASCADES, default="auto",

@@ -109,6 +109,8 @@ class BridgeCamera:
     look_pitch_deg: float = -5.0
     fov_y_deg: float = NAKED_EYE_FOV_DEG
     binoculars: bool = False
+    widest_deg: float = NAKED_EYE_FOV_DEG
+    """The widest field of view the scroll wheel gives back (deg): a named camera's own, where it is wider."""
 
     @property
     def magnification(self) -> float:
@@ -134,7 +136,7 @@ class BridgeCamera:
 
     def zoom(self, steps: float) -> None:
         """Narrow (or widen) the field of view: the eye stays at the point."""
-        self.fov_y_deg = float(np.clip(self.fov_y_deg * 0.9 ** steps, binocular_fov_deg(), NAKED_EYE_FOV_DEG))
+        self.fov_y_deg = float(np.clip(self.fov_y_deg * 0.9 ** steps, binocular_fov_deg(), self.widest_deg))
 
 
 @dataclass

@@ -149,6 +149,16 @@ class Controls:
         """Look through the camera ``name`` (one of :data:`~marinesim.render.CAMERAS`)."""
         self.scene.camera_name = name
 
+    def next_camera(self) -> None:
+        """Look through the scenario's next named camera (``[[cameras]]``), in turn."""
+        named = self.scene.named_cameras
+        if not named:
+            self.say("no named cameras: the scenario's [[cameras]] adds them")
+            return
+        now = self.scene.camera_name
+        self.scene.camera_name = named[(named.index(now) + 1) % len(named)] if now in named else named[0]
+        self.say(f"camera {self.scene.camera_name}")
+
     def fly(self, wall_dt: float, forward: float, right: float, up: float) -> None:
         """The free camera flies ``wall_dt`` s at :data:`FREE_SPEED_M_S` along (forward, right, up)."""
         step = FREE_SPEED_M_S * wall_dt

@@ -112,6 +112,7 @@ KEYMAP = (
         Binding(("_1",), "camera", "orbit camera", ("orbit",)),
         Binding(("_2",), "camera", "bridge camera", ("bridge",)),
         Binding(("_3",), "camera", "free camera", ("free",)),
+        Binding(("_4",), "next_camera", "the scenario's named cameras in turn ([[cameras]])"),
         Binding(("B",), "toggle_binoculars", f"binoculars up / down (bridge, {BINOCULAR_POWER:g}x)"),
         Binding(("W",), "fly", "free camera: forward", (1.0, 0.0, 0.0), "free", held=True),
         Binding(("S",), "fly", "free camera: back", (-1.0, 0.0, 0.0), "free", held=True),

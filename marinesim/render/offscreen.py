@@ -19,6 +19,7 @@ import numpy as np
 from marinesim.atomic import atomic_path
 from marinesim.errors import ParameterError
 from marinesim.gl import standalone_context
+from marinesim.render.camera import FAR_M, NEAR_M
 from marinesim.render.layers.foam import FOAM_TAU_S
 from marinesim.render.renderer import RenderOptions
 from marinesim.progress import task
@@ -86,6 +87,14 @@ class Offscreen:
         self.scene.draw(self.size, hud)
         data = self._fbo.read(components=3, alignment=1)
         return np.frombuffer(data, np.uint8).reshape(self.size[1], self.size[0], 3)[::-1].copy()
+
+    def depth_m(self) -> np.ndarray:
+        """The last frame's distance from the eye's plane to what each pixel shows (m; (h, w), top row first):
+        the depth buffer made linear again (:data:`~marinesim.render.camera.NEAR_M`, ``FAR_M``)."""
+        data = self._fbo.read(components=1, attachment=-1, dtype="f4", alignment=1)
+        depth = np.frombuffer(data, np.float32).reshape(self.size[1], self.size[0])[::-1].astype(float)
+        ndc = 2.0 * depth - 1.0
+        return 2.0 * FAR_M * NEAR_M / (FAR_M + NEAR_M - ndc * (FAR_M - NEAR_M))
 
     def go_to(self, t: float) -> None:
         """Advance to ``t`` (s) stepping the last three foam lifetimes, so foam and charts are as in a live run."""

@@ -20,8 +20,8 @@ from marinesim.angles import wave_compass_from_beta
 from marinesim.criteria.monitor import Level, value_and_limit
 from marinesim.errors import ParameterError
 from marinesim.gl import is_software
-from marinesim.render import CAMERAS, HUDS
-from marinesim.render.camera import BridgeCamera, FreeCamera, OrbitCamera
+from marinesim.render import HUDS
+from marinesim.render.camera import NAKED_EYE_FOV_DEG, BridgeCamera, FreeCamera, OrbitCamera
 from marinesim.render.clock import FrameClock
 from marinesim.render.hud import (ALARM_COLOR, FOOTPRINT_MIN_WIDTH, LEVEL_COLORS, Banner, Footprint, Hud, Slider,
                                   StripChart, StripHistory, font_px_for)
@@ -92,8 +92,9 @@ def _reading(value: float | None, limit: float) -> tuple[str, str]:
 
 
 class Scene:
-    """Draws ``scenario`` on ``ctx``: ``camera`` is one of :data:`CAMERAS`; the bridge camera
-    sits on the scenario's point named ``bridge`` (else 10 m above the reference point)."""
+    """Draws ``scenario`` on ``ctx``: ``camera`` is one of :data:`~marinesim.render.CAMERAS` or of the scenario's
+    named cameras; the bridge camera sits on the scenario's point named ``bridge`` (else 10 m above the reference
+    point)."""
 
     def __init__(self, ctx: moderngl.Context, scenario: Scenario, camera: str = "orbit",
                  options: RenderOptions = RenderOptions(), log: Callable[[str], None] = quiet) -> None:
@@ -120,6 +121,11 @@ class Scene:
         bridge = vessel.points.get("bridge", (0.0, 0.0, 10.0)) if vessel is not None else (0.0, 0.0, 10.0)
         self.cameras = {"orbit": OrbitCamera(distance_m=2.2 * length), "bridge": BridgeCamera(tuple(bridge)),
                         "free": FreeCamera()}
+        for named in scenario.cameras:  # [[cameras]]: on board, as the bridge camera, each with its own look
+            self.cameras[named.name] = BridgeCamera(named.point, named.look_yaw_deg, named.look_pitch_deg,
+                                                    named.fov_deg, widest_deg=max(named.fov_deg, NAKED_EYE_FOV_DEG))
+        self.named_cameras = tuple(named.name for named in scenario.cameras)
+        """The scenario's cameras (key 4 goes through them)."""
         self.camera_name = camera
         self.charted = CHARTED + (STATION_CHARTED if self.sim.station is not None else ())
         kept = self.charted + (FOOTPRINT_TRACK if self.sim.station is not None else ())
@@ -146,8 +152,8 @@ class Scene:
 
     @camera_name.setter
     def camera_name(self, name: str) -> None:
-        if name not in CAMERAS:
-            raise ParameterError(f"unknown camera {name!r} (known: {', '.join(CAMERAS)})")
+        if name not in self.cameras:
+            raise ParameterError(f"unknown camera {name!r} (known: {', '.join(self.cameras)})")
         self._camera_name = name
 
     @property

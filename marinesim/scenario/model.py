@@ -618,6 +618,39 @@ class StationOptions(Section):
         return self
 
 
+BUILT_IN_CAMERAS = ("orbit", "bridge", "free")
+"""The viewer's own cameras (keys 1, 2, 3): a named camera takes another name."""
+CAMERA_BODIES = ("ownship",)
+"""What a camera can be mounted on."""
+MAX_CAMERAS = 16
+
+
+class CameraOptions(Section):
+    """``[[cameras]]``: a named viewpoint on board, moving with her six degrees of freedom: the crane operator's cab
+    looking at the lift, the helideck officer at the deck's edge. The viewer's key 4 goes through them in turn;
+    ``--camera NAME`` starts on one. It looks at ``target``, or along ``look_azimuth_deg`` and
+    ``look_elevation_deg``."""
+
+    name: Annotated[str, Field(min_length=1, max_length=40)] = Field(description="what the viewer calls it")
+    body: Literal[CAMERA_BODIES] = Field("ownship", description="what it is mounted on: ownship, the vessel")
+    position_m: Point = Field(description="where the eye is, [x, y, z] in the body frame (x forward, y port, z up)")
+    target: str | Point | None = Field(
+        None, description="what it looks at: a [vessel.points] name or [x, y, z] in the body frame")
+    look_azimuth_deg: Annotated[float | None, Quantity("deg", ge=-180.0, le=180.0)] = Field(
+        None, description="without target: where it looks, from the bow, positive to starboard (absent: 0)")
+    look_elevation_deg: Annotated[float | None, Quantity("deg", ge=-89.0, le=89.0)] = Field(
+        None, description="without target: above the body's horizontal, negative down (absent: -10)")
+    fov_deg: Annotated[float, Quantity("deg", ge=5.0, le=120.0)] = Field(60.0, description="vertical field of view")
+
+    @model_validator(mode="after")
+    def _one_way_to_look(self) -> CameraOptions:
+        if self.name in BUILT_IN_CAMERAS:
+            raise _refuse("name", f"{self.name!r} is the viewer's own camera: give another name")
+        if self.target is not None and {"look_azimuth_deg", "look_elevation_deg"} & self.model_fields_set:
+            raise _refuse("target", "give a target or the look angles, not both")
+        return self
+
+
 class BriefingOptions(Section):
     """``[briefing]``: what the trainees are told before the exercise, and its objectives."""
 
@@ -641,6 +674,8 @@ class ScenarioFile(Section):
         default_factory=list, description="motion limits evaluated live and by marinesim assess")
     briefing: BriefingOptions | None = Field(None, description="the exercise's briefing and objectives")
     station: StationOptions | None = Field(None, description="station keeping: DP or moorings under the weather")
+    cameras: Annotated[list[CameraOptions], Field(max_length=MAX_CAMERAS)] = Field(
+        default_factory=list, description="named viewpoints on board (viewer key 4, --camera NAME)")
 
     @model_validator(mode="after")
     def _station_has_a_vessel_at_rest(self) -> ScenarioFile:
@@ -652,6 +687,15 @@ class ScenarioFile(Section):
             if self.vessel.manoeuvring not in (None, "station"):
                 raise _refuse("vessel.manoeuvring", "a vessel keeping station ([station]) is steered by her DP or "
                                                     "held by her lines: leave manoeuvring out")
+        names = [camera.name for camera in self.cameras]
+        for i, camera in enumerate(self.cameras):
+            if self.vessel is None:
+                raise _refuse(f"cameras[{i}].body", "a camera on board needs a [vessel]")
+            if names.index(camera.name) != i:
+                raise _refuse(f"cameras[{i}].name", f"{camera.name!r} names an earlier camera too")
+            if isinstance(camera.target, str) and camera.target not in self.vessel.points:
+                raise _refuse(f"cameras[{i}].target", f"{camera.target!r} is not one of [vessel.points] "
+                                                      f"({', '.join(self.vessel.points) or 'none'})")
         for i, criterion in enumerate(self.criteria):
             if criterion.quantity in STATION_QUANTITIES and self.station is None:
                 raise _refuse(f"criteria[{i}].quantity", f"{criterion.quantity} is a vessel keeping station's: the "

@@ -27,8 +27,9 @@ from marinesim.resources import resource_dir
 from marinesim.scenario import examples
 from marinesim.scenario.ship_file import load_ship, ship_from_hull
 from marinesim.scenario.model import (FOOTPRINT_M, HULL_OPTIONS, VISUAL_MESH_OPTIONS, WAVE_PARAMETERS, WEATHER,
-                                      CriterionOptions, EnvironmentOptions, EventOptions, OceanOptions, RunOptions,
-                                      ScenarioFile, SeaOptions, StationOptions, VesselOptions, validate, wind_of)
+                                      CameraOptions, CriterionOptions, EnvironmentOptions, EventOptions, OceanOptions,
+                                      RunOptions, ScenarioFile, SeaOptions, StationOptions, VesselOptions, validate,
+                                      wind_of)
 from marinesim.scenario.moorings_file import load_moorings
 from marinesim.scenario.station_file import StationFile, load_station
 from marinesim.station.dp import Dp
@@ -153,6 +154,38 @@ class Briefing:
 
 
 @dataclass(frozen=True)
+class Camera:
+    """A named camera on board (``[[cameras]]``): the eye at ``point`` (body frame, m), looking ``look_yaw_deg`` from
+    the bow (positive to port, as the body frame turns) and ``look_pitch_deg`` above the body's horizontal, with a
+    vertical field of view ``fov_deg``."""
+
+    name: str
+    point: tuple[float, float, float]
+    look_yaw_deg: float
+    look_pitch_deg: float
+    fov_deg: float
+    target: tuple[float, float, float] | None = None
+    """What it looks at (body frame, m), where the scenario names it."""
+
+
+def _camera(options: CameraOptions, points: dict[str, tuple[float, float, float]]) -> Camera:
+    """The camera ``options`` asks for, its look turned towards its target where it names one."""
+    eye, target = np.asarray(options.position_m, float), None
+    if options.target is None:
+        yaw, pitch = -(options.look_azimuth_deg or 0.0), options.look_elevation_deg
+        pitch = -10.0 if pitch is None else pitch
+    else:
+        target = np.asarray(points[options.target] if isinstance(options.target, str) else options.target, float)
+        look = target - eye
+        if not np.any(look):
+            raise ScenarioError(f"cameras: {options.name!r} is at its own target")
+        yaw, pitch = math.degrees(math.atan2(look[1], look[0])), math.degrees(math.atan2(look[2],
+                                                                                        math.hypot(*look[:2])))
+    return Camera(options.name, tuple(float(v) for v in eye), float(yaw), float(pitch), options.fov_deg,
+                  None if target is None else tuple(float(v) for v in target))
+
+
+@dataclass(frozen=True)
 class Scenario:
     """A validated scenario: the sea state, the ocean's options, the vessel (if any), the run, the
     exercise's events (in file order) and criteria; ``notes``: lines for the user on what it asks of its files (the
@@ -171,6 +204,8 @@ class Scenario:
     station: StationSetup | None = None
     scripted: tuple[tuple[str, str], ...] = ()
     """(criterion name, "exceeded" or "within"): what the exercise is built to show (``[[criteria]] scripted``)."""
+    cameras: tuple[Camera, ...] = ()
+    """The named cameras on board (``[[cameras]]``)."""
 
     @property
     def name(self) -> str:
@@ -259,8 +294,9 @@ def build_scenario(path: Path, file: ScenarioFile) -> Scenario:
                                           for o in file.briefing.objectives))
     notes = () if vessel is None else vessel.rao.warnings + _speed_notes(vessel, events)
     scripted = tuple((c.label, options.scripted) for c, options in zip(criteria, file.criteria) if options.scripted)
+    cameras = tuple(_camera(c, vessel.points) for c in file.cameras)
     return Scenario(path.resolve(), sea, file.ocean, file.run, vessel, events, criteria, briefing, file.environment,
-                    notes, station, scripted)
+                    notes, station, scripted, cameras)
 
 
 def _station(path: Path, options: StationOptions, vessel: Vessel, depth: float) -> StationSetup:

@@ -1,0 +1,118 @@
+"""Named cameras on board (``[[cameras]]``): each shipped exercise's role camera shows what it names in its first
+frame, key 4 goes through them, ``--camera NAME`` starts on one, and a bad camera is refused in one line."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from conftest import ROOT, VESSEL_SCENARIO as SCENARIO, cli, write
+from marinesim.errors import ScenarioError
+from marinesim.render.controls import Controls
+from marinesim.render.offscreen import Offscreen
+from marinesim.render.renderer import RenderOptions
+from marinesim.scenario import load_scenario
+
+TRAINING = ROOT / "configs" / "training"
+SIZE = (200, 112)
+ROLES = {"crane_lift": "crane cab", "helideck_landing": "helideck officer", "heavy_weather_transit": "bridge wing",
+         "offshore_loading": "loading master"}
+"""Each exercise's role camera."""
+CAMERA = """
+[[cameras]]
+name = "deck"
+position_m = [0.0, 10.0, 25.0]
+target = "bow"
+"""
+
+
+def _view(scenario, camera: str, vessel: bool = True) -> Offscreen:
+    from marinesim.gl import GraphicsError
+
+    options = RenderOptions(hud="off", reproducible=True, vessel=vessel, spray=False, wake=False)
+    try:
+        return Offscreen(scenario, SIZE, camera, "off", options)
+    except GraphicsError as error:
+        pytest.skip(f"no EGL OpenGL 4.3 here: {error}")
+
+
+@pytest.mark.parametrize("exercise", sorted(ROLES))
+def test_each_role_camera_shows_what_it_names(exercise):
+    """In the first frame from the exercise's role camera the point it looks at is at the centre of the picture, and
+    the depth image there is that point's distance (within 15 %): nothing stands between, and it is the vessel that
+    is seen (with the vessel left out the centre is far beyond it). A camera looking past its deck, from inside the
+    hull or at a stack of containers would show the trainee nothing of the job."""
+    scenario = load_scenario(TRAINING / f"{exercise}.toml")
+    camera, = (c for c in scenario.cameras if c.name == ROLES[exercise])
+    distances = []
+    for vessel in (True, False):
+        view = _view(scenario, camera.name, vessel)
+        with view:
+            view.go_to(0.0)
+            view.frame(hud=False)
+            depth = view.depth_m()
+            pose = view.scene.sim.pose()
+            (x, y, w), = view.scene.camera.eye(pose).project(pose.world(np.array([camera.target])), SIZE)
+            assert w > 0 and abs(x - SIZE[0] / 2) < 1.0 and abs(y - SIZE[1] / 2) < 1.0
+            distances.append(float(np.median(depth[SIZE[1] // 2 - 2:SIZE[1] // 2 + 3, SIZE[0] // 2 - 2:SIZE[0] // 2 + 3])))
+    seen, beyond = distances
+    assert seen == pytest.approx(w, rel=0.15), f"{exercise}: the centre shows something {seen:.1f} m off, not the " \
+                                               f"target {w:.1f} m off"
+    assert beyond > 1.2 * w
+
+
+def test_key_4_goes_through_the_named_cameras_and_the_command_line_starts_on_one(tmp_path, gl_context):
+    """Key 4 looks through the scenario's named cameras in turn (and says so where there are none); --camera NAME
+    starts a render on one, and an unknown name is one line listing the cameras there are."""
+    scenario = load_scenario(write(tmp_path, SCENARIO + CAMERA + CAMERA.replace('"deck"', '"mast"')))
+    assert [(c.name, round(c.look_yaw_deg, 6)) for c in scenario.cameras] == [("deck", round(
+        math.degrees(math.atan2(-10.0, 120.0)), 6))] * 1 + [("mast", round(math.degrees(math.atan2(-10.0, 120.0)), 6))]
+    view = Offscreen(scenario, SIZE, "orbit", "off", RenderOptions(hud="off", spray=False, wake=False))
+    with view:
+        controls = Controls(view.scene, recordings=tmp_path)
+        seen = []
+        for _ in range(3):
+            controls.press("_4")
+            seen.append(view.scene.camera_name)
+        assert seen == ["deck", "mast", "deck"]
+        controls.press("_1")
+        assert view.scene.camera_name == "orbit"
+    plain = load_scenario(write(tmp_path, SCENARIO, "plain.toml"))
+    with Offscreen(plain, SIZE, "orbit", "off", RenderOptions(hud="off", spray=False, wake=False)) as view:
+        controls = Controls(view.scene, recordings=tmp_path)
+        controls.press("_4")
+        assert view.scene.camera_name == "orbit" and "no named cameras" in controls.message
+    path = write(tmp_path, SCENARIO + CAMERA, "deck.toml")
+    assert cli("render", str(path), "--screenshot", str(tmp_path / "deck.png"), "--camera", "deck", "--size",
+               "160x90").returncode == 0
+    refused = cli("render", str(path), "--screenshot", str(tmp_path / "no.png"), "--camera", "crow's nest")
+    assert refused.returncode == 2 and "unknown camera \"crow's nest\" (known: orbit, bridge, free, deck)" in \
+        refused.stderr and len(refused.stderr.strip().splitlines()) == 1
+
+
+@pytest.mark.parametrize("change, message", [
+    (('target = "bow"', 'target = "crane_tip"'), r"cameras\[0\].target: 'crane_tip' is not one of \[vessel.points\] "
+                                                 r"\(bridge, bow\)"),
+    (('name = "deck"', 'name = "deck"\nbody = "fpso"'), r"cameras\[0\].body: .*'ownship'"),
+    (('name = "deck"', 'name = "bridge"'), r"cameras\[0\].name: 'bridge' is the viewer's own camera"),
+    (('target = "bow"', 'target = "bow"\nlook_azimuth_deg = 30.0'), r"cameras\[0\].target: give a target or the look "
+                                                                    r"angles, not both"),
+    (('position_m = [0.0, 10.0, 25.0]', 'position_m = [0.0, 10.0]'), r"cameras\[0\].position_m: expected \[x, y, z\]"),
+    (('target = "bow"', 'target = "bow"\nfov_deg = 170.0'), r"cameras\[0\].fov_deg: must be in 5..120 deg"),
+])
+def test_a_bad_camera_is_refused_in_one_line(tmp_path, change, message):
+    """A camera on something that is not there, named as the viewer's own, or looking two ways at once: one line
+    naming the key, before anything runs."""
+    with pytest.raises(ScenarioError, match=message):
+        load_scenario(write(tmp_path, SCENARIO + CAMERA.replace(*change)))
+
+
+def test_two_cameras_of_one_name_are_refused(tmp_path):
+    """The key would never reach the second one, and --camera could not say which."""
+    with pytest.raises(ScenarioError, match=r"cameras\[1\].name: 'deck' names an earlier camera too"):
+        load_scenario(write(tmp_path, SCENARIO + CAMERA + CAMERA))
+    scenario = load_scenario(write(tmp_path, SCENARIO + CAMERA, "one.toml"))
+    assert replace(scenario, cameras=()).cameras == ()
