@@ -184,3 +184,31 @@ def test_head_seas_at_speed_respond_at_the_encounter_frequency():
         wave = np.sum(w * weight) / np.sum(weight)
         assert measured == pytest.approx(encounter, rel=0.03), column
         assert encounter > 1.3 * wave  # the wave-frequency answer is far off
+
+
+@pytest.mark.parametrize("beta_rel_deg", [180.0, 135.0, 90.0])
+def test_two_identical_vessels_side_by_side_lag_by_the_wave_travel_between_them(beta_rel_deg):
+    """Two tankers on the same heading, 60 m apart across their beam, in a long-crested regular sea: each heaves and
+    rolls as the RAO says, and the one the wave reaches later lags by k d sin(beta) exactly (the phase the
+    components carry in space, eta = a cos(w t - k . x)). Another body whose motions were in phase with own-ship's
+    (or lagged by the wrong amount) would show a crane operator or a helicopter pilot a deck that does not move as
+    the sea does between them."""
+    table = read_rao(TANKER)
+    response, c = regular_response(table, 10.0, beta_rel_deg)
+    heading = response.track.heading
+    apart = 60.0  # to port of the first
+    offset = apart * np.array([-math.sin(heading), math.cos(heading)])
+    other = Response(table, c, Track(heading=heading, x0=13.0 + offset[0], y0=-7.0 + offset[1]))
+    omega = float(c.omega[0])
+    t = np.arange(20 * 64) * (2 * math.pi / omega) / 64
+    lag = float(c.kx[0] * offset[0] + c.ky[0] * offset[1])  # k . d: the phase the second is behind by (rad)
+    expected_lag = (2 * math.pi / 10.0) ** 2 / 9.80665 * apart * math.sin(math.radians(beta_rel_deg))
+    assert lag == pytest.approx(expected_lag, rel=1e-3, abs=1e-9)  # deep water: k = w^2 / g
+    basis = np.exp(-1j * omega * t)
+    first, second = response.frame(t), other.frame(t)
+    for name in ("heave_m", "roll_deg", "pitch_deg"):
+        a, b = np.mean(first[name] * basis), np.mean(second[name] * basis)
+        if abs(a) < 1e-6 * abs(np.mean(first["heave_m"] * basis)) + 1e-12:
+            continue  # no such motion in this sea (roll in head seas)
+        assert abs(b) == pytest.approx(abs(a), rel=1e-9)  # identical vessels, the same amplitude
+        assert np.angle(b / a) == pytest.approx(np.angle(np.exp(-1j * lag)), abs=1e-6)
