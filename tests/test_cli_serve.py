@@ -38,41 +38,64 @@ def _metres_per_degree(lat_deg: float) -> tuple[float, float]:
     return math.radians(meridian), math.radians(normal * math.cos(math.radians(lat_deg)))
 
 
-def _serve(tmp_path: Path, *options: str) -> tuple[subprocess.Popen, str]:
-    """``marinesim serve`` on a free loopback port for 20 s at 4 x real time; the process and the station URL it
-    printed (read as it prints it)."""
+def _serve(tmp_path: Path, *options: str) -> tuple[subprocess.Popen, dict[str, str]]:
+    """``marinesim serve`` on a free loopback port for 20 s at 4 x real time; the process and the addresses it
+    printed (read as it prints them): the instructor's page and a station's URL."""
     process = subprocess.Popen(
         [sys.executable, "-m", "marinesim", "serve", str(TRANSIT), "--bind", "127.0.0.1:0", "--duration", "20",
          "--time-scale", "4", "--log", str(tmp_path / "served.jsonl"), "--quiet", *options],
         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, cwd=tmp_path,
         env=os.environ | {"PYTHONUNBUFFERED": "1"})
-    printed = []
+    printed, found = [], {}
     for line in process.stdout:
         printed.append(line)
-        if found := re.search(r"--connect '(ws://[^']+)'", line):
-            return process, found.group(1)
+        if page := re.search(r"instructor page: (http://\S+)", line):
+            found["page"] = page.group(1)
+        if station := re.search(r"--connect '(ws://[^']+)'", line):
+            found["station"] = station.group(1)
+            return process, found
     process.wait(HANG_S)
     raise AssertionError("serve printed no station URL:\n" + "".join(printed))
 
 
+def _until_printed(process: subprocess.Popen, text: str, printed: list[str]) -> None:
+    """Read ``process``'s lines into ``printed`` until one holds ``text`` (it ends the test if the process ends)."""
+    for line in process.stdout:
+        printed.append(line)
+        if text in line:
+            return
+    raise AssertionError(f"never printed {text!r}:\n" + "".join(printed))
+
+
 def test_a_station_joins_from_the_command_line_and_follows_to_the_end(tmp_path, capsys):
-    """The command line a station's operator types (the URL serve printed) follows the exercise to its end; a wrong
-    token or address is one line and status 2, not a traceback or a hang."""
-    process, url = _serve(tmp_path)
+    """The command line a station's operator types (the URL serve printed) joins an exercise served frozen, follows
+    it from the instructor's resume to its end, and says so; a wrong token or address is one line and status 2, not
+    a traceback or a hang. Served frozen, the exercise waits for the station however long it takes to start."""
+    from marinesim.net.station import Link
+
+    process, urls = _serve(tmp_path, "--frozen")
+    url, printed = urls["station"], []
     try:
         assert main(["run", str(TRANSIT), "--duration", "20", "--connect", url.replace("token=", "token=x"),
                      "--headless", "--station", "crane"]) == 2
         assert "refused the station (403: wrong token)" in capsys.readouterr().err
-        assert main(["run", str(TRANSIT), "--duration", "20", "--connect", url, "--headless",
-                     "--station", "crane"]) == 0
-        out = capsys.readouterr().out
-        assert "station crane: followed the exercise to t 20.0 s" in out
         assert main(["run", "--connect", "http://127.0.0.1:1/ws", "--headless"]) == 2
         assert "--connect http://127.0.0.1:1/ws: expected ws://HOST:PORT/ws?token=TOKEN" in capsys.readouterr().err
+        station = subprocess.Popen([sys.executable, "-m", "marinesim", "run", str(TRANSIT), "--duration", "20",
+                                    "--connect", url, "--headless", "--station", "crane"], stdout=subprocess.PIPE,
+                                   stderr=subprocess.STDOUT, text=True, cwd=tmp_path)
+        _until_printed(process, "station crane joins", printed)
+        page = urls["page"]
+        instructor = Link(url.split("?")[0] + "?" + page.split("?")[1], {"type": "hello", "role": "instructor"})
+        instructor.send({"type": "control", "control": "resume"})
+        out = station.communicate(timeout=HANG_S)[0]
+        instructor.close()
     finally:
-        rest = process.communicate(timeout=HANG_S)[0]
+        rest = "".join(printed) + process.communicate(timeout=HANG_S)[0]
+    assert station.returncode == 0, out
+    assert "station crane: followed the exercise to t 20.0 s" in out
     assert process.returncode == 0, rest
-    assert "station crane joins" in rest and "the exercise ended" in rest
+    assert "the exercise ended" in rest
     assert main(["report", str(tmp_path / "served.jsonl"), "--out", str(tmp_path / "report.html")]) == 0
 
 

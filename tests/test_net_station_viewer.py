@@ -33,7 +33,7 @@ def walkthrough(tmp_path: Path) -> None:
     from marinesim.scenario import load_scenario, with_run
     from served import WAIT_S, ServedInThread
 
-    scenario = with_run(load_scenario(resource_dir("configs") / "training" / "heavy_weather_transit.toml"), 60.0)
+    scenario = with_run(load_scenario(resource_dir("configs") / "training" / "heavy_weather_transit.toml"), 600.0)
     try:
         viewer = Viewer(scenario, "bridge", "off", size=(320, 180), headless=True, log_path=None)
     except (NoDisplay, GraphicsError) as error:

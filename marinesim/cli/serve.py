@@ -33,6 +33,9 @@ def add(commands: argparse._SubParsersAction) -> None:
     p.add_argument("--time-scale", type=float, default=1.0, choices=SCALES, metavar="X",
                    help=f"simulated seconds a second at the start (one of {', '.join(map(str, SCALES))}; default 1, "
                         "real time; the page changes it)")
+    p.add_argument("--frozen", action="store_true",
+                   help="start frozen at 0 s: the stations join and the briefing is given, then the instructor's "
+                        "resume starts the clock")
     add_stream_options(p)
     p.add_argument("--quiet", action="store_true", help="no progress bar while the exercise is prepared")
     p.set_defaults(handler=handle)
@@ -65,6 +68,8 @@ def handle(args: argparse.Namespace) -> int:
         exercise = Exercise(simulation, log=print)
         pace = Pace()
         pace.set_scale(args.time_scale)
+        if args.frozen:
+            pace.freeze()
         server = ExerciseServer(exercise, log_path, streams=streams, say=print, pace=pace)
 
         async def serve() -> None:
@@ -72,7 +77,8 @@ def handle(args: argparse.Namespace) -> int:
             where = f"{bound[0]}:{bound[1]}" if ":" not in bound[0] else f"[{bound[0]}]:{bound[1]}"
             print(f"serving {scenario.name} ({scenario.run.duration_s:g} s, seed {scenario.run.seed}) on {where}"
                   f"{'' if host in ('127.0.0.1', 'localhost', '::1') else ' (reachable from other machines)'}")
-            print(f"instructor page: http://{where}/?token={server.token}")
+            print(f"instructor page: http://{where}/?token={server.token}"
+                  + ("  (frozen at 0 s: resume on the page starts the exercise)" if args.frozen else ""))
             print(f"a station joins: marinesim run {scenario.path} --connect "
                   f"'ws://{where}/ws?token={server.station_token}' --station NAME")
             try:
