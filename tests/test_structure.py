@@ -19,7 +19,7 @@ from conftest import ROOT
 PACKAGE = ROOT / "marinesim"
 LAYERS = (
     {"__init__", "errors", "constants", "angles", "atomic", "cache", "tokens", "recent", "progress",
-     "resources", "formats", "pose", "gl", "figures"},
+     "resources", "formats", "pose", "gl", "figures", "views"},
     {"sea"}, {"hull"}, {"vessel"}, {"manoeuvring"}, {"station"}, {"wake"}, {"solver"}, {"criteria"},
     {"scenario"}, {"session"}, {"study"}, {"report"}, {"render"}, {"net"}, {"cli", "__main__"},
 )

@@ -1,10 +1,7 @@
 """The viewer: rendering the sea, the vessel and its wake (moderngl), cameras, HUD, video."""
 
-from marinesim.scenario.model import BUILT_IN_CAMERAS
+from marinesim.views import CAMERAS
 
-CAMERAS = BUILT_IN_CAMERAS
-"""The viewer's own cameras: orbiting the vessel, on its bridge, flying free (a scenario adds named ones on board,
-``[[cameras]]``)."""
 CASCADES = ("auto", "gpu", "cpu")
 """Where the ocean's cascades are synthesised each frame (``RenderOptions.cascades``)."""
 HUDS = ("strip", "panels", "off")

@@ -28,6 +28,7 @@ from marinesim.criteria.sickness import MAX_WF_DT_S
 from marinesim.errors import FileFormatError, ParameterError, ScenarioError
 from marinesim.formats import check_file, extensions, formats
 from marinesim.hull.mesh import UNITS
+from marinesim.views import CAMERAS
 from marinesim.manoeuvring.actuators import TELEGRAPH
 from marinesim.sea.seastate import SeaState
 from marinesim.sea.kinds import (CHOPPINESS_RANGE, FETCH_LIMITED, MAX_DEPTH_M, MAX_FETCH_KM, MAX_HS_M, MAX_RESOLUTION,
@@ -618,8 +619,6 @@ class StationOptions(Section):
         return self
 
 
-BUILT_IN_CAMERAS = ("orbit", "bridge", "free")
-"""The viewer's own cameras (keys 1, 2, 3): a named camera takes another name."""
 CAMERA_BODIES = ("ownship",)
 """What a camera can be mounted on."""
 MAX_CAMERAS = 16
@@ -644,7 +643,7 @@ class CameraOptions(Section):
 
     @model_validator(mode="after")
     def _one_way_to_look(self) -> CameraOptions:
-        if self.name in BUILT_IN_CAMERAS:
+        if self.name in CAMERAS:
             raise _refuse("name", f"{self.name!r} is the viewer's own camera: give another name")
         if self.target is not None and {"look_azimuth_deg", "look_elevation_deg"} & self.model_fields_set:
             raise _refuse("target", "give a target or the look angles, not both")

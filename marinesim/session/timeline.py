@@ -236,10 +236,10 @@ class Simulation:
         from ``at`` (s; default :data:`PREPARE_S` from now) whatever the sea is doing then; ``speed_kn`` and
         ``heading_deg`` are orders to the engine and the autopilot (:meth:`order`), given at ``at`` (default now)."""
         start = self.time if at is None else require_at_least("start of a change (s)", at, 0.0)
-        require_within("hs_factor", hs_factor, *FACTOR_RANGE)
-        require_within("tp_factor", tp_factor, *FACTOR_RANGE)
-        require_within("turn_waves_deg", turn_waves_deg, -360.0, 360.0, "deg")
-        require_within("ramp_s", ramp_s, 0.0, MAX_DURATION_S, "s")
+        require_within("Hs factor", hs_factor, *FACTOR_RANGE)
+        require_within("Tp factor", tp_factor, *FACTOR_RANGE)
+        require_within("turn of the waves", turn_waves_deg, -360.0, 360.0, "deg")
+        require_within("ramp time of a sea change", ramp_s, 0.0, MAX_DURATION_S, "s")
         if (hs_factor, tp_factor, turn_waves_deg) != (1.0, 1.0, 0.0):
             if sea is not None:
                 raise ParameterError("give a new sea or factors of the present one, not both")
@@ -286,7 +286,7 @@ class Simulation:
         ``ramp_s`` (s) from the weather of the moment; the clock (``hours``, with ``time_utc``) moves at once."""
         before = self.environment
         after = before.changed(hours, **keys)
-        ramp = require_within("ramp_s", ramp_s, 0.0, MAX_DURATION_S, "s")
+        ramp = require_within("ramp time of a weather change", ramp_s, 0.0, MAX_DURATION_S, "s")
         self._weather = _WeatherRamp(self.time, ramp, before.changed(hours) if hours else before, after)
         if self.station is not None and "wind_speed_m_s" in keys:  # from the step it acts at, as an order
             start = self.voyage.step_of(self.time) * STEP_S
