@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import contextlib
 import json
+import math
 import os
 import re
 import secrets
@@ -30,7 +31,7 @@ import signal
 import stat
 import threading
 from pathlib import Path
-from typing import Iterator, Sequence
+from typing import Any, Iterator, Sequence
 
 import filelock
 
@@ -187,6 +188,22 @@ def writing(*files: AtomicFile) -> Iterator[None]:
 def json_text(data: dict) -> str:
     """``data`` as the indented JSON every sidecar is written in (one trailing newline)."""
     return json.dumps(data, indent=2) + "\n"
+
+
+def strict_json(value: Any, indent: int | None = None) -> str:
+    """``value`` as strict JSON, what a browser or another program reads: a non-finite float (NaN, infinity)
+    becomes null."""
+    return json.dumps(_finite(value), indent=indent, allow_nan=False)
+
+
+def _finite(value: Any) -> Any:
+    if isinstance(value, float):
+        return value if math.isfinite(value) else None
+    if isinstance(value, dict):
+        return {key: _finite(item) for key, item in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_finite(item) for item in value]
+    return value
 
 
 def commit_together(files: Sequence[AtomicFile]) -> None:

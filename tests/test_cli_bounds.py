@@ -167,10 +167,11 @@ def test_rao_ulen_out_of_range_is_refused(ulen):
 
 
 def test_every_json_output_is_strict_json():
-    """``json_text`` turns NaN and infinities into null: a NaN in a report would make it unreadable as JSON."""
-    from marinesim.cli.common import json_text
+    """``strict_json`` turns NaN and infinities into null: a NaN in a report (or in the served exercise's state) would
+    make it unreadable as JSON."""
+    from marinesim.atomic import strict_json
 
-    text = json_text({"a": math.nan, "b": [math.inf, 1.5], "c": np.float64(-math.inf)})
+    text = strict_json({"a": math.nan, "b": [math.inf, 1.5], "c": np.float64(-math.inf)})
     assert json.loads(text) == {"a": None, "b": [None, 1.5], "c": None}
 
 

@@ -7,7 +7,8 @@ import sys
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from marinesim.cli.common import bars, json_text
+from marinesim.atomic import strict_json
+from marinesim.cli.common import bars
 
 if TYPE_CHECKING:
     from marinesim.session.exercise import Assessment
@@ -40,7 +41,7 @@ def handle(args: argparse.Namespace) -> int:
     with reporting(bars(args.quiet)):
         exercise = run_exercise(scenario, log=log)
     result = exercise.assessment()
-    print(json_text(result.as_dict(), indent=2) if args.json else "\n".join(table(result)))
+    print(strict_json(result.as_dict(), indent=2) if args.json else "\n".join(table(result)))
     return 0
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from marinesim.cli.common import json_text, refuse_overwriting
+from marinesim.cli.common import refuse_overwriting
 
 
 def add(commands: argparse._SubParsersAction) -> None:
@@ -24,7 +24,7 @@ def add(commands: argparse._SubParsersAction) -> None:
 
 
 def handle(args: argparse.Namespace) -> int:
-    from marinesim.atomic import atomic_path
+    from marinesim.atomic import atomic_path, strict_json
     from marinesim.errors import ParameterError, ScenarioError
     from marinesim.scenario import load_scenario
     from marinesim.station.capability import envelope
@@ -47,7 +47,7 @@ def handle(args: argparse.Namespace) -> int:
         with atomic_path(args.plot) as temp:
             plot_capability(result, temp, ship.name, intact)
     if args.json:
-        print(json_text(result.as_json(), indent=2))
+        print(strict_json(result.as_json(), indent=2))
         return 0
     lost = f" without {', '.join(args.lose)}" if args.lose else ""
     print(f"DP capability of the {ship.name}{lost}: limiting mean wind (m/s) with its sea and a 0.75 m/s current, "

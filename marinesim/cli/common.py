@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import argparse
 import contextlib
-import json
 import math
 import sys
 from collections.abc import Callable
@@ -23,21 +22,6 @@ from marinesim.sea.kinds import APPLIES_TO, SPECTRUM_TYPES, SPREADING_TYPES, ref
 
 if TYPE_CHECKING:
     from marinesim.scenario import Scenario
-
-
-def json_text(value: Any, indent: int | None = None) -> str:
-    """``value`` as strict JSON: a non-finite float (NaN, infinity) becomes null."""
-    return json.dumps(_finite(value), indent=indent, allow_nan=False)
-
-
-def _finite(value: Any) -> Any:
-    if isinstance(value, float):
-        return value if math.isfinite(value) else None
-    if isinstance(value, dict):
-        return {key: _finite(item) for key, item in value.items()}
-    if isinstance(value, (list, tuple)):
-        return [_finite(item) for item in value]
-    return value
 
 
 def bars(quiet: bool) -> Reporter | None:

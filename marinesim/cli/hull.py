@@ -6,7 +6,8 @@ import argparse
 from pathlib import Path
 
 import marinesim.hull  # noqa: F401  registers the mesh formats listed below
-from marinesim.cli.common import add_hull_options, hull_from_args, json_text
+from marinesim.atomic import strict_json
+from marinesim.cli.common import add_hull_options, hull_from_args
 from marinesim.formats import extensions
 
 
@@ -27,7 +28,7 @@ def handle(args: argparse.Namespace) -> int:
     hull = hull_from_args(args)
     statics = hydrostatics(hull)
     if args.json:
-        print(json_text(statics.as_dict() | {"triangles": len(hull.faces), "notes": list(hull.notes)}))
+        print(strict_json(statics.as_dict() | {"triangles": len(hull.faces), "notes": list(hull.notes)}))
     else:
         print(f"{hull.source}: {len(hull.faces):,} triangles")
         print(format_hydrostatics(statics))

@@ -8,7 +8,8 @@ import math
 import sys
 from pathlib import Path
 
-from marinesim.cli.common import bars, json_text, number_list
+from marinesim.atomic import strict_json
+from marinesim.cli.common import bars, number_list
 from marinesim.errors import ParameterError
 
 
@@ -91,7 +92,7 @@ def handle(args: argparse.Namespace) -> int:
                "best_heading_deg": result.best_heading_deg, "overall_pct": round(result.overall_pct, 3),
                "overall": "the best heading in each sea state"}
     if args.json:
-        print(json_text(summary, indent=2))
+        print(strict_json(summary, indent=2))
     else:
         for line in table(study, result):
             log(line)

@@ -6,7 +6,7 @@ import argparse
 from pathlib import Path
 
 import marinesim.vessel  # noqa: F401  registers the RAO formats listed below
-from marinesim.cli.common import json_text, number_list, refuse_overwriting
+from marinesim.cli.common import number_list, refuse_overwriting
 from marinesim.errors import require_finite, require_within
 from marinesim.formats import formats
 
@@ -41,7 +41,7 @@ def add(commands: argparse._SubParsersAction) -> None:
 
 
 def handle(args: argparse.Namespace) -> int:
-    from marinesim.atomic import atomic_path
+    from marinesim.atomic import atomic_path, strict_json
     from marinesim.constants import KNOT
     from marinesim.scenario.model import MAX_SPEED_KN
     from marinesim.vessel import read_rao
@@ -71,7 +71,7 @@ def handle(args: argparse.Namespace) -> int:
         report["notes"].append(f"--speed-kn: {note}")
     if args.write:
         report["written"] = {"path": str(args.write), "notes": list(notes)}
-    print(json_text(report) if args.json else format_rao_summary(report))
+    print(strict_json(report) if args.json else format_rao_summary(report))
     if args.plot:
         with atomic_path(args.plot) as temp:
             plot_rao(table, temp, headings, speed or 0.0)

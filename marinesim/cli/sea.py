@@ -6,7 +6,7 @@ import argparse
 import math
 from pathlib import Path
 
-from marinesim.cli.common import add_sea_options, json_text, wave_systems
+from marinesim.cli.common import add_sea_options, wave_systems
 from marinesim.errors import ParameterError
 
 
@@ -45,7 +45,7 @@ def sea_from_args(args: argparse.Namespace):
 
 
 def handle(args: argparse.Namespace) -> int:
-    from marinesim.atomic import atomic_path
+    from marinesim.atomic import atomic_path, strict_json
     from marinesim.sea import Ocean
     from marinesim.sea.summary import summary
 
@@ -61,7 +61,7 @@ def handle(args: argparse.Namespace) -> int:
         with atomic_path(args.plot) as temp:
             plot_sea(ocean, temp, args.time)
     if args.json:
-        print(json_text(report, indent=2))
+        print(strict_json(report, indent=2))
     else:
         print(_format_summary(report))
     for label, path in (("spectrum", args.spectrum_csv), ("plot", args.plot)):

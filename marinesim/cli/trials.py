@@ -6,7 +6,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from marinesim.cli.common import bars, json_text, refuse_overwriting
+from marinesim.cli.common import bars, refuse_overwriting
 
 
 def add(commands: argparse._SubParsersAction) -> None:
@@ -26,7 +26,7 @@ def add(commands: argparse._SubParsersAction) -> None:
 def handle(args: argparse.Namespace) -> int:
     import tomllib
 
-    from marinesim.atomic import atomic_path
+    from marinesim.atomic import atomic_path, strict_json
     from marinesim.constants import KNOT
     from marinesim.errors import ParameterError, ScenarioError
     from marinesim.manoeuvring.trials import trials
@@ -56,7 +56,7 @@ def handle(args: argparse.Namespace) -> int:
         with atomic_path(args.plot) as temp:
             plot_trials(result, temp)
     if args.json:
-        print(json_text(result.as_dict(), indent=2))
+        print(strict_json(result.as_dict(), indent=2))
     else:
         print(_table(result))
     return 0

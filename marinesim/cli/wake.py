@@ -6,7 +6,7 @@ import argparse
 from pathlib import Path
 
 import marinesim.hull  # noqa: F401  registers the mesh formats listed below
-from marinesim.cli.common import add_hull_options, bars, hull_from_args, json_text, number_list, refuse_overwriting
+from marinesim.cli.common import add_hull_options, bars, hull_from_args, number_list, refuse_overwriting
 from marinesim.errors import ParameterError
 from marinesim.formats import extensions
 
@@ -38,7 +38,7 @@ def add(commands: argparse._SubParsersAction) -> None:
 def handle(args: argparse.Namespace) -> int:
     import time
 
-    from marinesim.atomic import atomic_path
+    from marinesim.atomic import atomic_path, strict_json
     from marinesim.constants import KNOT
     from marinesim.hull import hydrostatics
     from marinesim.progress import reporting
@@ -90,7 +90,7 @@ def handle(args: argparse.Namespace) -> int:
         if not args.json:
             print(_format_wake(report, hull.notes if speed_kn == speeds[0] else ()))
     if args.json:
-        print(json_text(reports[0] if len(reports) == 1 else reports))
+        print(strict_json(reports[0] if len(reports) == 1 else reports))
     return 0
 
 

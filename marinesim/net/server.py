@@ -35,6 +35,7 @@ import numpy as np
 
 from marinesim import __version__
 from marinesim.angles import wave_compass_from_beta
+from marinesim.atomic import strict_json
 from marinesim.errors import MarinesimError, ParameterError
 from marinesim.session.exercise import EVERYONE, MAX_STATION, Exercise, quiet
 from marinesim.session.log import action_problem, write_log
@@ -144,17 +145,6 @@ class Client:
 def _finite(value: object) -> bool:
     """Whether ``value`` is a finite number (not a bool): JSON allows NaN and 1e400, the outputs do not."""
     return isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
-
-
-def _plain(value: Any) -> Any:
-    """``value`` with each non-finite number as None: what JSON carries to a browser (which refuses NaN)."""
-    if isinstance(value, float):
-        return value if math.isfinite(value) else None
-    if isinstance(value, dict):
-        return {key: _plain(item) for key, item in value.items()}
-    if isinstance(value, (list, tuple)):
-        return [_plain(item) for item in value]
-    return value
 
 
 def ship_state(exercise: Exercise) -> dict[str, Any] | None:
@@ -412,7 +402,7 @@ class ExerciseServer:
             welcome = {"type": "welcome", "marinesim": __version__, "t": self.exercise.sim.time,
                        "scenario": self.scenario | {"stations": self.stations()}, "track": list(self.track),
                        "journal": self.exercise.journal[:client.sent]}
-        await self._send(client, json.dumps(_plain(welcome), allow_nan=False))
+        await self._send(client, strict_json(welcome))
 
     def stations(self) -> list[str]:
         return sorted({c.station for c in self.clients if c.role == "station"})
@@ -522,7 +512,7 @@ class ExerciseServer:
         clients = list(self.clients)
         texts = []
         for client in clients:
-            texts.append(json.dumps(_plain(state | {"journal": journal[client.sent:]}), allow_nan=False))
+            texts.append(strict_json(state | {"journal": journal[client.sent:]}))
             client.sent = len(journal)
         await asyncio.gather(*(self._send(client, text) for client, text in zip(clients, texts)))
 
