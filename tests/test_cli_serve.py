@@ -17,6 +17,7 @@ import pandas as pd
 import pynmea2
 import pytest
 
+from conftest import VESSEL_SCENARIO, write
 from marinesim.cli import main
 from marinesim.resources import resource_dir
 
@@ -97,6 +98,24 @@ def test_a_station_joins_from_the_command_line_and_follows_to_the_end(tmp_path, 
     assert process.returncode == 0, rest
     assert "the exercise ended" in rest
     assert main(["report", str(tmp_path / "served.jsonl"), "--out", str(tmp_path / "report.html")]) == 0
+
+
+def test_bad_serve_and_stream_options_are_one_line_each(tmp_path, capsys):
+    """A time scale the page does not offer, an address that is not HOST:PORT, a stream to something that is not a
+    UDP address, a stream from a scenario that does not say where it is, a station asked to stream: each is one
+    line naming the option, status 2, before anything is built or listens."""
+    nowhere = write(tmp_path, VESSEL_SCENARIO)  # no [environment] position
+    cases = [(["serve", str(TRANSIT), "--time-scale", "3"], "--time-scale 3: expected one of 0.25, 0.5, 1, 2, 4, 8"),
+             (["serve", str(TRANSIT), "--bind", "localhost"], "--bind localhost: expected HOST:PORT"),
+             (["serve", str(TRANSIT), "--nmea", "tcp://127.0.0.1:10110"], "--nmea must be udp://HOST:PORT"),
+             (["run", str(nowhere), "--headless", "--nmea", "udp://127.0.0.1:10110"],
+              "--nmea and --dis need where the exercise is: [environment] latitude_deg and longitude_deg"),
+             (["run", str(TRANSIT), "--connect", "ws://127.0.0.1:1/ws?token=t", "--dis", "udp://127.0.0.1:3000"],
+              "--nmea and --dis stream from marinesim serve")]
+    for argv, message in cases:
+        assert main(argv) == 2, argv
+        err = capsys.readouterr().err.strip()
+        assert message in err and len(err.splitlines()) == 1, err
 
 
 def test_the_nmea_stream_agrees_with_the_motion_table(tmp_path):

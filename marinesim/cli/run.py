@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import math
 from pathlib import Path
 
 from marinesim.cli.common import (add_motion_options, add_stream_options, add_view_options, bars, motion_scenario,
@@ -153,11 +154,12 @@ def _station(args: argparse.Namespace, scenario) -> int:
         shown = 0
 
         def tell(_: Station) -> None:
+            """Print the messages this station has not shown yet: the events' and the instructor's to it or all."""
             nonlocal shown
-            messages = [(t, text, to) for t, text, to in exercise.said if to in ("all", args.station)]
-            for t, text, _to in messages[shown:]:
-                print(f"t {t:7.1f} s  instructor: {text}")
-            shown = len(messages)
+            lines = exercise.messages(span_s=math.inf, station=args.station)
+            for line in lines[shown:]:
+                print(line)
+            shown = len(lines)
 
         print(f"station {args.station}: following {station.link.address} headless")
         try:

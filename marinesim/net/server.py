@@ -22,7 +22,6 @@ import asyncio
 import hmac
 import json
 import math
-import re
 import secrets
 import time
 from collections import deque
@@ -37,8 +36,9 @@ from marinesim import __version__
 from marinesim.angles import wave_compass_from_beta
 from marinesim.atomic import strict_json
 from marinesim.errors import MarinesimError, ParameterError
+from marinesim.scenario.schema import briefing_paragraphs
 from marinesim.session.exercise import EVERYONE, MAX_STATION, Exercise, quiet
-from marinesim.session.log import action_problem, write_log
+from marinesim.session.log import action_problem, is_a, write_log
 from marinesim.session.sidecar import sha256
 
 TICK_S = 0.1
@@ -61,7 +61,7 @@ exercise for everyone (it joins again at the current time)."""
 STATION_ACTIONS = frozenset({"order", "acknowledge", "report"})
 """What a station may do: the trainee's orders (not the instructor's faults), acknowledgements, reports."""
 SCALES = (0.25, 0.5, 1.0, 2.0, 4.0, 8.0)
-"""The time scales an instructor may set (``marinesim serve --time-scale`` offers the same)."""
+"""The time scales an instructor may set (on the page, and ``marinesim serve --time-scale``)."""
 PAGE = Path(__file__).parent / "page"
 """The instructor page's files (HTML, JS, CSS, uPlot)."""
 
@@ -142,11 +142,6 @@ class Client:
     """How far the station's own copy of the exercise is behind the server's (s), as it last said."""
 
 
-def _finite(value: object) -> bool:
-    """Whether ``value`` is a finite number (not a bool): JSON allows NaN and 1e400, the outputs do not."""
-    return isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
-
-
 def ship_state(exercise: Exercise) -> dict[str, Any] | None:
     """Own-ship now, as the page shows it (None without a vessel): the record's row at the exercise's time (position
     north and east of the start in m, compass heading, course and speed over ground, rate of turn, rudder, roll,
@@ -179,11 +174,6 @@ def predicted(ship: dict[str, Any]) -> list[list[float]]:
     return points
 
 
-def paragraphs(text: str) -> str:
-    """``text`` as a page flows it: the lines of a paragraph joined, paragraphs kept apart by a blank line."""
-    return "\n\n".join(" ".join(block.split()) for block in re.split(r"\n\s*\n", text.strip()) if block.strip())
-
-
 def describe(exercise: Exercise, faults: tuple[str, ...]) -> dict[str, Any]:
     """The exercise as the page's welcome gives it: name, briefing, objectives, events, criteria, faults."""
     scenario = exercise.scenario
@@ -192,8 +182,9 @@ def describe(exercise: Exercise, faults: tuple[str, ...]) -> dict[str, Any]:
                "what": e.describe().partition(": ")[2], "message": e.message} for i, e in enumerate(exercise.events)]
     criteria = [{"name": c.label, "unit": c.measure.unit, "limit": c.limit, "caution": c.caution}
                 for c in exercise.criteria]
+    paragraphs = briefing_paragraphs(briefing.text if briefing else "")
     return {"name": scenario.name, "title": scenario.name.replace("_", " "), "sha256": sha256(scenario.path),
-            "briefing": paragraphs(briefing.text) if briefing else "",
+            "briefing": "\n\n".join("\n".join(lines) for lines in paragraphs),
             "objectives": [o.text for o in briefing.objectives] if briefing else [],
             "duration_s": exercise.duration_s, "seed": scenario.run.seed, "events": events, "criteria": criteria,
             "faults": list(faults)}
@@ -364,7 +355,7 @@ class ExerciseServer:
                 await self._refuse(client, f"control refused: expected freeze, resume or scale with one of "
                                            f"{', '.join(map(str, SCALES))}")
         elif kind == "lag" and client.role == "station":
-            if _finite(message.get("lag_s")):
+            if is_a(message.get("lag_s"), float):  # JSON allows NaN and 1e400; the outputs do not
                 client.lag_s = float(message["lag_s"])
             else:
                 await self._refuse(client, f"lag: expected a finite number of seconds, got {message.get('lag_s')!r}")

@@ -25,7 +25,7 @@ from urllib.parse import parse_qs, urlsplit
 
 from marinesim import __version__
 from marinesim.errors import MarinesimError, ParameterError
-from marinesim.session.exercise import MAX_STATION, Exercise, quiet
+from marinesim.session.exercise import EVERYONE, MAX_STATION, Exercise, quiet
 from marinesim.session.replay import Replay
 from marinesim.session.sidecar import sha256
 
@@ -57,8 +57,9 @@ def station_url(url: str) -> tuple[str, str]:
 
 def station_name(name: str) -> str:
     """A station's name as ``--station`` gives it; refused if empty, too long or not printable."""
-    if not (0 < len(name) <= MAX_STATION and name.isprintable()) or name == "all":
-        raise ParameterError(f"--station {name!r}: expected a name of 1 to {MAX_STATION} characters (not 'all')")
+    if not (0 < len(name) <= MAX_STATION and name.isprintable()) or name == EVERYONE:
+        raise ParameterError(f"--station {name!r}: expected a name of 1 to {MAX_STATION} characters (not "
+                             f"{EVERYONE!r})")
     return name
 
 

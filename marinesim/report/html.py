@@ -20,12 +20,12 @@ from __future__ import annotations
 import base64
 import html
 import math
-import re
 from pathlib import Path
 
 from marinesim.atomic import atomic_path
 from marinesim.criteria.monitor import Level
 from marinesim.report.debrief import Conditions, Debrief, LogCheck
+from marinesim.scenario.schema import briefing_paragraphs
 from marinesim.session.exercise import share_words
 from marinesim.report.plots import (CAUTION, EXCEEDED, NM, NONE, OK, STATION_M, clock, compass, criterion_png,
                                     footprint_png, handling_png, number, station_use_png, timeline_png, track_png,
@@ -219,9 +219,8 @@ class _Page:
         briefing = self.data.briefing
         if briefing is None:
             return ""
-        paragraphs = [p.strip() for p in (briefing.text or "").split("\n\n") if p.strip()]
         out = ["<section id='briefing'>\n<h2>Briefing</h2>"]
-        out += [f"<p>{_reflow(p)}</p>" for p in paragraphs]
+        out += [f"<p>{'<br>'.join(map(_e, lines))}</p>" for lines in briefing_paragraphs(briefing.text or "")]
         objectives = briefing.objectives
         if objectives:
             rows = [(_td(str(i), "num"),
@@ -484,17 +483,6 @@ class _Page:
 
 def _e(text: object) -> str:
     return html.escape(str(text))
-
-
-def _reflow(paragraph: str) -> str:
-    """A paragraph of the briefing, escaped: its lines joined (a TOML string is wrapped by hand), but a line that
-    starts a list item ('- ', '* ', '1. ') kept on a line of its own."""
-    lines = [line.strip() for line in paragraph.splitlines() if line.strip()]
-    out = _e(lines[0]) if lines else ""
-    for line in lines[1:]:
-        item = re.match(r"([-*•]|\d+[.)])\s", line)
-        out += ("<br>" if item else " ") + _e(line)
-    return out
 
 
 def _value_limit(value: float | None, limit: float | None, unit: str | None) -> tuple[str, str]:

@@ -4,6 +4,7 @@ vessel (RAO table, meshes) and the run built from it. Errors name the file and t
 from __future__ import annotations
 
 import math
+import re
 import tomllib
 from collections.abc import Callable
 import dataclasses
@@ -151,6 +152,24 @@ class Briefing:
 
     text: str
     objectives: tuple[Objective, ...] = ()
+
+
+def briefing_paragraphs(text: str) -> list[list[str]]:
+    """A briefing's ``text`` (wrapped by hand in its TOML string) as its paragraphs (split at blank lines), each as
+    the lines to show: the wrapped lines joined, a line that starts a list item ('- ', '* ', '1. ') on its own."""
+    out = []
+    for block in re.split(r"\n\s*\n", text.strip()):
+        lines: list[str] = []
+        for line in (line.strip() for line in block.splitlines()):
+            if not line:
+                continue
+            if lines and not re.match(r"([-*\u2022]|\d+[.)])\s", line):
+                lines[-1] += " " + line
+            else:
+                lines.append(line)
+        if lines:
+            out.append(lines)
+    return out
 
 
 @dataclass(frozen=True)

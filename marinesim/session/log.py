@@ -168,7 +168,7 @@ def read_log(path: Path) -> SessionLog:
         raise FileFormatError(path, 1, f"not a {FORMAT} (version {VERSION}): its first line names no such format")
     for key, kind in (("scenario", str), ("scenario_sha256", str), ("seed", int), ("duration_s", float),
                       ("dt_s", float)):
-        if not _is(head.get(key), kind):
+        if not is_a(head.get(key), kind):
             raise FileFormatError(path, 1, f"key {key!r}: expected {kind.__name__}, got {head.get(key)!r}")
     hashes = head.get("vessel_sha256", {})
     if not (isinstance(hashes, dict) and all(isinstance(v, str) for v in hashes.values())):
@@ -179,7 +179,7 @@ def read_log(path: Path) -> SessionLog:
     last = 0.0
     for number, entry in enumerate(entries, start=2):
         t = entry.get("t")
-        if not _is(t, float) or not last <= t <= limit:
+        if not is_a(t, float) or not last <= t <= limit:
             raise FileFormatError(path, number, f"key 't': expected a time (s) from {last:g} (the entry before) to "
                                                 f"{end:g} (the session's end, line 1) plus one step, got {t!r}")
         last = t
@@ -201,7 +201,7 @@ def _session_end(path: Path, head: dict) -> float:
     if not 0.0 < dt <= duration:
         raise FileFormatError(path, 1, f"key 'dt_s': expected a step in (0, duration_s] s, got {dt!r}")
     end = head.get("end_s", MAX_DURATION_S)
-    if not _is(end, float) or not 0.0 <= end <= MAX_DURATION_S:
+    if not is_a(end, float) or not 0.0 <= end <= MAX_DURATION_S:
         raise FileFormatError(path, 1, f"key 'end_s': expected the session's end in [0, {MAX_DURATION_S:g}] s, "
                                        f"got {end!r}")
     return end
@@ -277,7 +277,7 @@ def action_problem(entry: dict) -> str | None:
         return f"{action}: unknown key {unknown[0]!r} (known: {', '.join(sorted(ACTIONS[action])) or 'none'})"
     for key, value in fields.items():
         if key in CHANGE_KEYS | WEATHER_KEYS | {"rudder_deg", "course_deg", "set_north_m", "set_east_m"} \
-                and not _is(value, float):
+                and not is_a(value, float):
             return f"key {key!r}: expected a number, got {value!r}"
     if action == "order":
         if "engine" in fields and fields["engine"] not in TELEGRAPH:
@@ -286,7 +286,7 @@ def action_problem(entry: dict) -> str | None:
             return f"key 'autopilot': expected true or false, got {fields['autopilot']!r}"
         if "fault" in fields and not (isinstance(fields["fault"], str) and 0 < len(fields["fault"]) <= 80):
             return f"key 'fault': expected a fault's name (1 to 80 characters), got {fields['fault']!r}"
-    if action == "trigger" and not _is(fields.get("index"), int):
+    if action == "trigger" and not is_a(fields.get("index"), int):
         return f"key 'index': expected an event's index, got {fields.get('index')!r}"
     if action in ("message", "report") and not (isinstance(fields.get("text"), str)
                                                 and 0 < len(fields["text"]) <= MAX_MESSAGE):
@@ -297,7 +297,7 @@ def action_problem(entry: dict) -> str | None:
     return None
 
 
-def _is(value: Any, kind: type) -> bool:
+def is_a(value: Any, kind: type) -> bool:
     """Whether ``value`` is a ``kind`` (a float may be written as an integer; a bool is neither)."""
     if isinstance(value, bool):
         return False
