@@ -101,11 +101,13 @@ def test_a_station_joins_from_the_command_line_and_follows_to_the_end(tmp_path, 
 
 
 def test_bad_serve_and_stream_options_are_one_line_each(tmp_path, capsys):
-    """A time scale the page does not offer, an address that is not HOST:PORT, a stream to something that is not a
+    """A time scale the page does not offer, a session log over the scenario (refused before the exercise runs, not
+    after it), an address that is not HOST:PORT, a stream to something that is not a
     UDP address, a stream from a scenario that does not say where it is, a station asked to stream: each is one
     line naming the option, status 2, before anything is built or listens."""
     nowhere = write(tmp_path, VESSEL_SCENARIO)  # no [environment] position
     cases = [(["serve", str(TRANSIT), "--time-scale", "3"], "--time-scale 3: expected one of 0.25, 0.5, 1, 2, 4, 8"),
+             (["serve", str(nowhere), "--log", str(nowhere)], "one of this command's inputs"),
              (["serve", str(TRANSIT), "--bind", "localhost"], "--bind localhost: expected HOST:PORT"),
              (["serve", str(TRANSIT), "--nmea", "tcp://127.0.0.1:10110"], "--nmea must be udp://HOST:PORT"),
              (["run", str(nowhere), "--headless", "--nmea", "udp://127.0.0.1:10110"],

@@ -5,7 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from marinesim.cli.common import add_stream_options, bars, next_log, open_streams
+from marinesim.cli.common import add_stream_options, bars, next_log, open_streams, refuse_overwriting
 
 DEFAULT_BIND = "127.0.0.1:8765"
 """The loopback: another machine reaches the server only where ``--bind`` says so."""
@@ -63,6 +63,7 @@ def handle(args: argparse.Namespace) -> int:
     scenario = with_run(load_scenario(args.scenario), args.duration, seed=args.seed)
     streams = open_streams(args, scenario)
     log_path = args.log or next_log(scenario.name)
+    refuse_overwriting(log_path, "--log", sidecar=True)  # before the exercise runs, not at its end
     with reporting(bars(args.quiet)), Simulation(scenario, wake=False) as simulation:
         exercise = Exercise(simulation, log=print)
         pace = Pace()
