@@ -20,7 +20,7 @@ PACKAGE = ROOT / "marinesim"
 LAYERS = (
     {"__init__", "errors", "constants", "angles", "atomic", "cache", "tokens", "recent", "progress",
      "resources", "formats", "pose", "gl", "figures", "views"},
-    {"sea"}, {"hull"}, {"vessel"}, {"manoeuvring"}, {"station"}, {"wake"}, {"solver"}, {"criteria"},
+    {"sea"}, {"hull"}, {"vessel"}, {"manoeuvring"}, {"station"}, {"offshore"}, {"wake"}, {"solver"}, {"criteria"},
     {"scenario"}, {"session"}, {"study"}, {"report"}, {"render"}, {"net"}, {"cli", "__main__"},
 )
 

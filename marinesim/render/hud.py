@@ -1,5 +1,5 @@
 """The viewer's heads-up display: a text block, strip charts of the motions, the exercise's criteria and
-messages, and a help panel.
+messages, a radar picture of the traffic, and a help panel.
 
 Everything is laid out in pixels with the origin at the top-left of the target; the shaders
 (``shaders/hud_text.*``, ``shaders/hud_line.*``) turn pixels into clip space with a ``viewport``
@@ -20,7 +20,9 @@ import numpy as np
 from matplotlib.font_manager import FontProperties, findfont
 from PIL import Image, ImageDraw, ImageFont
 
+from marinesim.errors import require_positive
 from marinesim.gl import GraphicsError, Program
+from marinesim.offshore.traffic import NAUTICAL_MILE, cpa
 
 FIRST_CHAR, LAST_CHAR = 32, 126
 """The atlas holds printable ASCII; anything else is drawn as '?'."""
@@ -62,6 +64,31 @@ SLIDER_TRACK_COLOR = (0.55, 0.58, 0.62, 0.9)
 SLIDER_DONE_COLOR = (0.85, 0.88, 0.92, 1.0)
 SLIDER_HEIGHT = 10
 
+RADAR_SHARE = (0.36, 0.25)
+"""The radar's square panel: at most these shares of the target's height and width (it keeps to the bottom-right
+corner, right of the middle, where the orbit camera puts the vessel)."""
+RADAR_MIN_LINES = 8
+"""The smallest radar panel drawn, in text lines: less and the scope is too small to read."""
+RADAR_VECTOR_S = 360.0
+"""The vectors' time, s: 6 minutes, a radar's usual setting (a tenth of an hour: a vector is speed / 10 nm long)."""
+RING_INTERVALS_NM = (0.025, 0.05, 0.1, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0, 64.0)
+"""The range rings' intervals, nm: the smallest giving at most :data:`RADAR_MOST_RINGS` rings is used, as radars
+do (0.25 nm rings on the 0.75 and 1.5 nm scales, 0.5 on 3 nm, 1 on 6 nm, 2 on 12 nm, ...)."""
+RADAR_MOST_RINGS = 6
+DANGER_CPA_M = 0.5 * NAUTICAL_MILE
+DANGER_TCPA_S = 12 * 60.0
+"""A contact closing to less than :data:`DANGER_CPA_M` within :data:`DANGER_TCPA_S` is a dangerous target (red):
+an officer's usual CPA/TCPA alarm settings in open water."""
+RADAR_PANEL_COLOR = (0.0, 0.05, 0.03, 0.85)
+RING_COLOR = (0.16, 0.5, 0.26, 1.0)
+RING_LABEL_COLOR = (0.4, 0.78, 0.48, 1.0)
+OWN_SHIP_COLOR = (0.6, 1.0, 0.65, 1.0)
+TRACK_COLOR = (0.3, 0.72, 0.82, 1.0)
+CONTACT_COLOR = (1.0, 0.72, 0.18, 1.0)
+DANGER_COLOR = (1.0, 0.22, 0.2, 1.0)
+"""The radar's colours: a dark green-black scope, green rings and own ship (a radar's phosphor), her past track in
+cyan, contacts in amber, a dangerous target in red."""
+
 Color = tuple[float, float, float, float]
 
 
@@ -91,6 +118,73 @@ class Footprint:
     east: np.ndarray
     north: np.ndarray
     radius: float
+
+
+@dataclass(frozen=True)
+class Contact:
+    """Another vessel on the radar: her ``name``, ``position`` relative to own ship (E, m, shape (2,)), her
+    ``velocity`` over ground (E, m/s, (2,)) and her ``heading_deg`` (compass)."""
+
+    name: str
+    position: np.ndarray
+    velocity: np.ndarray
+    heading_deg: float
+
+
+@dataclass(frozen=True)
+class Radar:
+    """A north-up, relative-motion radar picture with true vectors: own ship's ``heading_deg`` (compass) and
+    ``velocity`` over ground (E, m/s, (2,)), her ``track`` as recent positions relative to her now (E, m, (n, 2),
+    oldest first), the outer ring's range ``range_m`` (m) and the ``contacts``."""
+
+    heading_deg: float
+    velocity: np.ndarray
+    track: np.ndarray
+    range_m: float
+    contacts: tuple[Contact, ...] = ()
+
+    def __post_init__(self) -> None:
+        require_positive("range_m", self.range_m)
+
+    def approaches(self) -> tuple[np.ndarray, np.ndarray]:
+        """Each contact's CPA (m) and TCPA (s), both ships holding their velocities (:func:`traffic.cpa`)."""
+        if not self.contacts:
+            return np.empty(0), np.empty(0)
+        return cpa(np.zeros(2), self.velocity, [c.position for c in self.contacts], [c.velocity for c in self.contacts])
+
+    def nearest(self) -> tuple[Contact, float, float] | None:
+        """The closing contact (tcpa > 0) with the smallest CPA, her CPA (m) and TCPA (s); None if none closes."""
+        dcpa, tcpa = self.approaches()
+        closing = np.flatnonzero(tcpa > 0.0)
+        if not closing.size:
+            return None
+        best = closing[np.argmin(dcpa[closing])]
+        return self.contacts[best], float(dcpa[best]), float(tcpa[best])
+
+    def cpa_line(self) -> tuple[str, Color]:
+        """The radar's CPA line for the :meth:`nearest` contact and its colour: red for a dangerous target, amber
+        otherwise, grey when no contact closes."""
+        nearest = self.nearest()
+        if nearest is None:
+            return "CPA --  no target closing", DIM_TEXT_COLOR
+        contact, near, when = nearest
+        text = f"CPA {near / NAUTICAL_MILE:.2f} nm in {when / 60.0:.1f} min  {contact.name}"
+        return text, DANGER_COLOR if dangerous(near, when) else CONTACT_COLOR
+
+
+def dangerous(dcpa: np.ndarray | float, tcpa: np.ndarray | float) -> np.ndarray | bool:
+    """Whether a contact with this CPA (m) and TCPA (s) is a dangerous target (:data:`DANGER_CPA_M`); arrays
+    element-wise."""
+    return (dcpa < DANGER_CPA_M) & (tcpa > 0.0) & (tcpa < DANGER_TCPA_S)
+
+
+def ring_interval_m(range_m: float, most: int = RADAR_MOST_RINGS) -> float:
+    """The range rings' interval (m) on a scope whose outer ring is ``range_m`` (m): the smallest of
+    :data:`RING_INTERVALS_NM` giving at most ``most`` rings (the largest beyond them)."""
+    for interval in RING_INTERVALS_NM:
+        if range_m / (interval * NAUTICAL_MILE) <= most * (1.0 + 1e-9):
+            return interval * NAUTICAL_MILE
+    return RING_INTERVALS_NM[-1] * NAUTICAL_MILE
 
 
 @dataclass(frozen=True)
@@ -238,7 +332,7 @@ class Hud:
     def draw(self, size: tuple[int, int], lines: Sequence[str], charts: Sequence[StripChart] = (),
              help_lines: Sequence[str] | None = None, panel: Sequence[tuple[str, str]] = (),
              messages: Sequence[str] = (), banners: Sequence[Banner] = (), slider: Slider | None = None,
-             footprint: Footprint | None = None) -> None:
+             footprint: Footprint | None = None, radar: Radar | None = None) -> None:
         """Draw onto the currently bound framebuffer of `size` (w, h) pixels, alpha-blended, depth test off:
         `lines` as a text block at the top-left on a translucent dark panel; `charts` stacked at the bottom-left
         (each: a panel about 360x70 px with its title, unit, current value, the min/max of the y axis as labels,
@@ -250,7 +344,9 @@ class Hud:
         bottom, right of the charts, the first lowest (the middle of the picture, where the orbit camera puts
         the vessel, stays free); ``slider`` along the bottom, right of the charts (:meth:`slider_rect`);
         ``footprint`` a square position plot at the right, under the criteria panel (:meth:`_footprint`), on a
-        target at least :data:`FOOTPRINT_MIN_WIDTH` wide (on a smaller one it would cover the vessel).
+        target at least :data:`FOOTPRINT_MIN_WIDTH` wide (on a smaller one it would cover the vessel); ``radar`` a
+        square radar picture at the bottom-right (:meth:`radar_rect`, :meth:`_radar`), above the slider, below
+        what the right side holds above it, the banners then centred between the charts and it.
         Charts that would take more than :data:`CHART_SHARE` of the height are left out (the last first), all of
         them while a banner has no room beside them, and a line longer than the target is wide is cut with ``~``.
 
@@ -267,28 +363,35 @@ class Hud:
         panel = [(clip(text), level) for text, level in panel]
         banners = [replace(banner, text=clip(banner.text)) for banner in banners]
         charts = list(charts)[:self.charts_that_fit(size)]
-        widest = max((self._text_size([b.text], 2 * self.pad)[0] for b in banners), default=0)
-        if widest > width - 3 * self.margin - self.chart_size[0]:
-            charts = []  # a banner needs the bottom band and there is no room beside the charts: it comes first
         base = _Layer()
         if lines:
             self._text_block(base, self.margin, self.margin, lines, self.pad, PANEL_COLOR)
-        for index, chart in enumerate(charts):
-            self._chart(base, chart, *self.chart_plot_rect(size, index, len(charts)))
         left = self._text_size(lines, self.pad) if lines else (0, 0)
-        right, right_y = (0, 0), self.margin
+        right, right_y, right_bottom = (0, 0), self.margin, 0
         if panel:
             rows = [(text, LEVEL_COLORS[level]) for text, level in panel]
             right = self._text_size([text for text, _ in rows], self.pad)
             right_x = width - self.margin - right[0]
             if right_x < 2 * self.margin + left[0]:  # no room beside the text block: under it, on the left (the
                 right_x, right_y = self.margin, 2 * self.margin + left[1]  # middle, the vessel's, stays free)
+            else:
+                right_bottom = right_y + right[1]
             self._text_block(base, right_x, right_y, rows, self.pad, PANEL_COLOR)
         if footprint is not None and width >= FOOTPRINT_MIN_WIDTH:
             side = 2 * self.chart_size[1]
             below = right_y + right[1] + self.margin if panel and right_y == self.margin else self.margin
             self._footprint(base, footprint, width - self.margin - side, below, side)
             right = (max(right[0], side), below + side - self.margin)
+            right_bottom = below + side
+        scope = self.radar_rect(size, right_bottom, slider is not None) if radar is not None else None
+        band_right = width - self.margin if scope is None else scope[0] - self.margin  # the banners' band ends here
+        widest = max((self._text_size([b.text], 2 * self.pad)[0] for b in banners), default=0)
+        if widest > band_right - 2 * self.margin - self.chart_size[0]:
+            charts = []  # a banner needs the bottom band and there is no room beside the charts: it comes first
+        for index, chart in enumerate(charts):
+            self._chart(base, chart, *self.chart_plot_rect(size, index, len(charts)))
+        if scope is not None:
+            self._radar(base, radar, *scope)
         if messages:
             messages = [clip(m) for m in messages]
             box_w, box_h = self._text_size(messages, self.pad)
@@ -299,13 +402,13 @@ class Hud:
                              PANEL_COLOR)
         above = height - self.margin  # the bottom band right of the charts, filled upwards
         if slider is not None:
-            above -= SLIDER_HEIGHT + 2 * self.pad + self.line_height + self.margin
+            above -= self._slider_band()
         beside = self.margin + (self.chart_size[0] + self.margin if charts else 0)
         for banner in banners:
             box_w, box_h = self._text_size([banner.text], 2 * self.pad)
-            x = beside + max((width - self.margin - beside - box_w) // 2, 0)
-            if x + box_w > width - self.margin:  # no room beside the charts: centred, over them
-                x = max((width - box_w) // 2, self.margin)
+            x = beside + max((band_right - beside - box_w) // 2, 0)
+            if x + box_w > band_right:  # no room beside the charts: centred, over them
+                x = max((band_right + self.margin - box_w) // 2, self.margin)
             above -= box_h
             self._text_block(base, x, above, [(banner.text, banner.color)], 2 * self.pad, banner.background)
             above -= self.margin // 2
@@ -364,6 +467,30 @@ class Hud:
         plot_y = panel_y + self.line_height + 4
         half = (panel_y + panel_h - 4 - plot_y) // 2
         return panel_x, panel_y, plot_x, plot_y, half
+
+    def radar_rect(self, size: tuple[int, int], top: int = 0, slider: bool = False) -> tuple[int, int, int] | None:
+        """Where the radar's square panel goes, px from the top-left: ``(x, y, side)`` at the bottom-right corner,
+        above the slider's band if ``slider``, and below ``top`` (the bottom of what the right side holds); its side
+        :data:`RADAR_SHARE` of the target, less where that leaves no room; None when under :data:`RADAR_MIN_LINES`
+        lines would remain."""
+        width, height = size
+        bottom = height - self.margin - (self._slider_band() if slider else 0)
+        side = min(round(RADAR_SHARE[0] * height), round(RADAR_SHARE[1] * width),
+                   bottom - max(top + self.margin, self.margin))
+        if side < RADAR_MIN_LINES * self.line_height:
+            return None
+        return width - self.margin - side, bottom - side, side
+
+    def radar_scope(self, x: int, y: int, side: int) -> tuple[float, float, float]:
+        """The scope in the radar's panel at (``x``, ``y``), ``side`` px: its centre and its outer ring's radius, px
+        (between the title line and the CPA line)."""
+        top, bottom = y + self.line_height + 4, y + side - self.pad - self.line_height - 4
+        radius = min(side / 2.0 - self.pad, (bottom - top) / 2.0)
+        return x + side / 2.0, (top + bottom) / 2.0, radius
+
+    def _slider_band(self) -> int:
+        """The height the slider takes at the bottom, with its label and a margin above, px."""
+        return SLIDER_HEIGHT + 2 * self.pad + self.line_height + self.margin
 
     def slider_rect(self, size: tuple[int, int], charts: bool) -> tuple[int, int, int, int]:
         """Where the time slider's track is, px from the top-left: ``(x, y, w, h)``, right of the charts."""
@@ -459,6 +586,110 @@ class Hud:
             dot = max(self.pad // 2, 2)
             layer.rect(cx + east[-1] * scale - dot, cy - north[-1] * scale - dot, 2 * dot, 2 * dot,
                        LEVEL_COLORS["exceeded" if outside else "ok"])
+
+    def _radar(self, layer: _Layer, radar: Radar, x: int, y: int, side: int) -> None:
+        """The radar picture in a ``side`` px square panel at (``x``, ``y``), north up, own ship at the centre: range
+        rings labelled in nm and bearing ticks every 10 deg, her heading line, past track and velocity vector,
+        each contact within range as a triangle on her heading (the AIS symbol) with her vector and name, and
+        the line giving the nearest CPA among closing contacts (all of them, in range or not). Vectors are true
+        (over ground), :data:`RADAR_VECTOR_S` long; a dangerous target (:func:`dangerous`) is red."""
+        layer.rect(x, y, side, side, RADAR_PANEL_COLOR)
+        cx, cy, radius = self.radar_scope(x, y, side)
+        scale = radius / radar.range_m  # px per m
+
+        def scope_line(east: np.ndarray, north: np.ndarray, color: Color) -> None:
+            """A polyline through E points relative to own ship (m), broken outside the outer ring."""
+            outside = np.hypot(east, north) > radar.range_m * (1.0 + 1e-9)
+            layer.polyline(np.where(outside, np.nan, cx + east * scale), cy - north * scale, color)
+
+        def vector(start: np.ndarray, velocity: np.ndarray, color: Color) -> None:
+            along = np.linspace(0.0, RADAR_VECTOR_S, 65)[:, None]
+            points = np.asarray(start, float) + along * np.asarray(velocity, float)
+            scope_line(points[:, 0], points[:, 1], color)
+
+        circle = np.linspace(0.0, 2.0 * math.pi, 181)
+        interval = ring_interval_m(radar.range_m, max(min(int(radius // self.line_height), RADAR_MOST_RINGS), 1))
+        count = int(radar.range_m / interval * (1.0 + 1e-9))
+        rings = [k * interval for k in range(1, count + 1)]
+        if not rings or rings[-1] < radar.range_m * (1.0 - 1e-9):
+            rings.append(radar.range_m)  # the outer ring, off the intervals' steps
+        # the rings' labels go just outside each ring on the diagonal farthest from the heading line and the track
+        diagonal = min((45.0, 135.0, 225.0, 315.0), key=lambda b: abs((b - radar.heading_deg) % 180.0 - 90.0))
+        east, north = math.sin(math.radians(diagonal)), math.cos(math.radians(diagonal))
+        last = None  # the last label's box (x0, y0, x1, y1), px
+        for ring in rings:
+            r = ring * scale
+            layer.polyline(cx + r * np.sin(circle), cy - r * np.cos(circle), RING_COLOR)
+            label = f"{ring / NAUTICAL_MILE:.3g}"
+            w, h = len(label) * self.advance, self.line_height
+            lx = cx + r * east + (2 if east > 0 else -2 - w)
+            ly = cy - r * north + (-h + 2 if north > 0 else 0)
+            inside = x + self.pad <= lx and lx + w <= x + side - self.pad and y + h <= ly and ly + h <= y + side - h
+            apart = last is None or lx >= last[2] or lx + w <= last[0] or ly >= last[3] or ly + h <= last[1]
+            if inside and apart:
+                self._text(layer, lx, ly, label, RING_LABEL_COLOR)
+                last = (lx - self.advance / 2, ly, lx + w + self.advance / 2, ly + h)
+        ticks = np.radians(np.arange(0.0, 360.0, 10.0))
+        inner = np.where(np.arange(ticks.size) % 3 == 0, 0.92, 0.96) * radius
+        for angle, r in zip(ticks, inner):
+            layer.polyline(cx + np.array([r, radius]) * math.sin(angle), cy - np.array([r, radius]) * math.cos(angle),
+                           RING_COLOR)
+
+        heading = math.radians(radar.heading_deg)
+        ahead, starboard = np.array([math.sin(heading), math.cos(heading)]), np.array([math.cos(heading),
+                                                                                      -math.sin(heading)])
+        length = max(self.line_height, 10)  # own ship's symbol, px
+        layer.polyline(cx + np.array([0.5 * length, radius]) * ahead[0],
+                       cy - np.array([0.5 * length, radius]) * ahead[1], RING_COLOR)  # the heading line
+        track = np.asarray(radar.track, float).reshape(-1, 2)
+        if len(track) > 1:
+            scope_line(track[:, 0], track[:, 1], TRACK_COLOR)
+        vector(np.zeros(2), radar.velocity, OWN_SHIP_COLOR)
+        hull = np.array([(0.5, 0.0), (0.15, 0.2), (-0.5, 0.2), (-0.5, -0.2), (0.15, -0.2)]) * length
+        self._polygon(layer, cx, cy, hull[:, :1] * ahead + hull[:, 1:] * starboard, OWN_SHIP_COLOR)
+
+        dcpa, tcpa = radar.approaches()
+        danger = dangerous(dcpa, tcpa)
+        nearest = radar.nearest()
+        size = 0.8 * self.line_height  # a contact's triangle, apex to base, px
+        for contact, red in zip(radar.contacts, danger):
+            position = np.asarray(contact.position, float)
+            if math.hypot(*position) > radar.range_m:
+                continue  # beyond the outer ring: only the CPA line tells of her
+            color = DANGER_COLOR if red else CONTACT_COLOR
+            vector(position, contact.velocity, color)
+            course = math.radians(contact.heading_deg)
+            bow, beam = np.array([math.sin(course), math.cos(course)]), np.array([math.cos(course), -math.sin(course)])
+            corners = np.array([(2.0 / 3.0, 0.0), (-1.0 / 3.0, 0.35), (-1.0 / 3.0, -0.35)]) * size
+            px, py = cx + position[0] * scale, cy - position[1] * scale
+            self._polygon(layer, px, py, corners[:, :1] * bow + corners[:, 1:] * beam, color)
+            box = 0.75 * self.line_height
+            if nearest is not None and contact is nearest[0]:  # the target the CPA line names, in a square
+                layer.polyline(px + box * np.array([-1, 1, 1, -1, -1]), py + box * np.array([-1, -1, 1, 1, -1]), color)
+            if contact.name:
+                name = contact.name[:max(int((side / 2 - box) // self.advance), 1)]
+                nx = px + box + 2
+                if nx + len(name) * self.advance > x + side - self.pad:
+                    nx = px - box - 2 - len(name) * self.advance
+                self._text(layer, nx, py - self.line_height, name, color)
+
+        fits = max(int((side - 2 * self.pad) // self.advance), 1)
+        line, color = radar.cpa_line()
+        line = line if len(line) <= fits else line[:fits - 1] + "~"
+        self._text(layer, x + self.pad, y + side - self.pad - self.line_height, line, color)
+        scale_text = f"N UP  {radar.range_m / NAUTICAL_MILE:.3g} nm"
+        vectors = f"vec {RADAR_VECTOR_S / 60:g} min"
+        titles = (f"{scale_text}  rings {interval / NAUTICAL_MILE:.3g}  {vectors}", f"{scale_text}  {vectors}",
+                  scale_text)
+        title = next((text for text in titles if len(text) <= fits), scale_text[:fits])
+        self._text(layer, x + self.pad, y + 2, title, OWN_SHIP_COLOR)
+
+    @staticmethod
+    def _polygon(layer: _Layer, x: float, y: float, corners: np.ndarray, color: Color) -> None:
+        """A filled convex polygon, ``corners`` (n, 2) in E (east, north; px) about (``x``, ``y``) on the target."""
+        points = np.column_stack([x + corners[:, 0], y - corners[:, 1]])
+        fan = np.stack([np.repeat(points[:1], len(points) - 2, axis=0), points[1:-1], points[2:]], axis=1)
+        layer.triangles.append(np.hstack([fan.reshape(-1, 2), np.tile(color, (fan.shape[0] * 3, 1))]))
 
     def _render(self, layer: _Layer) -> None:
         """Panels, then lines, then text of one layer."""

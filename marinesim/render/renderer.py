@@ -11,10 +11,11 @@ draws a camera's view into the bound framebuffer:
 2. the ocean: rings of vertices around the camera, displaced by the cascades, the Kelvin wake
    (vessel frame) and the solver's field (Earth-fixed grid); shaded with Fresnel, sky reflection,
    subsurface tint, glitter, foam and haze; no water inside the hull;
-3. the vessel mesh (the scenario's visual mesh, else one made from the hull) in its 6-DOF pose, draft marks on;
+3. the vessel mesh (the scenario's visual mesh, else one made from the hull) in its 6-DOF pose, draft marks on,
+   and the other vessels and structures in theirs;
 4. spray thrown up where the bow meets the rising sea and blown off the crests in a gale
    (:mod:`~marinesim.render.spray`);
-5. its navigation lights, by night and in restricted visibility (COLREG sectors and intensities);
+5. the navigation lights, by night and in restricted visibility (COLREG sectors and intensities);
 6. rain, as streaks of falling drops over it all.
 
 Everything is in the Earth frame (m); the shaders state their inputs' units.
@@ -46,7 +47,7 @@ from marinesim.render.layers.sky import SkyLayer
 from marinesim.render.layers.spray import SprayLayer
 from marinesim.render.layers.synthesis import CascadeSynthesis
 from marinesim.render.layers.solver_field import SolverFieldLayer
-from marinesim.render.layers.vessel import VesselLayer, drawn_mesh
+from marinesim.render.layers.vessel import VesselLayer, drawn_mesh, other_mesh
 from marinesim.render.layers.wake import WakeLayer
 from marinesim.session.timeline import Simulation
 
@@ -107,6 +108,12 @@ class Renderer:
         self.nav_lights = NavLightsLayer(ctx, place_lights(self.mesh.positions, vessel.nav_lights,
                                                            vessel.points.get("bridge"), vessel.speed_m_s > 0.0)
                                          if self.mesh is not None and options.vessel else [])
+        self.others = [VesselLayer(ctx, other_mesh(body.other), shown=options.vessel) for body in sim.bodies]
+        """The other vessels and structures, as :attr:`Simulation.bodies`."""
+        self.others_lights = [NavLightsLayer(ctx, place_lights(layer.mesh.positions, _lights_of(body.other),
+                                                               None, body.other.route.speed > 0.0)
+                                             if options.vessel else [])
+                              for layer, body in zip(self.others, sim.bodies)]
         self.rain = RainLayer(ctx)
         bow = (Bow.of(vessel.hull, self.mesh.positions) if vessel is not None and vessel.hull is not None
                and self.mesh is not None and options.vessel else None)
@@ -150,14 +157,25 @@ class Renderer:
         pose = self.sim.pose()
         self.ocean.draw(view, pose, (self.cascades, self.foam, self.wake, self.solver_field, self.hull_mask))
         self.vessel.draw(view, pose)
+        others = self.sim.other_poses()
+        for layer, other in zip(self.others, others):
+            layer.draw(view, other)
         if self.spray is not None:
             self.spray_layer.draw(view, self.spray.puffs, size[1])
         self.nav_lights.draw(view, pose, size[1])
+        for layer, other in zip(self.others_lights, others):
+            layer.draw(view, other, size[1])
         self.rain.draw(view, self.sim.time)
 
     def release(self) -> None:
         if self.synthesis is not None:
             self.synthesis.release()
         for layer in (self.sky, self.cascades, self.foam, self.wake, self.solver_field, self.hull_mask, self.ocean,
-                      self.vessel, self.nav_lights, self.rain, self.spray_layer):
+                      self.vessel, self.nav_lights, self.rain, self.spray_layer, *self.others, *self.others_lights):
             layer.release()
+
+
+def _lights_of(other) -> str:
+    """The lights another body shows: a ship's and an FPSO's as the scenario says, a buoy's and a platform's one
+    all-round light (as an anchor light)."""
+    return other.nav_lights if other.kind in ("ship", "fpso") else "anchored"

@@ -126,6 +126,25 @@ def visual_mesh(mesh: VisualMesh) -> VesselMesh:
     return _flat(corners, normals, colours)
 
 
+def part_mesh(part: kit.Part) -> VesselMesh:
+    """The drawable mesh of a ship-kit part (body frame, m), in its faces' colours."""
+    corners = part.v[part.f]
+    colours = np.repeat((part.c / 255.0)[:, None, :], 3, axis=1)
+    return _flat(corners, _face_normals(corners), colours)
+
+
+def buoy_mesh() -> VesselMesh:
+    """A safe-water mark (IALA): a red and white float 2.4 m across, a cage tower to 4.5 m, a red ball on top;
+    origin at the waterline."""
+    red, white = (200, 30, 28), kit.WHITE
+    float_ = kit.join([kit.cylinder((0.0, 0.0, -1.0), (0.0, 0.0, 0.4), 1.2, red, sections=16),
+                       kit.cylinder((0.0, 0.0, 0.4), (0.0, 0.0, 1.0), 1.2, white, sections=16)])
+    legs = [kit.beam((0.9 * np.cos(a), 0.9 * np.sin(a), 1.0), (0.2 * np.cos(a), 0.2 * np.sin(a), 4.0), 0.12,
+                     red if i % 2 else white) for i, a in enumerate(np.linspace(0.0, 2 * np.pi, 4, endpoint=False))]
+    top = kit.ellipsoid((0.0, 0.0, 4.6), (0.4, 0.4, 0.4), red)
+    return part_mesh(kit.join([float_, *legs, top]))
+
+
 def _face_normals(corners: np.ndarray) -> np.ndarray:
     """Unit normals (t, 3) of triangles (t, 3, 3) wound counter-clockwise seen from outside."""
     normals = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])

@@ -619,6 +619,62 @@ class StationOptions(Section):
         return self
 
 
+MAX_VESSELS = 16
+"""Other vessels and structures in one scenario."""
+MAX_RANGE_M = 100_000.0
+"""How far from own-ship's start another body may be placed (m)."""
+BODY_KINDS = ("ship", "fpso", "platform", "buoy")
+Position = Annotated[list[float], Quantity("m", ge=-MAX_RANGE_M, le=MAX_RANGE_M, what="metres east and north"),
+                     Field(min_length=2, max_length=2)]
+
+
+class OtherVesselOptions(Section):
+    """``[[vessels]]``: another body in the same sea. A ``ship`` sails her route (straight on at ``speed_kn``, or
+    through ``waypoints_m`` with turns of ``turn_radius_m``) and responds through her own RAO table; an ``fpso``
+    lies on her turret at ``position_m``, her head to the waves; a ``platform`` stands on the sea bed (drawn from
+    its ``visual_mesh``); a ``buoy`` follows the water's surface. Positions are in metres east and north of
+    own-ship's start. Bodies do not shelter one another from the waves."""
+
+    name: Annotated[str, AfterValidator(_identifier), Field(max_length=40)] = Field(
+        description="what the record's columns (NAME_east_m, ...), the chart and the radar call it")
+    kind: Literal[BODY_KINDS] = Field(description="ship, fpso, platform or buoy")
+    position_m: Position = Field(description="where she starts (a ship) or lies, [east, north] from own-ship's start")
+    rao: str | None = Field(None, description="RAO file of a ship or an FPSO (as vessel.rao)")
+    heading_deg: Annotated[float | None, Quantity("deg", ge=0.0, le=360.0, what="a compass heading")] = Field(
+        None, description="compass heading of the bow (absent: a ship's first leg; an FPSO's head to the first "
+                          "wave system; a platform's 0)")
+    speed_kn: Annotated[float, Quantity("kn", ge=0.0, le=MAX_SPEED_KN)] = Field(0.0, description="a ship's speed")
+    waypoints_m: Annotated[list[Position], Field(max_length=64)] = Field(
+        default_factory=list, description="a ship's route after position_m, [[east, north], ...] (m)")
+    turn_radius_m: Annotated[float, Quantity("m", gt=10.0, le=10_000.0)] = Field(
+        500.0, description="the radius of a ship's turns at her waypoints")
+    hull: str | None = Field(None, description="a hull mesh in metres and body axes: a ship drawn from it")
+    visual_mesh: str | None = Field(None, description="a mesh in metres and body axes drawn for the body")
+    topsides_rgb: Annotated[list[int] | None, Quantity("", ge=0, le=255, what="colour levels"),
+                            Field(min_length=3, max_length=3)] = Field(
+        None, description="hull colour of a ship drawn from her hull, [r, g, b] 0..255")
+    nav_lights: Literal[NAV_LIGHTS] = Field("underway", description="the navigation lights she shows (as vessel's)")
+
+    @model_validator(mode="after")
+    def _what_each_kind_takes(self) -> OtherVesselOptions:
+        moves = self.kind in ("ship", "fpso")
+        if moves and self.rao is None:
+            raise _refuse("rao", f"a {self.kind} responds to the waves through her RAO file: give rao")
+        if not moves and self.rao is not None:
+            raise _refuse("rao", f"a {self.kind} has no RAO table: leave rao out")
+        if self.kind != "ship":
+            for key in ("speed_kn", "waypoints_m", "turn_radius_m"):
+                if key in self.model_fields_set:
+                    raise _refuse(key, f"a {self.kind} does not sail: {key} is a ship's")
+        if self.waypoints_m and self.heading_deg is not None:
+            raise _refuse("heading_deg", "a ship on waypoints heads along her first leg: leave heading_deg out")
+        if self.kind == "platform" and self.visual_mesh is None:
+            raise _refuse("visual_mesh", "a platform is drawn from its mesh: give visual_mesh")
+        if moves and self.hull is None and self.visual_mesh is None:
+            raise _refuse("hull", f"a {self.kind} is drawn from her hull or her visual_mesh: give one")
+        return self
+
+
 CAMERA_BODIES = ("ownship",)
 """What a camera can be mounted on."""
 MAX_CAMERAS = 16
@@ -675,6 +731,8 @@ class ScenarioFile(Section):
     station: StationOptions | None = Field(None, description="station keeping: DP or moorings under the weather")
     cameras: Annotated[list[CameraOptions], Field(max_length=MAX_CAMERAS)] = Field(
         default_factory=list, description="named viewpoints on board (viewer key 4, --camera NAME)")
+    vessels: Annotated[list[OtherVesselOptions], Field(max_length=MAX_VESSELS)] = Field(
+        default_factory=list, description=f"other ships, an FPSO, platforms and buoys (at most {MAX_VESSELS})")
 
     @model_validator(mode="after")
     def _station_has_a_vessel_at_rest(self) -> ScenarioFile:
@@ -686,6 +744,14 @@ class ScenarioFile(Section):
             if self.vessel.manoeuvring not in (None, "station"):
                 raise _refuse("vessel.manoeuvring", "a vessel keeping station ([station]) is steered by her DP or "
                                                     "held by her lines: leave manoeuvring out")
+        bodies = [body.name for body in self.vessels]
+        for i, body in enumerate(self.vessels):
+            if self.vessel is None:
+                raise _refuse(f"vessels[{i}]", "other vessels sail around own-ship: the scenario needs a [vessel]")
+            if bodies.index(body.name) != i:
+                raise _refuse(f"vessels[{i}].name", f"{body.name!r} names an earlier vessel too")
+            if body.name in self.vessel.points or body.name in CAMERA_BODIES:
+                raise _refuse(f"vessels[{i}].name", f"{body.name!r} is taken (ownship, or one of [vessel.points])")
         names = [camera.name for camera in self.cameras]
         for i, camera in enumerate(self.cameras):
             if self.vessel is None:

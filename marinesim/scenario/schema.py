@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 
 from marinesim import formats
-from marinesim.angles import math_to_compass
+from marinesim.angles import compass_to_math, math_to_compass, wave_compass_from_beta
 from marinesim.constants import KNOT
 from marinesim.criteria.interruptions import DEFAULT_TIPPING_COEFFICIENT
 from marinesim.criteria.monitor import Condition, Criterion, parse_condition
@@ -24,13 +24,14 @@ from marinesim.errors import FileFormatError, MarinesimError, ScenarioError
 from marinesim.hull import Hull, VisualMesh, hydrostatics, load_hull, load_visual_mesh
 from marinesim.manoeuvring.ship import Ship
 from marinesim.manoeuvring.station import StationKeeping
+from marinesim.offshore.route import Route
 from marinesim.resources import resource_dir
 from marinesim.scenario import examples
 from marinesim.scenario.ship_file import load_ship, ship_from_hull
 from marinesim.scenario.model import (FOOTPRINT_M, HULL_OPTIONS, VISUAL_MESH_OPTIONS, WAVE_PARAMETERS, WEATHER,
                                       CameraOptions, CriterionOptions, EnvironmentOptions, EventOptions, OceanOptions,
-                                      RunOptions, ScenarioFile, SeaOptions, StationOptions, VesselOptions, validate,
-                                      wind_of)
+                                      OtherVesselOptions, RunOptions, ScenarioFile, SeaOptions, StationOptions,
+                                      VesselOptions, validate, wind_of)
 from marinesim.scenario.moorings_file import load_moorings
 from marinesim.scenario.station_file import StationFile, load_station
 from marinesim.station.dp import Dp
@@ -71,6 +72,27 @@ class Vessel:
     @property
     def speed_kn(self) -> float:
         return self.speed_m_s / KNOT
+
+
+@dataclass(frozen=True)
+class OtherVessel:
+    """Another body of the scenario (``[[vessels]]``): its kind, its route (a ship's; the others lie at rest on
+    theirs, at their position and heading), its RAO table (a ship's, an FPSO's), what is drawn of it."""
+
+    name: str
+    kind: str                               # one of model.BODY_KINDS
+    route: Route                            # E frame, from own-ship's start
+    rao_path: Path | None = None
+    rao: RaoTable | None = None
+    hull: Hull | None = None                # drawn from it (a ship), body frame
+    visual: VisualMesh | None = None        # drawn instead, body frame
+    topsides_rgb: tuple[int, int, int] | None = None
+    nav_lights: str = "underway"
+
+    @property
+    def files(self) -> dict[str, Path]:
+        """The files read for it, by role: a session log keeps their sha256."""
+        return {} if self.rao_path is None else {f"{self.name} rao": self.rao_path}
 
 
 @dataclass(frozen=True)
@@ -225,6 +247,8 @@ class Scenario:
     """(criterion name, "exceeded" or "within"): what the exercise is built to show (``[[criteria]] scripted``)."""
     cameras: tuple[Camera, ...] = ()
     """The named cameras on board (``[[cameras]]``)."""
+    others: tuple[OtherVessel, ...] = ()
+    """The other vessels and structures (``[[vessels]]``)."""
 
     @property
     def name(self) -> str:
@@ -314,8 +338,32 @@ def build_scenario(path: Path, file: ScenarioFile) -> Scenario:
     notes = () if vessel is None else vessel.rao.warnings + _speed_notes(vessel, events)
     scripted = tuple((c.label, options.scripted) for c, options in zip(criteria, file.criteria) if options.scripted)
     cameras = tuple(_camera(c, vessel.points) for c in file.cameras)
+    others = tuple(_other(path, f"vessels[{i}]", o, sea) for i, o in enumerate(file.vessels))
     return Scenario(path.resolve(), sea, file.ocean, file.run, vessel, events, criteria, briefing, file.environment,
-                    notes, station, scripted, cameras)
+                    notes, station, scripted, cameras, others)
+
+
+def _other(path: Path, where: str, options: OtherVesselOptions, sea: SeaState) -> OtherVessel:
+    """Another body: its RAO table read, its meshes loaded, its route laid (a ship's heading her first leg's; an
+    FPSO's head to the first wave system)."""
+    rao_path = rao = None
+    if options.rao is not None:
+        rao_path = _checked(f"{where}.rao", lambda: _file(path, options.rao))
+        rao = _checked(f"{where}.rao", lambda: read_rao(rao_path))
+        _check_speed(f"{where}.speed_kn", rao, options.speed_kn)
+    heading = options.heading_deg
+    if heading is None:
+        heading = wave_compass_from_beta(sea.systems[0].beta) if options.kind == "fpso" else 0.0
+    route = _checked(f"{where}.waypoints_m", lambda: Route(
+        tuple(options.position_m), options.speed_kn * KNOT, compass_to_math(heading),
+        np.array(options.waypoints_m, float).reshape(-1, 2), options.turn_radius_m))
+    hull = visual = None
+    if options.hull is not None:
+        hull = _checked(f"{where}.hull", lambda: load_hull(_file(path, options.hull)))
+    if options.visual_mesh is not None:
+        visual = _checked(f"{where}.visual_mesh", lambda: load_visual_mesh(_file(path, options.visual_mesh)))
+    topsides = tuple(options.topsides_rgb) if options.topsides_rgb is not None else None
+    return OtherVessel(options.name, options.kind, route, rao_path, rao, hull, visual, topsides, options.nav_lights)
 
 
 def _station(path: Path, options: StationOptions, vessel: Vessel, depth: float) -> StationSetup:

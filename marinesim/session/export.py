@@ -99,7 +99,7 @@ def export_motions(assembly: Assembly, out: Path, file_format: str | None = None
         raise ParameterError(f"{duration:g} s at dt {run.dt_s:g} s is {steps:.3g} rows, more than {MAX_ROWS:.0e} "
                              "per export")
     assembly.response  # refuses a scenario without a vessel
-    columns = record_columns(scenario.vessel.points, scenario.vessel.ship)
+    columns = record_columns(scenario)
     coverage: dict = {}
     sidecars: list[Path] = []
 
@@ -127,7 +127,7 @@ def motions_sidecar(exercise: Exercise, rows: int, duration_s: float) -> dict:
     assembly = exercise.sim.assembly
     scenario = assembly.scenario
     vessel, rao, response = scenario.vessel, scenario.vessel.rao, assembly.response
-    columns = record_columns(vessel.points, vessel.ship)
+    columns = record_columns(scenario)
     return {
         "rows": rows,
         "columns": columns,

@@ -107,12 +107,13 @@ def header(scenario: Scenario, duration_s: float, end_s: float) -> dict[str, Any
 
 def vessel_files(scenario: Scenario) -> dict[str, Path]:
     """The files the vessel of ``scenario`` is read from (its RAO table, its hull if any, a vessel keeping station's
-    files), by role."""
+    files) and the other vessels' RAO tables, by role."""
     vessel = scenario.vessel
     if vessel is None:
         return {}
     station = scenario.station.files if scenario.station is not None else {}
-    return {"rao": vessel.rao_path, **({"hull": vessel.hull_path} if vessel.hull_path else {}), **station}
+    others = {role: path for other in scenario.others for role, path in other.files.items()}
+    return {"rao": vessel.rao_path, **({"hull": vessel.hull_path} if vessel.hull_path else {}), **station, **others}
 
 
 def write_log(path: Path, exercise: Exercise) -> Path:

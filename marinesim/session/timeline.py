@@ -24,6 +24,7 @@ from __future__ import annotations
 import contextvars
 import dataclasses
 import math
+from collections.abc import Callable
 from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
@@ -41,6 +42,7 @@ from marinesim.scenario import Scenario
 from marinesim.scenario.model import CHANGE_RAMP_S, MAX_DURATION_S, MAX_SPEED_KN, WEATHER, EnvironmentOptions
 from marinesim.sea.ocean import Components, smoothstep
 from marinesim.sea.seastate import SeaState, scaled_sea
+from marinesim.session import others
 from marinesim.session.assembly import Assembly
 from marinesim.session.station import StationWorld, station_columns, station_record
 from marinesim.station.vessel import Station
@@ -181,6 +183,9 @@ class Simulation:
         """The speeds (m/s) wakes are computed at: the scenario's and whole knots."""
         self._pool = ThreadPoolExecutor(max_workers=1) if self.wake_on else None
         self.solver: LocalSolver | None = None
+        self.bodies = [others.Body(other, self.components) for other in scenario.others]
+        """The other vessels and structures (:mod:`marinesim.session.others`)."""
+        self._last_others: tuple[float, int, list[Pose]] = (math.nan, 0, [])
         if self.wake_on:
             self._request_wake(self.vessel.speed_m_s, wait=True)
 
@@ -356,10 +361,24 @@ class Simulation:
         self._last_pose = (t, self.version, pose)
         return pose
 
+    def other_poses(self, t: float | None = None) -> list[Pose]:
+        """Each other body's track point, heading and 6-DOF motion at ``t`` (default: now), as :attr:`bodies`."""
+        t = self.time if t is None else t
+        if self._last_others[0] == t and self._last_others[1] == self.version:
+            return self._last_others[2]
+        times = np.array([t])
+        poses = []
+        for body in self.bodies:
+            path = body.path(times)
+            motion = tuple(float(v) for v in self._blended(body.along, others.WIDTH, times)[0, :6])
+            poses.append(Pose(float(path.x[0]), float(path.y[0]), float(path.heading[0]), motion))
+        self._last_others = (t, self.version, poses)
+        return poses
+
     @property
     def columns(self) -> list[str]:
         """The record's columns (:meth:`frame`)."""
-        return record_columns(self.vessel.points, self.vessel.ship)
+        return record_columns(self.scenario)
 
     def frame(self, times: np.ndarray) -> dict[str, np.ndarray]:
         """The record (as ``marinesim export``) at ``times`` (s, increasing): the motion columns, blended across
@@ -367,35 +386,49 @@ class Simulation:
         times = np.asarray(times, float).ravel()
         if self.vessel is None:
             raise ParameterError("the scenario has no vessel: no motions to record")
-        return self._record(times, self._linear(times))
+        return self._record(times, self._linear(times), None)
 
     def frame_steps(self, start: float, dt: float, steps: int) -> dict[str, np.ndarray]:
         """:meth:`frame` at ``start + dt * arange(steps)``; straight runs through their response's block product
         (:meth:`Response.linear_steps`, tables reused across blocks)."""
         times = start + dt * np.arange(steps)
-        return self._record(times, self._linear(times, dt))
+        return self._record(times, self._linear(times, dt), dt)
 
-    def _record(self, times: np.ndarray, linear: np.ndarray) -> dict[str, np.ndarray]:
+    def _record(self, times: np.ndarray, linear: np.ndarray, dt: float | None) -> dict[str, np.ndarray]:
         out = self.assembly.response.frame(times, linear) | self.voyage.record(times, linear[:, 5])
         if self.station is not None:
             out |= station_record(self.voyage.ship, self.voyage, times)
+        if self.bodies:
+            out |= others.record(self.bodies, [self._blended(body.along, others.WIDTH, times, dt)
+                                               for body in self.bodies], self.voyage.path(times))
         return out
 
     def _linear(self, times: np.ndarray, dt: float | None = None) -> np.ndarray:
-        """The responses' linear outputs (:meth:`Response.linear`) at ``times`` (increasing; a grid of step ``dt``
+        """Own-ship's linear outputs (:meth:`Response.linear`) at ``times`` (increasing; a grid of step ``dt``
         where given), the sea legs blended, the ship's own heel added to the roll."""
-        out = np.empty((times.size, 19 + len(self.vessel.points)))
+        out = self._blended(self._along, 19 + len(self.vessel.points), times, dt)
+        path = self.voyage.path(times)
+        out[:, 3] += path.roll
+        out[:, 9] += path.roll_rate
+        out[:, 15] += path.roll_acc
+        return out
+
+    def _blended(self, along: Callable[[int, np.ndarray, float | None], np.ndarray], width: int, times: np.ndarray,
+                 dt: float | None = None) -> np.ndarray:
+        """A body's linear outputs (T, ``width``) at ``times``, ``along(set, times, dt)`` its response to one
+        component set, blended across the sea legs (the ramp's own share of the rates included)."""
+        out = np.empty((times.size, width))
         starts = np.array([leg.start for leg in self.legs])
         index = np.maximum(np.searchsorted(starts, times, side="right") - 1, 0)
         for i in np.unique(index):
             at = np.flatnonzero(index == i)
             leg = self.legs[i]
-            out[at] = self._along(leg.after, times[at], dt)
+            out[at] = along(leg.after, times[at], dt)
             w = leg.weight(times[at])
             blending = w < 1.0
             if np.any(blending):
                 sel = at[blending]
-                before = sum(weight * self._along(index, times[sel], dt) for index, weight in leg.before)
+                before = sum(weight * along(index, times[sel], dt) for index, weight in leg.before)
                 w = w[blending][:, None]
                 rate, curve = (r[:, None] for r in leg.weight_rates(times[sel]))
                 after = out[sel]
@@ -404,10 +437,6 @@ class Simulation:
                 out[sel, 6:12] += rate * (after[:, 0:6] - before[:, 0:6])
                 out[sel, 12:18] += 2.0 * rate * (after[:, 6:12] - before[:, 6:12]) + curve * (after[:, 0:6]
                                                                                              - before[:, 0:6])
-        path = self.voyage.path(times)
-        out[:, 3] += path.roll
-        out[:, 9] += path.roll_rate
-        out[:, 15] += path.roll_acc
         return out
 
     def _along(self, index: int, times: np.ndarray, dt: float | None) -> np.ndarray:
@@ -575,11 +604,13 @@ def _linear(response: Response, times: np.ndarray, dt: float | None) -> np.ndarr
     return np.concatenate([o for _, o in response.linear_steps(float(times[0]), dt, times.size)])
 
 
-def record_columns(points: dict[str, tuple[float, float, float]], ship=None) -> list[str]:
+def record_columns(scenario: Scenario) -> list[str]:
     """The record's columns: the motions' (:func:`~marinesim.vessel.response.motion_columns`), then the ship's
     (:data:`~marinesim.manoeuvring.voyage.SHIP_COLUMNS`), then a station-keeping vessel's
-    (:func:`~marinesim.session.station.station_columns`)."""
-    return motion_columns(points) + list(SHIP_COLUMNS) + (station_columns(ship) if isinstance(ship, Station) else [])
+    (:func:`~marinesim.session.station.station_columns`), then the other bodies' (:func:`.others.columns`)."""
+    vessel = scenario.vessel
+    station = station_columns(vessel.ship) if isinstance(vessel.ship, Station) else []
+    return motion_columns(vessel.points) + list(SHIP_COLUMNS) + station + others.columns(scenario.others)
 
 
 def _call(function):

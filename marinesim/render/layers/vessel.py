@@ -9,7 +9,8 @@ from marinesim.gl import Program
 from marinesim.pose import Pose
 from marinesim.render.draft_marks import GLYPH, NO_MARKS, DraftMarks
 from marinesim.render.layers.base import View, mat4
-from marinesim.render.vessel_mesh import TOPSIDES, VesselMesh, vessel_mesh, visual_mesh
+from marinesim.render.vessel_mesh import TOPSIDES, VesselMesh, buoy_mesh, vessel_mesh, visual_mesh
+from marinesim.scenario.schema import OtherVessel
 from marinesim.session.timeline import Simulation
 
 
@@ -24,6 +25,18 @@ def drawn_mesh(sim: Simulation) -> VesselMesh | None:
         return vessel_mesh(vessel.hull, house_at=vessel.points.get("bridge"), topsides=topsides,
                            deck_layout=vessel.deck_layout)
     return None
+
+
+def other_mesh(other: OtherVessel) -> VesselMesh:
+    """Another body as drawn (body frame, m): its visual mesh, a ship made from its hull, or a buoy."""
+    if other.visual is not None:
+        return visual_mesh(other.visual)
+    if other.hull is not None:
+        topsides = TOPSIDES if other.topsides_rgb is None else tuple(c / 255.0 for c in other.topsides_rgb)
+        length = float(other.hull.vertices[:, 0].max() - other.hull.vertices[:, 0].min())
+        house = (float(other.hull.vertices[:, 0].min()) + 0.12 * length, 0.0, 0.08 * length)
+        return vessel_mesh(other.hull, house_at=house, topsides=topsides)
+    return buoy_mesh()
 
 
 class VesselLayer:
