@@ -1,15 +1,20 @@
 """The instructor's page in a real browser (headless Chromium driven by Playwright) on a real server on the loopback,
 with a headless station following the same exercise: what the instructor does on the page reaches the exercise once
-and the station within a second of simulated time."""
+and the station within a second of simulated time; the other bodies are listed and drawn where the record puts
+them."""
 
 from __future__ import annotations
 
+import json
 import os
 import threading
 from pathlib import Path
 
+import numpy as np
+
 from chromium import CHROMIUM
 from served import WAIT_S, ServedInThread
+from test_net_server import traffic_scenario
 from marinesim.net.station import Station, follow_headless
 from marinesim.resources import resource_dir
 from marinesim.scenario import load_scenario, with_run
@@ -21,6 +26,26 @@ WAIT_MS = 1000 * WAIT_S
 """ms: what the page waits for at most (a hang; a page on a loaded machine answers within seconds)."""
 SHOTS = os.environ.get("MARINESIM_SHOTS")
 """A folder to keep the page's screenshot in (for a person to look at), if set."""
+
+PIXELS = """([points, r]) => {
+  const canvas = document.getElementById("chart");
+  const d = window.devicePixelRatio || 1;
+  const ctx = canvas.getContext("2d");
+  return points.map(([x, y]) => {
+    const side = Math.round(2 * r * d) + 1;
+    const data = ctx.getImageData(Math.round((x - r) * d), Math.round((y - r) * d), side, side).data;
+    const out = [];
+    for (let i = 0; i < data.length; i += 4) out.push([data[i], data[i + 1], data[i + 2]]);
+    return out;
+  });
+}"""
+"""The chart's pixels (r, g, b) in a square of half-side ``r`` (CSS px) round each of ``points`` (CSS px)."""
+
+
+def _red(pixels: list[list[int]]) -> int:
+    """How many of ``pixels`` are the page's danger red (#e2574c, blended with the chart's dark blue by
+    anti-aliasing), not its grey grid, white own-ship or teal bodies."""
+    return sum(r > 100 and r - g > 50 and r - b > 50 for r, g, b in pixels)
 
 
 def test_the_instructors_page_changes_the_sea_triggers_an_event_and_messages_a_station(tmp_path):
@@ -91,3 +116,65 @@ def test_the_instructors_page_changes_the_sea_triggers_an_event_and_messages_a_s
             bridge.close()
         assert [e for e in bridge.journal if e["kind"] == "action"] == actions
         assert local.time == served.server.exercise.sim.time
+
+
+def test_the_page_lists_the_other_bodies_and_draws_each_where_it_is(tmp_path):
+    """A coaster crossing ahead (CPA 147 m in under 2 min) and a buoy 2.5 km ahead (CPA 100 m in 16 min): the page
+    lists both, the coaster red (dangerous) and the buoy shaded (the nearest CPA ahead, off the chart), with the
+    record's range, bearing, CPA and TCPA at the state's time; on the frozen chart the coaster is drawn in red where
+    her east/north put her at the scale own-ship is drawn at (own-ship's white hull at hers), her vector pointing
+    north. A page that swapped east and north, flipped a sign, or listed one body's values under another's name
+    would send the instructor's eye to the wrong ship."""
+    from playwright.sync_api import sync_playwright
+
+    scenario = traffic_scenario(tmp_path)
+    served = ServedInThread(scenario, tmp_path / "served.jsonl", scale=1.0)
+    page_url = f"http://127.0.0.1:{served.port}/?token={served.server.token}"
+    try:
+        with sync_playwright() as playwright:
+            browser = playwright.chromium.launch(executable_path=CHROMIUM, args=["--no-sandbox"])
+            page = browser.new_page(viewport={"width": 1400, "height": 900})
+            errors: list[str] = []
+            page.on("console", lambda m: errors.append(m.text) if m.type == "error" else None)
+            page.goto(page_url)
+            page.wait_for_function("+document.body.dataset.t > 0 && document.querySelectorAll('#others tr').length "
+                                   "=== 2", timeout=WAIT_MS)
+            page.click("#freeze")
+            page.wait_for_function("!document.getElementById('frozen').hidden", timeout=WAIT_MS)
+            page.wait_for_timeout(600)  # the frozen state's chart drawn
+            t = float(page.evaluate("document.body.dataset.t"))
+            view = json.loads(page.evaluate("document.getElementById('chart').dataset.view"))
+            rows = page.evaluate("[...document.querySelectorAll('#others tr')].map(tr => [tr.className, "
+                                 "[...tr.children].map(td => td.textContent)])")
+            if SHOTS:
+                page.screenshot(path=str(Path(SHOTS) / "instructor_page_others.png"))
+
+            def px(east: float, north: float) -> tuple[float, float]:
+                """Where the page's chart puts (east, north) (m), by the scale and centre it drew at."""
+                return (view["width_px"] / 2 + (east - view["centre_east_m"]) / view["m_per_px"],
+                        view["height_px"] / 2 - (north - view["centre_north_m"]) / view["m_per_px"])
+
+            with Simulation(scenario, wake=False) as sim:
+                row = {name: float(column[0]) for name, column in sim.frame(np.array([t])).items()}
+            own = px(row["east_m"], row["north_m"])
+            coaster = px(row["coaster_east_m"], row["coaster_north_m"])
+            (own_pixel,), = page.evaluate(PIXELS, [[own], 0])
+            at, ahead, astern, mirrored = page.evaluate(PIXELS, [[
+                coaster, (coaster[0], coaster[1] - 40), (coaster[0], coaster[1] + 40),
+                (2 * own[0] - coaster[0], coaster[1])], 5])
+            assert not errors, errors
+            browser.close()
+    finally:
+        served.close()
+    assert all(channel > 200 for channel in own_pixel), (own_pixel, view)  # her white hull where her record says
+    assert _red(at) >= 4 and _red(ahead) >= 2, (coaster, view)  # the coaster's hull, her vector north of her
+    assert _red(astern) == 0 and _red(mirrored) == 0, (coaster, view)
+    (coaster_class, coaster_cells), (buoy_class, buoy_cells) = rows
+    assert "other-danger" in coaster_class.split() and "other-nearest" not in coaster_class.split()
+    assert "other-nearest" in buoy_class.split() and "other-danger" not in buoy_class.split()
+    for name, kind, cells, chart in (("coaster", "ship", coaster_cells, ""), ("fairway", "buoy", buoy_cells,
+                                                                            "off chart")):
+        tcpa = round(row[f"{name}_tcpa_s"])
+        assert cells == [name, kind, f"{row[f'{name}_range_m'] / 1852:.2f}",
+                         f"{round(row[f'{name}_bearing_deg']) % 360:03d}°", f"{row[f'{name}_cpa_m'] / 1852:.2f}",
+                         f"{tcpa // 60}:{tcpa % 60:02d}", chart], name

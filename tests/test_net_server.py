@@ -13,6 +13,7 @@ import aiohttp
 import numpy as np
 import pytest
 
+from conftest import ROOT, write
 from marinesim import __version__
 from marinesim.cli.serve import DEFAULT_BIND, bind_address
 from marinesim.errors import ParameterError
@@ -30,6 +31,52 @@ HANG_S = 300.0
 """s: no message from the server for this long is a hang (it sends four a second)."""
 SCALE = 4.0
 """The served exercises run this many times real time: a test's 30 s exercise takes a few seconds of wall time."""
+
+
+TANKER = ROOT / "rao" / "tanker" / "tanker.4"
+TRAFFIC = f"""
+[ocean]
+resolution = 64
+tiles = 2
+
+[[sea]]
+type = "jonswap"
+hs_m = 2.0
+tp_s = 9.0
+from_deg = 0.0
+
+[vessel]
+rao = "{TANKER}"
+speed_kn = 5.0
+heading_deg = 90.0
+
+[run]
+duration_s = 600.0
+dt_s = 0.1
+seed = 5
+
+[[vessels]]
+name = "coaster"
+kind = "ship"
+rao = "{TANKER}"
+hull = "{ROOT / 'hulls' / 'tanker.gdf'}"
+position_m = [400.0, -250.0]
+speed_kn = 6.0
+heading_deg = 0.0
+
+[[vessels]]
+name = "fairway"
+kind = "buoy"
+position_m = [2500.0, 100.0]
+"""
+"""Own-ship east at 5 kn; a coaster 400 m east and 250 m south of her start, north at 6 kn (at t = 0: relative
+position r = (400, -250) m, velocity v = (-2.572, 3.087) m/s, tcpa = -r.v / |v|^2 = 111.5 s, dcpa = 147 m: dangerous);
+a buoy 2.5 km ahead, 100 m north of her track (dcpa 100 m in 972 s: the nearest ahead, not yet dangerous)."""
+
+
+def traffic_scenario(folder: Path):
+    """:data:`TRAFFIC` written to ``folder`` and loaded."""
+    return load_scenario(write(folder, TRAFFIC, "traffic.toml"))
 
 
 def _scenario(duration_s: float = 600.0):
@@ -314,3 +361,41 @@ def test_bad_messages_are_refused_and_the_exercise_goes_on(tmp_path):
     assert 0.0 < server.exercise.sim.time < scenario.run.duration_s
     log = read_log(server.log_written)
     assert log.entries[-1]["kind"] == "end" and log.verification.verified
+
+
+def test_the_state_gives_the_other_bodies_as_the_record_has_them(tmp_path):
+    """Each state's ``others`` are the record's columns (Simulation.frame) of each body at the state's time, in the
+    scenario's order, with the coaster (dcpa 147 m in 112 s) dangerous and the buoy (dcpa 100 m, in 16 min) the
+    nearest ahead. A server that computed them another way, at another time, or that mixed up the bodies would show
+    the instructor traffic the trainee's radar does not."""
+    scenario = traffic_scenario(tmp_path)
+
+    async def run() -> list[dict]:
+        async with Served(scenario, tmp_path) as served:
+            async with aiohttp.ClientSession() as session:
+                ws, _ = await _instructor(session, served)
+                states = [await _until(ws, lambda m: m["type"] == "state" and m["t"] > 0.0) for _ in range(3)]
+                await ws.close()
+            return states
+
+    states = asyncio.run(run())
+    assert len({state["t"] for state in states}) > 1  # the bodies moved between the states
+    with Simulation(scenario, wake=False) as sim:
+        for state in states:
+            row = sim.frame(np.array([state["t"]]))
+            others = state["others"]
+            assert [(o["name"], o["kind"]) for o in others] == [("coaster", "ship"), ("fairway", "buoy")]
+            for other in others:
+                for key in ("east_m", "north_m", "heading_deg", "speed_kn", "range_m", "bearing_deg", "cpa_m",
+                            "tcpa_s"):
+                    assert other[key] == row[f"{other['name']}_{key}"][0], (state["t"], other["name"], key)
+            coaster, fairway = others
+            assert coaster["danger"] and not fairway["danger"]
+            assert fairway["nearest"] and not coaster["nearest"]
+    knot = 1852.0 / 3600.0
+    r, v = np.array([400.0, -250.0]), np.array([-5.0 * knot, 6.0 * knot])  # TRAFFIC's note: both on straight tracks
+    tcpa = -(r @ v) / (v @ v)
+    for state in states:
+        coaster = state["others"][0]
+        assert coaster["cpa_m"] == pytest.approx(np.hypot(*(r + v * tcpa)), abs=1e-6)
+        assert coaster["tcpa_s"] == pytest.approx(tcpa - state["t"], abs=1e-6)

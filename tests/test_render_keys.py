@@ -1,7 +1,7 @@
 """The viewer's keymap is one table: docs/USAGE.md's key table is the one generated from it, every binding names a
 key pyglet sends and a method of the controls, and the controls on real scenes (a ship, a vessel on station, on
-moorings, on DP, a replay; a real EGL context) act on exactly the keys the table binds there, and the help overlay
-shows each of them."""
+moorings, on DP, with a crane, with a helicopter coming, a replay; a real EGL context) act on exactly the keys the
+table binds there, and the help overlay shows each of them."""
 
 from __future__ import annotations
 
@@ -24,11 +24,16 @@ SESSIONS = {
     "dp": {"always", "own_clock", "free", "live", "instructor", "typing", "station", "faults", "dp", "dp_faults"},
     "replay": {"always", "own_clock", "free", "replay"},
     "station of a served exercise": {"always", "free", "live", "follow", "typing", "ship"},
+    "crane": {"always", "own_clock", "free", "live", "instructor", "typing", "station", "faults", "dp", "dp_faults",
+              "crane"},
+    "helicopter": {"always", "own_clock", "free", "live", "instructor", "typing", "station", "faults", "dp",
+                   "dp_faults", "helicopter"},
 }
 """The contexts each kind of session can be in (``Controls.session_contexts``; a station's in tests/test_net_station.py)."""
 SCENES = {"ship": DEFAULT, "station": ROOT / "configs" / "semisub_swell.toml",
           "moored": ROOT / "configs" / "semisub_moored.toml", "dp": ROOT / "configs" / "supply_dp.toml",
-          "replay": DEFAULT}
+          "replay": DEFAULT, "crane": ROOT / "configs" / "training" / "crane_lift.toml",
+          "helicopter": ROOT / "configs" / "training" / "helideck_landing.toml"}
 
 
 def test_the_docs_key_table_is_the_generated_one():
@@ -93,7 +98,8 @@ def _state(controls, calls: list) -> tuple:
     journal = [entry for entry in scene.exercise.journal if entry["kind"] != "key"]
     return (len(journal), controls.show_help, controls.paused, controls.time_scale_index, controls.typing,
             controls.message, controls.recorder is not None, scene.camera_name, scene.panels, scene.hud_shown,
-            scene.cameras["bridge"].binoculars, scene.cameras["free"].position, scene.sim.time, len(calls))
+            scene.radar_shown, scene.radar_scale_nm, scene.cameras["bridge"].binoculars,
+            scene.cameras["free"].position, scene.sim.time, len(calls))
 
 
 @pytest.fixture(scope="module", params=sorted(SCENES))

@@ -1,4 +1,4 @@
-"""The four shipped training exercises: each loads with its briefing and objectives, runs through
+"""The five shipped training exercises: each loads with its briefing and objectives, runs through
 ``assess`` and ``report`` (short, as CI can afford); its scripted outcome comes from its sea state, not its seed
 (over 20 seeds); and the heavy-weather transit rewards the right call in time: the course change brings the bridge
 acceleration back within its limit. Every shipped scenario, exercise or not, draws its ship."""
@@ -22,9 +22,9 @@ from marinesim.session.exercise import Exercise, run_exercise
 TRAINING = sorted((ROOT / "configs" / "training").glob("*.toml"))
 
 
-def test_four_exercises_ship():
-    assert [p.stem for p in TRAINING] == ["crane_lift", "heavy_weather_transit", "helideck_landing",
-                                          "offshore_loading"]
+def test_five_exercises_ship():
+    assert [p.stem for p in TRAINING] == ["crane_lift", "crossing_situation", "heavy_weather_transit",
+                                          "helideck_landing", "offshore_loading"]
 
 
 @pytest.mark.parametrize("path", TRAINING, ids=[p.stem for p in TRAINING])

@@ -126,6 +126,9 @@ def test_a_sister_abeam_along_the_crests_moves_as_own_ship(abeam):
         np.testing.assert_allclose(rows[f"sister_{dof}"], rows[dof], atol=1e-9 * np.abs(rows[dof]).max())
     np.testing.assert_allclose(rows["sister_range_m"], 150.0)
     np.testing.assert_allclose(rows["sister_bearing_deg"], 180.0)
+    # in company: the range never changes (the tracks' velocities differ by rounding alone), the CPA is now
+    np.testing.assert_allclose(rows["sister_cpa_m"], 150.0)
+    assert not np.any(rows["sister_tcpa_s"])
 
 
 def test_the_closest_point_of_approach_is_the_straight_tracks(abeam):

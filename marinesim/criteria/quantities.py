@@ -23,6 +23,9 @@ lateral and normal specific force in the deck frame (:func:`~marinesim.criteria.
 | ``msdv_m_s1_5`` | motion sickness dose value over the run (ISO 2631-1, W_f) | :mod:`.sickness` |
 | ``mii_per_min`` | motion-induced interruptions, lateral tipping (Graham 1990) | :mod:`.interruptions` |
 | ``offset_max_m`` | largest distance of a vessel keeping station from her set point (the DP footprint) | :mod:`.statistics` |
+| ``swing_max_deg`` | largest angle of the crane's wire from the vertical (the load's swing) | :mod:`.statistics` |
+| ``wire_tension_max_kn`` | largest tension in the crane's wire (snap loads when it comes taut) | :mod:`.statistics` |
+| ``set_down_velocity_max_m_s`` | fastest closing of load and deck at a touchdown (DNV-ST-N001 set-down) | :func:`set_down_velocity` |
 """
 
 from __future__ import annotations
@@ -44,6 +47,8 @@ FOOTPRINT_WINDOW_S = 30.0
 """The footprint's window (s): a DP alarm sounds within seconds of her leaving it, and is cleared as soon."""
 STATION_QUANTITIES = ("offset_max_m",)
 """Quantities of a vessel keeping station only (her record has their columns)."""
+CRANE_QUANTITIES = ("swing_max_deg", "wire_tension_max_kn", "set_down_velocity_max_m_s")
+"""Quantities of a crane's load only (the record has their columns with a ``[crane]``)."""
 LATERAL, NORMAL = "{p}_lateral_sf_m_s2", "{p}_normal_sf_m_s2"
 """The derived series: a point's specific force along the deck's y and z axes (m/s^2)."""
 OCHI_THRESHOLD = 0.093
@@ -140,6 +145,15 @@ def _slamming(series: list[np.ndarray], dt: float, options: Options) -> float:
     return slamming_probability(series[0], dt, options.threshold_m, options.threshold_velocity_m_s)
 
 
+def set_down_velocity(closing: np.ndarray, deck_force: np.ndarray) -> float:
+    """The fastest closing speed (m/s) of load and deck at a touchdown: at each row where the deck starts to push
+    (``deck_force`` from 0 to > 0), the ``closing`` speed (deck's vertical velocity less the load's) of the row
+    before; 0 without a touchdown in the window."""
+    touching = np.nan_to_num(np.asarray(deck_force, float)) > 0.0
+    onsets = np.flatnonzero(touching[1:] & ~touching[:-1])
+    return float(np.max(np.asarray(closing, float)[onsets], initial=0.0))
+
+
 def _mii(series: list[np.ndarray], dt: float, options: Options) -> float:
     return interruptions.mii_per_minute(series[0], series[1], dt, options.tipping_coefficient)
 
@@ -175,6 +189,14 @@ QUANTITIES: dict[str, Measure] = {
     "msdv_m_s1_5": Measure("m/s^1.5", "motion sickness dose value", ("{p}_az_m_s2",), at_point=True, dose=Dose),
     "offset_max_m": Measure("m", "largest offset from the set point", ("set_point_offset_m",),
                             _one(statistics.max_abs), window_s=FOOTPRINT_WINDOW_S),
+    "swing_max_deg": Measure("deg", "largest swing of the load", ("crane_swing_deg",), _one(statistics.max_abs),
+                             window_s=120.0),
+    "wire_tension_max_kn": Measure("kN", "largest wire tension", ("crane_tension_kn",), _one(statistics.max_abs),
+                                   window_s=120.0),
+    "set_down_velocity_max_m_s": Measure("m/s", "fastest set-down", ("crane_relative_velocity_m_s",
+                                                                     "crane_deck_force_kn"),
+                                         lambda series, dt, options: set_down_velocity(series[0], series[1]),
+                                         window_s=120.0),
     "mii_per_min": Measure("1/min", "motion-induced interruptions", (LATERAL, NORMAL), _mii, at_point=True,
                            options=("tipping_coefficient",)),
 }

@@ -6,9 +6,9 @@ on every :data:`TICK_S` of wall time to the time the :class:`Pace` gives (frozen
 and the stations are checked as a session log's are (:func:`~marinesim.session.log.action_problem`), queued, and
 applied at the start of the next tick, at the exercise's time then, through :meth:`Exercise.act`: the journal is the
 one record, the session log is written from it when the exercise ends, and ``replay``/``report`` read it as they
-read a viewer's. Every :data:`STATE_S` each client gets the state (own-ship, criteria, alarms, the sea and the
-weather) and the journal entries since the last; a station applies their actions to its own copy of the exercise
-at the same times (:mod:`marinesim.net.station`), so it sees what the server sees.
+read a viewer's. Every :data:`STATE_S` each client gets the state (own-ship, the other bodies, criteria, alarms,
+the sea and the weather) and the journal entries since the last; a station applies their actions to its own copy of
+the exercise at the same times (:mod:`marinesim.net.station`), so it sees what the server sees.
 
 Safe by default: it binds the loopback unless told otherwise; the page, the WebSocket and every message need the
 token printed at start (compared in constant time); a message is at most :data:`MAX_MESSAGE_BYTES`, a client at most
@@ -36,9 +36,11 @@ from marinesim import __version__
 from marinesim.angles import wave_compass_from_beta
 from marinesim.atomic import strict_json
 from marinesim.errors import MarinesimError, ParameterError
+from marinesim.offshore.traffic import DCPA_LIMIT_M
 from marinesim.scenario.schema import briefing_paragraphs
 from marinesim.session.exercise import EVERYONE, MAX_STATION, Exercise, quiet
 from marinesim.session.log import action_problem, is_a, write_log
+from marinesim.session.others import nearest
 from marinesim.session.sidecar import sha256
 
 TICK_S = 0.1
@@ -64,6 +66,11 @@ SCALES = (0.25, 0.5, 1.0, 2.0, 4.0, 8.0)
 """The time scales an instructor may set (on the page, and ``marinesim serve --time-scale``)."""
 PAGE = Path(__file__).parent / "page"
 """The instructor page's files (HTML, JS, CSS, uPlot)."""
+OTHER_KEYS = ("east_m", "north_m", "heading_deg", "speed_kn", "range_m", "bearing_deg", "cpa_m", "tcpa_s")
+"""What the state gives of each other body: its record columns (``NAME_`` + key, :mod:`marinesim.session.others`)."""
+TCPA_DANGER_S = 720.0
+"""A body own-ship will pass closer than :data:`~marinesim.offshore.traffic.DCPA_LIMIT_M` (0.5 NM) within this many
+seconds (12 min) is dangerous: the page shows it in red."""
 
 
 class Pace:
@@ -142,19 +149,41 @@ class Client:
     """How far the station's own copy of the exercise is behind the server's (s), as it last said."""
 
 
-def ship_state(exercise: Exercise) -> dict[str, Any] | None:
-    """Own-ship now, as the page shows it (None without a vessel): the record's row at the exercise's time (position
-    north and east of the start in m, compass heading, course and speed over ground, rate of turn, rudder, roll,
-    pitch, heave), the set course and the engine order."""
+def record_row(exercise: Exercise) -> dict[str, float] | None:
+    """The record's row (:meth:`Simulation.frame`, column -> value) at the exercise's time; None without a
+    vessel."""
     sim = exercise.sim
     if sim.vessel is None:
         return None
-    row = {name: float(column[0]) for name, column in sim.frame(np.array([sim.time])).items()}
-    conning = sim.conning()
+    return {name: float(column[0]) for name, column in sim.frame(np.array([sim.time])).items()}
+
+
+def ship_state(exercise: Exercise, row: dict[str, float]) -> dict[str, Any]:
+    """Own-ship now, as the page shows it: from the record's ``row`` at the exercise's time (:func:`record_row`:
+    position north and east of the start in m, compass heading, course and speed over ground, rate of turn, rudder,
+    roll, pitch, heave), the set course and the engine order."""
+    conning = exercise.sim.conning()
     keys = ("north_m", "east_m", "heading_deg", "course_over_ground_deg", "speed_over_ground_kn",
             "rate_of_turn_deg_min", "rudder_deg", "roll_deg", "pitch_deg", "heave_m")
     return {key: round(row[key], 4) for key in keys} | {"course_deg": conning["course_deg"],
                                                           "engine": conning["engine"]}
+
+
+def others_state(exercise: Exercise, row: dict[str, float]) -> list[dict[str, Any]]:
+    """The other bodies now, as the page shows them, in the scenario's order: each one's name, kind and its
+    :data:`OTHER_KEYS` from the record's ``row`` (:func:`record_row`: E frame m from own-ship's start, compass
+    heading, speed in kn, own-ship's range in m, true bearing, CPA in m and TCPA in s to it); ``nearest``: the one
+    own-ship comes closest to next (:func:`~marinesim.session.others.nearest`); ``danger``: a CPA under
+    :data:`~marinesim.offshore.traffic.DCPA_LIMIT_M` with 0 < TCPA < :data:`TCPA_DANGER_S`."""
+    bodies = tuple(body.other for body in exercise.sim.bodies)
+    closest = nearest(row, bodies)
+    out = []
+    for other in bodies:
+        values = {key: row[f"{other.name}_{key}"] for key in OTHER_KEYS}
+        out.append({"name": other.name, "kind": other.kind} | values
+                   | {"nearest": other.name == closest,
+                      "danger": values["cpa_m"] < DCPA_LIMIT_M and 0.0 < values["tcpa_s"] < TCPA_DANGER_S})
+    return out
 
 
 def predicted(ship: dict[str, Any]) -> list[list[float]]:
@@ -457,7 +486,7 @@ class ExerciseServer:
             exercise.advance_to(target)
         t = exercise.sim.time
         if self.exercise.sim.vessel is not None and (not self.track or t >= self.track[-1][0] + TRACK_S):
-            ship = ship_state(exercise)
+            ship = ship_state(exercise, record_row(exercise))
             self.track.append([round(t, 3), ship["north_m"], ship["east_m"]])
         if self.streams is not None and self.exercise.sim.vessel is not None:
             for at in self.streams.pending(t):  # each output time passed, at that time: none skipped by a slow tick
@@ -478,13 +507,15 @@ class ExerciseServer:
     def state(self, ended: bool = False) -> dict[str, Any]:
         """What every client is sent four times a second (less the journal entries, which are each client's own)."""
         exercise, sim = self.exercise, self.exercise.sim
-        ship = ship_state(exercise)
+        row = record_row(exercise)
+        ship = ship_state(exercise, row) if row is not None else None
         sea = sim.sea
         largest = max(sea.systems, key=lambda system: system.spectrum.hs**2 / 16.0 if hasattr(system, "spectrum")
                       else system.variance)
         environment = sim.environment
         return {"type": "state", "t": sim.time, "frozen": self.pace.frozen, "scale": self.pace.scale, "ended": ended,
                 "ship": ship, "predicted": predicted(ship) if ship else [],
+                "others": others_state(exercise, row) if row is not None else [],
                 "lag_s": {c.station: c.lag_s for c in self.clients if c.role == "station" and c.lag_s is not None},
                 "sea": {"hs_m": round(sea.hs, 3), "tp_s": round(sea.tp, 3),
                         "from_deg": round(wave_compass_from_beta(largest.beta), 1)},

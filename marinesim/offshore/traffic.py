@@ -60,19 +60,24 @@ def _xy(name: str, value: object) -> np.ndarray:
     return array
 
 
+STEADY_M_S = 1e-6
+"""A relative speed below this (m/s: 3.6 mm an hour) is none: a CPA would be a rounding error's."""
+
+
 def cpa(own_xy: object, own_v: object, other_xy: object, other_v: object) -> tuple[np.ndarray, np.ndarray]:
     """Distance (m) and time (s) of the closest point of approach of two vessels on straight tracks at constant
     velocity, now at ``own_xy`` and ``other_xy`` (E, m) with velocities ``own_v`` and ``other_v`` (E, m/s); arrays
     (..., 2) that broadcast, results of their broadcast shape without the last axis.
 
     With r = other - own and v = other_v - own_v: ``tcpa = -(r.v) / |v|^2`` and ``dcpa = |r + v tcpa|``. A negative
-    tcpa means the closest point is past (the range is opening). Where the relative velocity is exactly zero the
-    range never changes: every time is the closest, and tcpa is 0 (now) with dcpa the present range."""
+    tcpa means the closest point is past (the range is opening). Where the relative speed is below
+    :data:`STEADY_M_S` (ships in company, their velocities equal but for rounding) the range does not change: every
+    time is the closest, and tcpa is 0 (now) with dcpa the present range."""
     r = _xy("other_xy", other_xy) - _xy("own_xy", own_xy)
     v = _xy("other_v", other_v) - _xy("own_v", own_v)
     r, v = np.broadcast_arrays(r, v)
     speed2 = np.einsum("...i,...i->...", v, v)
-    moving = speed2 > 0.0
+    moving = speed2 > STEADY_M_S**2
     tcpa = np.where(moving, -np.einsum("...i,...i->...", r, v) / np.where(moving, speed2, 1.0), 0.0)
     dcpa = np.hypot(*np.moveaxis(r + v * tcpa[..., None], -1, 0))
     return dcpa, tcpa

@@ -21,7 +21,7 @@ from marinesim.errors import MarinesimError
 from marinesim.render.hud import LEVEL_COLORS, MESSAGE_COLOR, Slider
 from marinesim.render.keys import (HELM_STEP_DEG, HS_STEP, RAIN_STEPS_MM_H, TIME_STEP_H, TP_STEP, TURN_STEP_DEG,
                                    VISIBILITY_STEP, dispatch, help_lines)
-from marinesim.render.scene import Scene
+from marinesim.render.scene import RADAR_SCALES_NM, Scene
 from marinesim.scenario.model import MAX_VISIBILITY_M, MIN_VISIBILITY_M
 from marinesim.session.recorder import Recorder
 from marinesim.session.timeline import CHANGE_RAMP_S
@@ -87,6 +87,8 @@ class Controls:
         station = self.scene.follow is not None  # the instructor is elsewhere, on the served exercise's page
         found = {"always", "free", "live", "typing"} | ({"follow"} if station else {"instructor", "own_clock"})
         sim = self.scene.sim
+        found |= ({"crane"} if sim.lift is not None else set()) | ({"helicopter"} if sim.helicopter is not None
+                                                                    else set())
         if sim.vessel is not None:
             ship = sim.vessel.ship
             if ship.kind != "station":
@@ -271,6 +273,28 @@ class Controls:
         course = math.degrees(orders.course) % 360.0 if orders.autopilot else sim.conning()["heading_deg"]
         self._order(course_deg=round((course + step_deg) % 360.0, 6))
 
+    def hoist(self, step_m_s: float) -> None:
+        """The crane's hoist ``step_m_s`` faster up (down when negative), within its hoist speed."""
+        lift = self.scene.sim.lift
+        limit = lift.crane.hoist_speed_m_s
+        up, _ = lift.ordered(self.scene.sim.time)
+        self._order(hoist_m_s=round(max(min(up + step_m_s, limit), -limit), 6))
+
+    def slew(self, step_deg_s: float) -> None:
+        """The crane's slew ``step_deg_s`` faster to port (starboard when negative), within its slew rate."""
+        lift = self.scene.sim.lift
+        limit = lift.crane.slew_rate_deg_s
+        _, rate = lift.ordered(self.scene.sim.time)
+        self._order(slew_deg_s=round(max(min(rate + step_deg_s, limit), -limit), 6))
+
+    def crane_stop(self) -> None:
+        """The crane's hoist and slew stopped."""
+        self._order(hoist_m_s=0.0, slew_deg_s=0.0)
+
+    def deck_word(self, word: str) -> None:
+        """The deck's word to the helicopter: permit (GREEN), hold (RED) or wave_off."""
+        self._order(helicopter=word)
+
     def move_set_point(self, ahead: float, starboard: float) -> None:
         """The DP's position set point ``ahead`` and to ``starboard`` (m) of where it is, along her heading set
         point."""
@@ -306,6 +330,22 @@ class Controls:
             self.say("binoculars: on the bridge (key 2)")
             return
         self.scene.cameras["bridge"].binoculars = not self.scene.cameras["bridge"].binoculars
+
+    def toggle_radar(self) -> None:
+        """The radar picture of the traffic shown or hidden; a HUD turned off (``--hud off``) comes back with it
+        shown."""
+        scene = self.scene
+        scene.radar_shown = not (scene.radar_shown and scene.hud_shown)
+        scene.hud_shown = True
+
+    def radar_range(self) -> None:
+        """The radar's next range: auto, then each of :data:`~marinesim.render.scene.RADAR_SCALES_NM`, then auto
+        again; the radar shown."""
+        scene = self.scene
+        ranges = (None, *RADAR_SCALES_NM)
+        scene.radar_scale_nm = ranges[(ranges.index(scene.radar_scale_nm) + 1) % len(ranges)]
+        scene.radar_shown = scene.hud_shown = True
+        self.say("radar range auto" if scene.radar_scale_nm is None else f"radar range {scene.radar_scale_nm:g} nm")
 
     def toggle_help(self) -> None:
         self.show_help = not self.show_help

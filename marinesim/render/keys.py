@@ -35,6 +35,10 @@ TIME_STEP_H = 1.0
 """T / Y: the scenario's clock this much on / back (h)."""
 RAIN_STEPS_MM_H = (0.0, 2.5, 10.0, 50.0)
 """The instructor's O steps the rain through these: none, light, heavy, violent showers."""
+HOIST_STEP_M_S = 0.1
+"""PAGE UP / PAGE DOWN: the crane's hoist this much faster up / down (m/s), to its hoist speed."""
+SLEW_STEP_DEG_S = 0.5
+"""INSERT / DELETE: the crane's slew this much faster to port / starboard (deg/s), to its slew rate."""
 SEEK_STEP_S = 30.0
 """A replay's LEFT / RIGHT: back / forward this long (s)."""
 
@@ -51,15 +55,18 @@ CONTEXTS = {
     "faults": "the instructor, a vessel on DP or moorings",
     "dp": "a vessel on DP",
     "dp_faults": "the instructor, a vessel on DP",
+    "crane": "a vessel with a crane ([crane])",
+    "helicopter": "a helicopter approaching her helideck ([helicopter])",
     "replay": "a replay",
 }
 """Where a binding acts, and the words for it: a session is in several at once (a live DP session: always, live,
 station, faults, dp); while a message is being typed only the typing keys act."""
 
 KEY_NAMES = {
-    "_0": "0", "_1": "1", "_2": "2", "_3": "3", "_9": "9", "ESCAPE": "ESC", "PLUS": "+", "EQUAL": "=",
-    "NUM_ADD": "keypad +", "MINUS": "-", "NUM_SUBTRACT": "keypad -", "BRACKETLEFT": "[", "BRACKETRIGHT": "]",
-    "COMMA": ",", "PERIOD": ".", "SEMICOLON": ";", "APOSTROPHE": "'",
+    "_0": "0", "_1": "1", "_2": "2", "_3": "3", "_4": "4", "_5": "5", "_6": "6", "_9": "9", "ESCAPE": "ESC",
+    "PLUS": "+", "EQUAL": "=", "NUM_ADD": "keypad +", "MINUS": "-", "NUM_SUBTRACT": "keypad -", "BRACKETLEFT": "[",
+    "BRACKETRIGHT": "]", "COMMA": ",", "PERIOD": ".", "SEMICOLON": ";", "APOSTROPHE": "'", "PAGEUP": "PAGE UP",
+    "PAGEDOWN": "PAGE DOWN",
 }
 """What is written on a key whose pyglet name is not it (the rest are written as named)."""
 
@@ -114,6 +121,8 @@ KEYMAP = (
         Binding(("_3",), "camera", "free camera", ("free",)),
         Binding(("_4",), "next_camera", "the scenario's named cameras in turn ([[cameras]])"),
         Binding(("B",), "toggle_binoculars", f"binoculars up / down (bridge, {BINOCULAR_POWER:g}x)"),
+        Binding(("_5",), "toggle_radar", "radar picture of the traffic shown / hidden (HUD)"),
+        Binding(("_6",), "radar_range", "radar range: auto, then each standard scale in turn"),
         Binding(("W",), "fly", "free camera: forward", (1.0, 0.0, 0.0), "free", held=True),
         Binding(("S",), "fly", "free camera: back", (-1.0, 0.0, 0.0), "free", held=True),
         Binding(("A",), "fly", "free camera: left", (0.0, -1.0, 0.0), "free", held=True),
@@ -178,6 +187,19 @@ KEYMAP = (
                 "dp"),
         Binding(("V",), "move_set_point", f"set point {SET_POINT_STEP_M:g} m to starboard",
                 (0.0, SET_POINT_STEP_M), "dp"),
+    )),
+    Group("crane", "the crane operator: hoist and slew", "crane", (
+        Binding(("PAGEUP",), "hoist", f"hoist {HOIST_STEP_M_S:g} m/s faster up (slower down)", (HOIST_STEP_M_S,)),
+        Binding(("PAGEDOWN",), "hoist", f"hoist {HOIST_STEP_M_S:g} m/s faster down (slower up)",
+                (-HOIST_STEP_M_S,)),
+        Binding(("INSERT",), "slew", f"slew {SLEW_STEP_DEG_S:g} deg/s faster to port", (SLEW_STEP_DEG_S,)),
+        Binding(("DELETE",), "slew", f"slew {SLEW_STEP_DEG_S:g} deg/s faster to starboard", (-SLEW_STEP_DEG_S,)),
+        Binding(("END",), "crane_stop", "crane: stop hoist and slew"),
+    )),
+    Group("helicopter", "the helideck landing officer: the deck's word to the pilot", "helicopter", (
+        Binding(("F1",), "deck_word", "deck GREEN: cleared to land", ("permit",)),
+        Binding(("F2",), "deck_word", "deck RED: hold in the hover", ("hold",)),
+        Binding(("F3",), "deck_word", "wave off", ("wave_off",)),
     )),
     Group("replay", "a replay", "replay", (
         Binding(("LEFT",), "seek_by", f"back {SEEK_STEP_S:g} s", (-SEEK_STEP_S,)),

@@ -28,9 +28,12 @@ from dataclasses import dataclass
 import moderngl
 import numpy as np
 
+from marinesim.angles import compass_to_math
 from marinesim.errors import ParameterError
 from marinesim.gl import is_software
+from marinesim.pose import Pose
 from marinesim.render import CASCADES
+from marinesim.render.aircraft import helicopter_lights, helicopter_mesh
 from marinesim.render.camera import Eye
 from marinesim.render.daylight import Light, light_at
 from marinesim.render.draft_marks import draft_marks
@@ -49,6 +52,7 @@ from marinesim.render.layers.synthesis import CascadeSynthesis
 from marinesim.render.layers.solver_field import SolverFieldLayer
 from marinesim.render.layers.vessel import VesselLayer, drawn_mesh, other_mesh
 from marinesim.render.layers.wake import WakeLayer
+from marinesim.render.vessel_mesh import CONTAINER_M, boom_mesh, container_mesh, wire_mesh
 from marinesim.session.timeline import Simulation
 
 
@@ -114,6 +118,15 @@ class Renderer:
                                                                None, body.other.route.speed > 0.0)
                                              if options.vessel else [])
                               for layer, body in zip(self.others, sim.bodies)]
+        self.load = self.wire = self.boom = None
+        if sim.lift is not None and options.vessel:
+            self.load = VesselLayer(ctx, container_mesh())
+            self.wire = VesselLayer(ctx, wire_mesh(np.zeros(3), -np.ones(3)))
+            self.boom = VesselLayer(ctx, boom_mesh(np.zeros(3), np.ones(3)))
+        self.helicopter = self.helicopter_lights = None
+        if sim.helicopter is not None and options.vessel:
+            self.helicopter = VesselLayer(ctx, helicopter_mesh())
+            self.helicopter_lights = NavLightsLayer(ctx, list(helicopter_lights()))
         self.rain = RainLayer(ctx)
         bow = (Bow.of(vessel.hull, self.mesh.positions) if vessel is not None and vessel.hull is not None
                and self.mesh is not None and options.vessel else None)
@@ -160,22 +173,47 @@ class Renderer:
         others = self.sim.other_poses()
         for layer, other in zip(self.others, others):
             layer.draw(view, other)
+        if self.load is not None:
+            self._draw_lift(view, pose)
+        helicopter = None
+        if self.helicopter is not None:
+            row = self.sim.helicopter.sample(np.array([self.sim.time]))
+            helicopter = Pose(row["x"][0], row["y"][0], compass_to_math(row["heading_deg"][0]),
+                              (0.0, 0.0, row["z"][0], 0.0, 0.0, 0.0))
+            self.helicopter.draw(view, helicopter)
         if self.spray is not None:
             self.spray_layer.draw(view, self.spray.puffs, size[1])
         self.nav_lights.draw(view, pose, size[1])
         for layer, other in zip(self.others_lights, others):
             layer.draw(view, other, size[1])
+        if helicopter is not None:
+            self.helicopter_lights.draw(view, helicopter, size[1])
         self.rain.draw(view, self.sim.time)
+
+    def _draw_lift(self, view: View, pose) -> None:
+        """The crane's boom, slewed, and its load (a container, along own-ship) hanging on its wire from the tip."""
+        row = self.sim.lift.sample(np.array([self.sim.time]))
+        load = np.array([row["load_x_m"][0], row["load_y_m"][0], row["load_z_m"][0]])
+        tip = np.array([row["tip_x_m"][0], row["tip_y_m"][0], row["tip_z_m"][0]])
+        heading = pose.heading + pose.motion[5]
+        self.load.draw(view, Pose(load[0], load[1], heading, (0.0, 0.0, load[2], 0.0, 0.0, 0.0)))
+        self.wire.replace(wire_mesh(tip, load + np.array([0.0, 0.0, CONTAINER_M[2]])))
+        self.wire.draw(view, Pose())
+        crane = self.sim.lift.crane
+        self.boom.replace(boom_mesh(np.add(crane.pedestal_m, (0.0, 0.0, 1.2)), crane.tip(row["slew_deg"][0])))
+        self.boom.draw(view, pose)
 
     def release(self) -> None:
         if self.synthesis is not None:
             self.synthesis.release()
         for layer in (self.sky, self.cascades, self.foam, self.wake, self.solver_field, self.hull_mask, self.ocean,
-                      self.vessel, self.nav_lights, self.rain, self.spray_layer, *self.others, *self.others_lights):
+                      self.vessel, self.nav_lights, self.rain, self.spray_layer, *self.others, *self.others_lights,
+                      *((self.load, self.wire, self.boom) if self.load is not None else ()),
+                      *((self.helicopter, self.helicopter_lights) if self.helicopter is not None else ())):
             layer.release()
 
 
 def _lights_of(other) -> str:
-    """The lights another body shows: a ship's and an FPSO's as the scenario says, a buoy's and a platform's one
-    all-round light (as an anchor light)."""
+    """The lights another body shows: a ship's and an FPSO's as the scenario says, a moored body's, a buoy's and a
+    platform's an all-round light (as an anchor light)."""
     return other.nav_lights if other.kind in ("ship", "fpso") else "anchored"

@@ -9,24 +9,27 @@ the scene makes it and hands it to the simulation, which steps it.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from datetime import timedelta, timezone
 from typing import Any, Protocol
 
 import moderngl
 import numpy as np
 
-from marinesim.angles import wave_compass_from_beta
+from marinesim.angles import math_to_compass, wave_compass_from_beta
 from marinesim.criteria.monitor import Level, value_and_limit
 from marinesim.errors import ParameterError
 from marinesim.gl import is_software
 from marinesim.render import HUDS
-from marinesim.render.camera import NAKED_EYE_FOV_DEG, BridgeCamera, FreeCamera, OrbitCamera
+from marinesim.offshore.traffic import NAUTICAL_MILE
+from marinesim.pose import Pose
+from marinesim.render.camera import NAKED_EYE_FOV_DEG, BridgeCamera, Eye, FreeCamera, OrbitCamera
 from marinesim.render.clock import FrameClock
-from marinesim.render.hud import (ALARM_COLOR, FOOTPRINT_MIN_WIDTH, LEVEL_COLORS, Banner, Footprint, Hud, Slider,
-                                  StripChart, StripHistory, font_px_for)
+from marinesim.render.hud import (ALARM_COLOR, FOOTPRINT_MIN_WIDTH, LEVEL_COLORS, Banner, Contact, Footprint, Hud,
+                                  Radar, Slider, StripChart, StripHistory, font_px_for)
 from marinesim.render.renderer import Renderer, RenderOptions
 from marinesim.scenario import Scenario
+from marinesim.scenario.model import CAMERA_BODIES
 from marinesim.session.exercise import Exercise, quiet
 from marinesim.session.replay import Replay
 from marinesim.session.station import line_columns, thruster_columns
@@ -52,6 +55,15 @@ HELIDECK = "helideck"
 HELIDECK_LIGHTS = {Level.OK: ("GREEN", "landing permitted"), Level.CAUTION: ("AMBER", "landing with caution"),
                    Level.EXCEEDED: ("RED", "landing not permitted"), Level.SETTLING: ("--", "measuring motions")}
 """Helideck monitoring status by the worst level of the helideck's criteria (CAP 437 style)."""
+RADAR_SCALES_NM = (0.75, 1.5, 3.0, 6.0, 12.0, 24.0)
+"""The radar's range scales (nm, the outer ring's): the auto range is the smallest holding the nearest contact (the
+largest beyond it); key 6 steps through auto and these."""
+RADAR_EMPTY_NM = 3.0
+"""The auto range with no contacts (nm)."""
+TRACK_SPAN_S = 600.0
+TRACK_STEP_S = 10.0
+"""The radar's past track of own ship: her positions at the multiples of :data:`TRACK_STEP_S` over the last
+:data:`TRACK_SPAN_S` (s of simulated time), then where she is now."""
 
 
 class Follow(Protocol):
@@ -93,8 +105,8 @@ def _reading(value: float | None, limit: float) -> tuple[str, str]:
 
 class Scene:
     """Draws ``scenario`` on ``ctx``: ``camera`` is one of :data:`~marinesim.render.CAMERAS` or of the scenario's
-    named cameras; the bridge camera sits on the scenario's point named ``bridge`` (else 10 m above the reference
-    point)."""
+    named cameras (on own ship or on another body, moving with it); the bridge camera sits on the scenario's point
+    named ``bridge`` (else 10 m above the reference point)."""
 
     def __init__(self, ctx: moderngl.Context, scenario: Scenario, camera: str = "orbit",
                  options: RenderOptions = RenderOptions(), log: Callable[[str], None] = quiet) -> None:
@@ -126,6 +138,10 @@ class Scene:
                                                     named.fov_deg, widest_deg=max(named.fov_deg, NAKED_EYE_FOV_DEG))
         self.named_cameras = tuple(named.name for named in scenario.cameras)
         """The scenario's cameras (key 4 goes through them)."""
+        bodies = [body.other.name for body in self.sim.bodies]
+        self._camera_bodies = {named.name: bodies.index(named.body) for named in scenario.cameras
+                               if named.body not in CAMERA_BODIES}
+        """A named camera on another body: the body's index in :attr:`Simulation.bodies`, by the camera's name."""
         self.camera_name = camera
         self.charted = CHARTED + (STATION_CHARTED if self.sim.station is not None else ())
         kept = self.charted + (FOOTPRINT_TRACK if self.sim.station is not None else ())
@@ -145,6 +161,13 @@ class Scene:
         self.follow: Follow | None = None
         """The served exercise the clock follows (a station), or None."""
         self.slider: Slider | None = None
+        self.radar_shown = bool(self.sim.bodies)
+        """The radar picture in the HUD (key 5): shown at first where the scenario has other vessels."""
+        self.radar_scale_nm: float | None = None
+        """The radar's range, one of :data:`RADAR_SCALES_NM` (nm), or None: the auto range (key 6)."""
+        self._track: tuple[tuple[int, int], np.ndarray] = ((-1, -1), np.empty((0, 2)))
+        """Own ship's past track on the radar (E, m, (n, 2)), by its last sample's index and the timeline's
+        version."""
 
     @property
     def camera_name(self) -> str:
@@ -159,6 +182,16 @@ class Scene:
     @property
     def camera(self):
         return self.cameras[self._camera_name]
+
+    def camera_pose(self) -> Pose:
+        """The pose of what the camera is on now: another body's for a named camera on it (``body = NAME``),
+        own-ship's for the others."""
+        body = self._camera_bodies.get(self._camera_name)
+        return self.sim.pose() if body is None else self.sim.other_poses()[body]
+
+    def eye(self) -> Eye:
+        """Where the camera is and where it looks now (E frame), moving with what it is on."""
+        return self.camera.eye(self.camera_pose())
 
     def step(self, dt: float) -> None:
         """Advance the simulation ``dt`` s (through the replay's actions in a replay), sample the strip
@@ -189,7 +222,7 @@ class Scene:
 
     def draw(self, size: tuple[int, int], hud: bool = True, help_lines: list[str] | None = None) -> None:
         """The frame into the bound framebuffer of ``size`` (w, h) px; ``hud=False`` leaves the HUD out."""
-        self.renderer.draw(self.camera.eye(self.sim.pose()), size)
+        self.renderer.draw(self.eye(), size)
         if hud and self.hud_shown:
             if font_px_for(size) != self.hud.font_px:  # the HUD keeps its share of a resized target
                 self.hud.release()
@@ -200,7 +233,7 @@ class Scene:
                 lines, panel = self.strip_lines(size[0]), self.criteria_strip(size[0])
             station = self.follow.name if self.follow is not None else None
             self.hud.draw(size, lines, self.charts(), help_lines, panel, self.exercise.messages(station=station),
-                          self.banners(), self.slider, self.footprint())
+                          self.banners(), self.slider, self.footprint(), self.radar())
 
     def charts(self) -> list[StripChart]:
         """The strip charts drawn: the motions' over the last minute, with the panels and a vessel."""
@@ -214,6 +247,50 @@ class Scene:
             return None
         east, north = (self.history.chart(name, unit).values for name, _, unit in FOOTPRINT_TRACK)
         return Footprint(east, north, self.sim.scenario.station.footprint_m)
+
+    def radar(self) -> Radar | None:
+        """The radar picture now, while it is shown (:attr:`radar_shown`): own ship's compass heading, velocity
+        over ground and past track (:meth:`radar_track`), and each other body as a contact, its place relative to
+        own ship's track point (E, m), its velocity over ground and heading from its route, on
+        :meth:`radar_range_m`."""
+        if not self.radar_shown:
+            return None
+        sim, now = self.sim, np.array([self.sim.time])
+        pose = sim.pose()
+        here = np.array([pose.x, pose.y])
+        contacts = []
+        for body in sim.bodies:
+            path = body.path(now)
+            contacts.append(Contact(body.other.name, np.array([path.x[0], path.y[0]]) - here,
+                                    np.array([path.vx[0], path.vy[0]]), math_to_compass(float(path.heading[0]))))
+        return Radar(sim.heading_deg, sim.velocity(), self.radar_track() - here, self.radar_range_m(contacts),
+                     tuple(contacts))
+
+    def radar_range_m(self, contacts: Sequence[Contact]) -> float:
+        """The radar's range (m): the one chosen (:attr:`radar_scale_nm`), else the smallest of
+        :data:`RADAR_SCALES_NM` holding the nearest of ``contacts`` (:data:`RADAR_EMPTY_NM` with none)."""
+        if self.radar_scale_nm is not None:
+            return self.radar_scale_nm * NAUTICAL_MILE
+        if not contacts:
+            return RADAR_EMPTY_NM * NAUTICAL_MILE
+        nearest = min(math.hypot(*contact.position) for contact in contacts)
+        return next((s for s in RADAR_SCALES_NM if nearest <= s * NAUTICAL_MILE), RADAR_SCALES_NM[-1]) * NAUTICAL_MILE
+
+    def radar_track(self) -> np.ndarray:
+        """Own ship's track point (E, m, (n, 2), oldest first) at the multiples of :data:`TRACK_STEP_S` before now
+        within :data:`TRACK_SPAN_S`, then now; those samples are kept until the next multiple or a change of the
+        timeline. Empty without a vessel."""
+        sim = self.sim
+        if sim.voyage is None:
+            return np.empty((0, 2))
+        last = math.ceil(sim.time / TRACK_STEP_S - 1e-9) - 1  # the last multiple before now
+        if self._track[0] != (last, sim.version):
+            first = max(last - round(TRACK_SPAN_S / TRACK_STEP_S) + 1, 0)
+            times = TRACK_STEP_S * np.arange(first, last + 1)
+            path = sim.voyage.path(times) if times.size else None
+            self._track = ((last, sim.version), np.empty((0, 2)) if path is None else np.column_stack([path.x, path.y]))
+        pose = sim.pose()
+        return np.vstack([self._track[1], [pose.x, pose.y]])
 
     def banners(self) -> list[Banner]:
         """The helideck's status light, then the alarms waiting for an acknowledgement (flashing at 1 Hz

@@ -145,6 +145,32 @@ def buoy_mesh() -> VesselMesh:
     return part_mesh(kit.join([float_, *legs, top]))
 
 
+CONTAINER_M = (6.06, 2.44, 2.59)
+"""A 20 ft ISO container, length, width and height (m)."""
+
+
+def container_mesh() -> VesselMesh:
+    """A 20 ft container as the crane's load, its bottom's centre at the origin, doors aft."""
+    length, width, height = CONTAINER_M
+    return part_mesh(kit.box((-length / 2, -width / 2, 0.0), (length / 2, width / 2, height), kit.SHIP_RED))
+
+
+def wire_mesh(top: np.ndarray, bottom: np.ndarray, width_m: float = 0.12) -> VesselMesh:
+    """A crane's wire from ``top`` to ``bottom`` (E frame, m): a thin beam, drawn thicker than the 40 mm rope so that
+    it shows from the crane cab."""
+    top, bottom = np.asarray(top, float), np.asarray(bottom, float)
+    if np.linalg.norm(top - bottom) < 1e-3:
+        bottom = top - np.array([0.0, 0.0, 1e-3])
+    up = (1.0, 0.0, 0.0) if abs((top - bottom)[2]) > 0.9 * np.linalg.norm(top - bottom) else (0.0, 0.0, 1.0)
+    return part_mesh(kit.beam(bottom, top, width_m, kit.BLACK, up=up))
+
+
+def boom_mesh(heel: np.ndarray, tip: np.ndarray) -> VesselMesh:
+    """A crane's boom from ``heel`` to ``tip`` (body frame, m): a yellow box girder, with a sheave block at the tip."""
+    return part_mesh(kit.join([kit.beam(heel, tip, 0.9, kit.CRANE_YELLOW, height=0.8),
+                               kit.box(np.asarray(tip) - 0.45, np.asarray(tip) + 0.45, kit.CRANE_YELLOW)]))
+
+
 def _face_normals(corners: np.ndarray) -> np.ndarray:
     """Unit normals (t, 3) of triangles (t, 3, 3) wound counter-clockwise seen from outside."""
     normals = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])

@@ -23,7 +23,7 @@ from marinesim.angles import wave_beta_from_compass
 from marinesim.constants import G
 from marinesim.criteria.monitor import (CAUTION, MAX_WINDOW_ROWS, Criterion, check_point, default_name,
                                        parse_condition, watched)
-from marinesim.criteria.quantities import QUANTITIES, STATION_QUANTITIES
+from marinesim.criteria.quantities import CRANE_QUANTITIES, QUANTITIES, STATION_QUANTITIES
 from marinesim.criteria.sickness import MAX_WF_DT_S
 from marinesim.errors import FileFormatError, ParameterError, ScenarioError
 from marinesim.formats import check_file, extensions, formats
@@ -67,12 +67,15 @@ MAX_CURRENT_M_S = 5.0
 MIN_VISIBILITY_M, MAX_VISIBILITY_M = 50.0, 200_000.0
 """The range of the meteorological visibility (m): thick fog to the clearest air."""
 NAV_LIGHTS = ("underway", "restricted", "anchored", "none")
+HELICOPTER_DECISIONS = ("permit", "hold", "wave_off")
+"""What the deck tells a helicopter (:mod:`marinesim.offshore.helicopter`)."""
 """The navigation lights a vessel shows (COLREG): making way (masthead lights, sidelights, sternlight), restricted
 in her ability to manoeuvre (those and red-white-red all round), at anchor (all-round white forward and aft), or
 none drawn."""
 WEATHER = ("visibility_m", "cloud_cover_oktas", "wind_speed_m_s", "rain_mm_h")
 """The ``[environment]`` keys an event or the instructor may change during a run."""
-ORDERS = ("speed_kn", "heading_deg", "rudder_deg", "engine", "autopilot", "set_north_m", "set_east_m", "fault")
+ORDERS = ("speed_kn", "heading_deg", "rudder_deg", "engine", "autopilot", "set_north_m", "set_east_m", "fault",
+          "hoist_m_s", "slew_deg_s", "helicopter")
 """The ``[[events]]`` keys that are orders to the ship."""
 
 
@@ -493,6 +496,13 @@ class EventOptions(Section):
                           "her heading's)")
     set_east_m: Annotated[float | None, Quantity("m", ge=-500.0, le=500.0)] = Field(
         None, description="... and east of it")
+    hoist_m_s: Annotated[float | None, Quantity("m/s", ge=-5.0, le=5.0)] = Field(
+        None, description="the crane's hoist: positive up, negative lowering, 0 stopped (within its hoist speed)")
+    slew_deg_s: Annotated[float | None, Quantity("deg/s", ge=-10.0, le=10.0)] = Field(
+        None, description="the crane's slew: positive to port (anticlockwise from above), 0 stopped")
+    helicopter: Literal[HELICOPTER_DECISIONS] | None = Field(
+        None, description="the deck's word to the helicopter: permit (GREEN: land), hold (RED: hold in the hover) or "
+                          "wave_off")
     fault: Annotated[str | None, Field(min_length=1, max_length=80)] = Field(
         None, description='an instructor\'s fault on a vessel keeping station: "thruster:NAME" lost, '
                           '"drive-off:NAME" stuck at full thrust, "reference drift" (the position reference walks '
@@ -566,6 +576,8 @@ DECISIONS = {
     "acknowledge": "every alarm of its criteria (of all criteria if it names none) acknowledged within within_s",
     "act_before": "a course or speed order given before the expectation of one of its criteria (the median of "
                   "its window's value in the sea she meets) passes the limit",
+    "give_way": "COLREG Rules 15 and 16: a course or speed order given while the time to the closest point of "
+                "approach to vessel is still more than within_s, and own-ship passing vessel at passing_m or more",
 }
 """The decisions an objective may judge, in words."""
 
@@ -581,16 +593,79 @@ class ObjectiveOptions(Section):
     decision: Literal[tuple(DECISIONS)] | None = Field(
         None, description="judge a decision instead: " + "; ".join(f"{k}: {v}" for k, v in DECISIONS.items()))
     within_s: Annotated[float | None, Quantity("s", gt=0.0, le=3600.0)] = Field(
-        None, description="acknowledge: the longest an alarm may wait for its acknowledgement")
+        None, description="acknowledge: the longest an alarm may wait for its acknowledgement; give_way: the least "
+                          "time to the closest point of approach at which to act (early action, Rule 16)")
+    vessel: str | None = Field(None, description="give_way: the [[vessels]] name of the vessel to keep out of the "
+                                                 "way of")
+    passing_m: Annotated[float | None, Quantity("m", gt=0.0, le=20_000.0)] = Field(
+        None, description="give_way: the least distance to pass her at (1 nm is 1852 m)")
 
     @model_validator(mode="after")
     def _decision_has_what_it_needs(self) -> ObjectiveOptions:
         if self.decision == "acknowledge" and self.within_s is None:
             raise _refuse("within_s", "required by decision = 'acknowledge' (the longest an alarm may wait)")
-        if self.decision != "acknowledge" and self.within_s is not None:
-            raise _refuse("within_s", "only decision = 'acknowledge' takes it")
+        if self.decision == "give_way" and (self.within_s is None or self.vessel is None or self.passing_m is None):
+            raise _refuse("decision", "decision = 'give_way' needs vessel, passing_m and within_s")
+        if self.decision != "give_way" and (self.vessel is not None or self.passing_m is not None):
+            raise _refuse("vessel" if self.vessel is not None else "passing_m", "only decision = 'give_way' takes it")
+        if self.decision not in ("acknowledge", "give_way") and self.within_s is not None:
+            raise _refuse("within_s", "only decisions 'acknowledge' and 'give_way' take it")
         if self.decision == "act_before" and not self.criteria:
             raise _refuse("criteria", "decision = 'act_before' needs the criteria whose expectation it is about")
+        return self
+
+
+class HelicopterOptions(Section):
+    """``[helicopter]``: a helicopter's approach to own-ship's helideck, into the wind on the offshore landing
+    profile (:mod:`marinesim.offshore.helicopter`): at the hover alongside it waits for the deck's word (events'
+    ``helicopter``: permit, hold, wave_off), crosses over the deck and lands, or waves off."""
+
+    deck_point: str = Field(description="the helideck's centre: one of [vessel.points]")
+    start_s: Annotated[float, Quantity("s", ge=0.0, le=MAX_DURATION_S)] = Field(
+        0.0, description="when it is at the start of the final approach (0.75 nm out)")
+    approach_speed_kn: Annotated[float, Quantity("kn", gt=10.0, le=120.0)] = Field(
+        60.0, description="closing speed on the approach")
+    glide_angle_deg: Annotated[float, Quantity("deg", ge=2.0, le=15.0)] = Field(6.0, description="the glide path")
+    hover_height_ft: Annotated[float, Quantity("ft", gt=0.0, le=200.0)] = Field(
+        30.0, description="the hover's height above the deck")
+    deck_side: Literal["left", "right"] = Field("right", description="the side of the helicopter the deck is on "
+                                                                     "at the hover (the commander's)")
+
+
+class CraneOptions(Section):
+    """``[crane]``: own-ship's pedestal crane and its load on the wire, a spherical pendulum on an elastic wire that
+    goes slack (:mod:`marinesim.offshore.crane`), driven by her motions at the boom tip; the load may rest on and be
+    set down on a deck: one of her points (her cargo deck, heaving with her) or a fixed deck's height (a platform's).
+    Hoist and slew are orders (events' ``hoist_m_s`` and ``slew_deg_s``, the crane operator's keys)."""
+
+    pedestal_m: Point = Field(description="the top of the pedestal, [x, y, z] in the body frame (z above the water)")
+    boom_height_m: Annotated[float, Quantity("m", gt=0.0, le=200.0)] = Field(description="boom tip above the pedestal")
+    radius_m: Annotated[float, Quantity("m", ge=0.0, le=200.0)] = Field(description="outreach from the slew axis")
+    slew_deg: Annotated[float, Quantity("deg", ge=-180.0, le=180.0)] = Field(
+        0.0, description="where the boom points at the start, from the bow, positive to port")
+    hoist_speed_m_s: Annotated[float, Quantity("m/s", gt=0.0, le=5.0)] = Field(0.5, description="the fastest hoist")
+    slew_rate_deg_s: Annotated[float, Quantity("deg/s", gt=0.0, le=10.0)] = Field(2.0, description="the fastest slew")
+    max_wire_m: Annotated[float, Quantity("m", gt=0.0, le=3000.0)] = Field(description="the wire on the drum")
+    min_wire_m: Annotated[float, Quantity("m", gt=0.0, le=100.0)] = Field(
+        1.0, description="the shortest wire below the tip (hook block at the top)")
+    load_chart: Annotated[list[Annotated[list[float], Field(min_length=2, max_length=2)]],
+                          Field(min_length=1, max_length=64)] = Field(
+        description="[[radius m, safe working load t], ...], radius increasing")
+    load_t: Annotated[float, Quantity("t", gt=0.0, le=10_000.0)] = Field(description="the load on the hook")
+    wire_ea_n: Annotated[float, Quantity("N", gt=0.0, le=1e11)] = Field(
+        1.0e8, description="the wire's axial stiffness EA (a 40 mm steel wire rope about 1e8 N)")
+    wire_damping_pct: Annotated[float, Quantity("% of critical", ge=0.0, lt=100.0)] = Field(
+        5.0, description="damping of the wire's axial mode")
+    wire_m: Annotated[float, Quantity("m", gt=0.0, le=3000.0)] = Field(description="wire paid out at the start")
+    landing_point: str | None = Field(
+        None, description="the deck the load rests on and is set down on: one of [vessel.points] (it heaves)")
+    landing_deck_m: Annotated[float | None, Quantity("m", ge=-100.0, le=300.0)] = Field(
+        None, description="... or a fixed deck's height above the still water (a platform's)")
+
+    @model_validator(mode="after")
+    def _one_deck(self) -> CraneOptions:
+        if self.landing_point is not None and self.landing_deck_m is not None:
+            raise _refuse("landing_deck_m", "give landing_point or landing_deck_m, not both")
         return self
 
 
@@ -623,7 +698,7 @@ MAX_VESSELS = 16
 """Other vessels and structures in one scenario."""
 MAX_RANGE_M = 100_000.0
 """How far from own-ship's start another body may be placed (m)."""
-BODY_KINDS = ("ship", "fpso", "platform", "buoy")
+BODY_KINDS = ("ship", "fpso", "moored", "platform", "buoy")
 Position = Annotated[list[float], Quantity("m", ge=-MAX_RANGE_M, le=MAX_RANGE_M, what="metres east and north"),
                      Field(min_length=2, max_length=2)]
 
@@ -631,15 +706,16 @@ Position = Annotated[list[float], Quantity("m", ge=-MAX_RANGE_M, le=MAX_RANGE_M,
 class OtherVesselOptions(Section):
     """``[[vessels]]``: another body in the same sea. A ``ship`` sails her route (straight on at ``speed_kn``, or
     through ``waypoints_m`` with turns of ``turn_radius_m``) and responds through her own RAO table; an ``fpso``
-    lies on her turret at ``position_m``, her head to the waves; a ``platform`` stands on the sea bed (drawn from
+    lies on her turret at ``position_m``, her head to the waves; a ``moored`` body (a semisubmersible rig) lies at its
+    position on its heading and responds through its RAO table; a ``platform`` stands on the sea bed (drawn from
     its ``visual_mesh``); a ``buoy`` follows the water's surface. Positions are in metres east and north of
     own-ship's start. Bodies do not shelter one another from the waves."""
 
     name: Annotated[str, AfterValidator(_identifier), Field(max_length=40)] = Field(
         description="what the record's columns (NAME_east_m, ...), the chart and the radar call it")
-    kind: Literal[BODY_KINDS] = Field(description="ship, fpso, platform or buoy")
+    kind: Literal[BODY_KINDS] = Field(description="ship, fpso, moored, platform or buoy")
     position_m: Position = Field(description="where she starts (a ship) or lies, [east, north] from own-ship's start")
-    rao: str | None = Field(None, description="RAO file of a ship or an FPSO (as vessel.rao)")
+    rao: str | None = Field(None, description="RAO file of a ship, an FPSO or a moored body (as vessel.rao)")
     heading_deg: Annotated[float | None, Quantity("deg", ge=0.0, le=360.0, what="a compass heading")] = Field(
         None, description="compass heading of the bow (absent: a ship's first leg; an FPSO's head to the first "
                           "wave system; a platform's 0)")
@@ -657,7 +733,7 @@ class OtherVesselOptions(Section):
 
     @model_validator(mode="after")
     def _what_each_kind_takes(self) -> OtherVesselOptions:
-        moves = self.kind in ("ship", "fpso")
+        moves = self.kind in ("ship", "fpso", "moored")
         if moves and self.rao is None:
             raise _refuse("rao", f"a {self.kind} responds to the waves through her RAO file: give rao")
         if not moves and self.rao is not None:
@@ -681,16 +757,18 @@ MAX_CAMERAS = 16
 
 
 class CameraOptions(Section):
-    """``[[cameras]]``: a named viewpoint on board, moving with her six degrees of freedom: the crane operator's cab
-    looking at the lift, the helideck officer at the deck's edge. The viewer's key 4 goes through them in turn;
+    """``[[cameras]]``: a named viewpoint on board own-ship or another body (``[[vessels]]``), moving with its six
+    degrees of freedom: the crane operator's cab looking at the lift, the helideck officer at the deck's edge, the
+    FPSO's loading master watching the tanker come in. The viewer's key 4 goes through them in turn;
     ``--camera NAME`` starts on one. It looks at ``target``, or along ``look_azimuth_deg`` and
     ``look_elevation_deg``."""
 
     name: Annotated[str, Field(min_length=1, max_length=40)] = Field(description="what the viewer calls it")
-    body: Literal[CAMERA_BODIES] = Field("ownship", description="what it is mounted on: ownship, the vessel")
-    position_m: Point = Field(description="where the eye is, [x, y, z] in the body frame (x forward, y port, z up)")
+    body: Annotated[str, Field(min_length=1, max_length=40)] = Field(
+        "ownship", description="what it is mounted on: ownship, or the name of one of [[vessels]]")
+    position_m: Point = Field(description="where the eye is, [x, y, z] in its body's frame (x forward, y port, z up)")
     target: str | Point | None = Field(
-        None, description="what it looks at: a [vessel.points] name or [x, y, z] in the body frame")
+        None, description="what it looks at: [x, y, z] in its body's frame, or (on ownship) a [vessel.points] name")
     look_azimuth_deg: Annotated[float | None, Quantity("deg", ge=-180.0, le=180.0)] = Field(
         None, description="without target: where it looks, from the bow, positive to starboard (absent: 0)")
     look_elevation_deg: Annotated[float | None, Quantity("deg", ge=-89.0, le=89.0)] = Field(
@@ -729,6 +807,8 @@ class ScenarioFile(Section):
         default_factory=list, description="motion limits evaluated live and by marinesim assess")
     briefing: BriefingOptions | None = Field(None, description="the exercise's briefing and objectives")
     station: StationOptions | None = Field(None, description="station keeping: DP or moorings under the weather")
+    crane: CraneOptions | None = Field(None, description="own-ship's crane and its load on the wire")
+    helicopter: HelicopterOptions | None = Field(None, description="a helicopter approaching own-ship's helideck")
     cameras: Annotated[list[CameraOptions], Field(max_length=MAX_CAMERAS)] = Field(
         default_factory=list, description="named viewpoints on board (viewer key 4, --camera NAME)")
     vessels: Annotated[list[OtherVesselOptions], Field(max_length=MAX_VESSELS)] = Field(
@@ -752,12 +832,39 @@ class ScenarioFile(Section):
                 raise _refuse(f"vessels[{i}].name", f"{body.name!r} names an earlier vessel too")
             if body.name in self.vessel.points or body.name in CAMERA_BODIES:
                 raise _refuse(f"vessels[{i}].name", f"{body.name!r} is taken (ownship, or one of [vessel.points])")
+        if self.crane is not None:
+            if self.vessel is None:
+                raise _refuse("crane", "a crane stands on a [vessel]")
+            if self.crane.landing_point is not None and self.crane.landing_point not in self.vessel.points:
+                raise _refuse("crane.landing_point", f"{self.crane.landing_point!r} is not one of [vessel.points] "
+                                                     f"({', '.join(self.vessel.points) or 'none'})")
+        for i, event in enumerate(self.events):
+            if (event.hoist_m_s is not None or event.slew_deg_s is not None) and self.crane is None:
+                raise _refuse(f"events[{i}].{'hoist_m_s' if event.hoist_m_s is not None else 'slew_deg_s'}",
+                              "hoist and slew are orders to a crane: the scenario has no [crane]")
+        deck = self.helicopter.deck_point if self.helicopter is not None else None
+        if deck is not None and (self.vessel is None or deck not in self.vessel.points):
+            raise _refuse("helicopter.deck_point", f"{self.helicopter.deck_point!r} is not one of [vessel.points] "
+                                                   f"({', '.join(self.vessel.points) if self.vessel else 'none'})")
+        for i, event in enumerate(self.events):
+            if event.helicopter is not None and self.helicopter is None:
+                raise _refuse(f"events[{i}].helicopter", "the scenario has no [helicopter]")
+        for i, criterion in enumerate(self.criteria):
+            if criterion.quantity in CRANE_QUANTITIES and self.crane is None:
+                raise _refuse(f"criteria[{i}].quantity", f"{criterion.quantity} is a crane's load's: the scenario has "
+                                                         "no [crane]")
         names = [camera.name for camera in self.cameras]
         for i, camera in enumerate(self.cameras):
             if self.vessel is None:
                 raise _refuse(f"cameras[{i}].body", "a camera on board needs a [vessel]")
             if names.index(camera.name) != i:
                 raise _refuse(f"cameras[{i}].name", f"{camera.name!r} names an earlier camera too")
+            if camera.body not in (*CAMERA_BODIES, *bodies):
+                raise _refuse(f"cameras[{i}].body", f"{camera.body!r} is not 'ownship' or one of [[vessels]] "
+                                                    f"({', '.join(bodies) or 'none'})")
+            if isinstance(camera.target, str) and camera.body not in CAMERA_BODIES:
+                raise _refuse(f"cameras[{i}].target", f"{camera.target!r}: a point's name is own-ship's; on "
+                                                      f"{camera.body!r} give [x, y, z] in its frame or the look angles")
             if isinstance(camera.target, str) and camera.target not in self.vessel.points:
                 raise _refuse(f"cameras[{i}].target", f"{camera.target!r} is not one of [vessel.points] "
                                                       f"({', '.join(self.vessel.points) or 'none'})")
@@ -798,6 +905,8 @@ class ScenarioFile(Section):
                 raise _refuse(where, f"{criterion.quantity} filters the acceleration up to 0.63 Hz: it needs "
                                      f"run.dt_s <= {MAX_WF_DT_S:g} s, got {self.run.dt_s:g}")
         for i, objective in enumerate(self.briefing.objectives if self.briefing else []):
+            if objective.vessel is not None and objective.vessel not in [body.name for body in self.vessels]:
+                raise _refuse(f"briefing.objectives[{i}].vessel", f"{objective.vessel!r} names none of [[vessels]]")
             for name in objective.criteria:
                 if name not in names:
                     raise _refuse(f"briefing.objectives[{i}].criteria", f"{name!r} names no criterion "

@@ -24,14 +24,15 @@ from marinesim.errors import FileFormatError, MarinesimError, ScenarioError
 from marinesim.hull import Hull, VisualMesh, hydrostatics, load_hull, load_visual_mesh
 from marinesim.manoeuvring.ship import Ship
 from marinesim.manoeuvring.station import StationKeeping
+from marinesim.offshore.crane import Crane, Load
 from marinesim.offshore.route import Route
 from marinesim.resources import resource_dir
 from marinesim.scenario import examples
 from marinesim.scenario.ship_file import load_ship, ship_from_hull
 from marinesim.scenario.model import (FOOTPRINT_M, HULL_OPTIONS, VISUAL_MESH_OPTIONS, WAVE_PARAMETERS, WEATHER,
-                                      CameraOptions, CriterionOptions, EnvironmentOptions, EventOptions, OceanOptions,
-                                      OtherVesselOptions, RunOptions, ScenarioFile, SeaOptions, StationOptions,
-                                      VesselOptions, validate, wind_of)
+                                      CameraOptions, CraneOptions, CriterionOptions, EnvironmentOptions, EventOptions,
+                                      HelicopterOptions, OceanOptions, OtherVesselOptions, RunOptions, ScenarioFile,
+                                      SeaOptions, StationOptions, VesselOptions, validate, wind_of)
 from marinesim.scenario.moorings_file import load_moorings
 from marinesim.scenario.station_file import StationFile, load_station
 from marinesim.station.dp import Dp
@@ -95,6 +96,22 @@ class OtherVessel:
         return {} if self.rao_path is None else {f"{self.name} rao": self.rao_path}
 
 
+DECK_ORDERS = ("hoist_m_s", "slew_deg_s", "helicopter")
+"""The orders that go to the crane and the helicopter, not to the ship."""
+
+
+@dataclass(frozen=True)
+class Lifting:
+    """Own-ship's crane and its load (``[crane]``): the wire paid out at the start (m), the landing deck: one of her
+    points (body frame, m) or a fixed deck's height (m above the still water), or neither."""
+
+    crane: Crane
+    load: Load
+    wire_m: float
+    landing_point: tuple[float, float, float] | None = None
+    landing_deck_m: float | None = None
+
+
 @dataclass(frozen=True)
 class Event:
     """A scripted change and/or message: at ``at_s`` (s) or when ``condition`` first holds. A sea change blends in
@@ -115,13 +132,17 @@ class Event:
     fault: str | None = None              # an instructor's fault on a vessel keeping station
     set_north_m: float | None = None      # a DP's position set point, from the start
     set_east_m: float | None = None
+    hoist_m_s: float | None = None        # the crane's hoist, positive up
+    slew_deg_s: float | None = None       # the crane's slew, positive to port
+    helicopter: str | None = None         # the deck's word to the helicopter (model.HELICOPTER_DECISIONS)
 
     @property
     def orders(self) -> dict[str, float | str | bool]:
         """The orders to the ship, as :meth:`Simulation.order`'s keywords."""
         asked = {"speed_kn": None if self.speed_m_s is None else self.speed_m_s / KNOT, "course_deg": self.heading_deg,
                  "rudder_deg": self.rudder_deg, "engine": self.engine, "autopilot": self.autopilot,
-                 "set_north_m": self.set_north_m, "set_east_m": self.set_east_m, "fault": self.fault}
+                 "set_north_m": self.set_north_m, "set_east_m": self.set_east_m, "fault": self.fault,
+                 "hoist_m_s": self.hoist_m_s, "slew_deg_s": self.slew_deg_s, "helicopter": self.helicopter}
         return {key: value for key, value in asked.items() if value is not None}
 
     @property
@@ -166,6 +187,8 @@ class Objective:
     criteria: tuple[str, ...] = ()
     decision: str | None = None
     within_s: float | None = None
+    vessel: str | None = None               # give_way: the vessel to keep out of the way of
+    passing_m: float | None = None          # give_way: the least passing distance (m)
 
 
 @dataclass(frozen=True)
@@ -196,9 +219,9 @@ def briefing_paragraphs(text: str) -> list[list[str]]:
 
 @dataclass(frozen=True)
 class Camera:
-    """A named camera on board (``[[cameras]]``): the eye at ``point`` (body frame, m), looking ``look_yaw_deg`` from
-    the bow (positive to port, as the body frame turns) and ``look_pitch_deg`` above the body's horizontal, with a
-    vertical field of view ``fov_deg``."""
+    """A named camera (``[[cameras]]``) on ``body``, ``"ownship"`` or another body's name (``[[vessels]]``): the eye
+    at ``point`` (that body's frame, m), looking ``look_yaw_deg`` from its bow (positive to port, as the body frame
+    turns) and ``look_pitch_deg`` above its horizontal, with a vertical field of view ``fov_deg``."""
 
     name: str
     point: tuple[float, float, float]
@@ -206,11 +229,13 @@ class Camera:
     look_pitch_deg: float
     fov_deg: float
     target: tuple[float, float, float] | None = None
-    """What it looks at (body frame, m), where the scenario names it."""
+    """What it looks at (its body's frame, m), where the scenario names it."""
+    body: str = "ownship"
 
 
 def _camera(options: CameraOptions, points: dict[str, tuple[float, float, float]]) -> Camera:
-    """The camera ``options`` asks for, its look turned towards its target where it names one."""
+    """The camera ``options`` asks for, its look turned towards its target where it names one (a name: one of
+    own-ship's ``points``)."""
     eye, target = np.asarray(options.position_m, float), None
     if options.target is None:
         yaw, pitch = -(options.look_azimuth_deg or 0.0), options.look_elevation_deg
@@ -223,7 +248,7 @@ def _camera(options: CameraOptions, points: dict[str, tuple[float, float, float]
         yaw, pitch = math.degrees(math.atan2(look[1], look[0])), math.degrees(math.atan2(look[2],
                                                                                         math.hypot(*look[:2])))
     return Camera(options.name, tuple(float(v) for v in eye), float(yaw), float(pitch), options.fov_deg,
-                  None if target is None else tuple(float(v) for v in target))
+                  None if target is None else tuple(float(v) for v in target), options.body)
 
 
 @dataclass(frozen=True)
@@ -249,6 +274,10 @@ class Scenario:
     """The named cameras on board (``[[cameras]]``)."""
     others: tuple[OtherVessel, ...] = ()
     """The other vessels and structures (``[[vessels]]``)."""
+    lifting: Lifting | None = None
+    """Own-ship's crane and its load (``[crane]``)."""
+    helicopter: HelicopterOptions | None = None
+    """A helicopter approaching her helideck (``[helicopter]``)."""
 
     @property
     def name(self) -> str:
@@ -333,14 +362,29 @@ def build_scenario(path: Path, file: ScenarioFile) -> Scenario:
         name = FOOTPRINT if FOOTPRINT not in taken else f"{FOOTPRINT} {station.footprint_m:g} m"
         criteria += (Criterion("offset_max_m", station.footprint_m, name=name),)
     briefing = None if file.briefing is None else Briefing(
-        file.briefing.text.strip(), tuple(Objective(o.text, tuple(o.criteria), o.decision, o.within_s)
+        file.briefing.text.strip(), tuple(Objective(o.text, tuple(o.criteria), o.decision, o.within_s, o.vessel,
+                                                    o.passing_m)
                                           for o in file.briefing.objectives))
     notes = () if vessel is None else vessel.rao.warnings + _speed_notes(vessel, events)
     scripted = tuple((c.label, options.scripted) for c, options in zip(criteria, file.criteria) if options.scripted)
     cameras = tuple(_camera(c, vessel.points) for c in file.cameras)
     others = tuple(_other(path, f"vessels[{i}]", o, sea) for i, o in enumerate(file.vessels))
+    lifting = None if file.crane is None else _checked("crane", lambda: _lifting(file.crane, vessel, depth))
     return Scenario(path.resolve(), sea, file.ocean, file.run, vessel, events, criteria, briefing, file.environment,
-                    notes, station, scripted, cameras, others)
+                    notes, station, scripted, cameras, others, lifting, file.helicopter)
+
+
+def _lifting(options: CraneOptions, vessel: Vessel, depth: float) -> Lifting:
+    """The crane and its load, checked against its load chart and the water's depth."""
+    crane = Crane(pedestal_m=tuple(options.pedestal_m), boom_height_m=options.boom_height_m, radius_m=options.radius_m,
+                  slew_deg=options.slew_deg, hoist_speed_m_s=options.hoist_speed_m_s,
+                  slew_rate_deg_s=options.slew_rate_deg_s, max_wire_m=options.max_wire_m,
+                  min_wire_m=options.min_wire_m, load_chart=tuple(tuple(row) for row in options.load_chart))
+    load = Load(mass_kg=options.load_t * 1000.0, wire_ea_n=options.wire_ea_n,
+                damping_ratio=options.wire_damping_pct / 100.0)
+    crane.check(load, None if math.isinf(depth) else depth)
+    point = None if options.landing_point is None else vessel.points[options.landing_point]
+    return Lifting(crane, load, options.wire_m, point, options.landing_deck_m)
 
 
 def _other(path: Path, where: str, options: OtherVesselOptions, sea: SeaState) -> OtherVessel:
@@ -465,10 +509,12 @@ def _event(where: str, options: EventOptions, depth: float, vessel: Vessel | Non
     weather = {key: getattr(options, key) for key in WEATHER if getattr(options, key) is not None}
     event = Event(options.at_s, condition, options.ramp_s, sea, speed, options.heading_deg, options.message, weather,
                   options.rudder_deg, options.engine, options.autopilot, options.fault, options.set_north_m,
-                  options.set_east_m)
+                  options.set_east_m, options.hoist_m_s, options.slew_deg_s, options.helicopter)
     if event.orders:  # an order the ship cannot carry out is refused now, not when it comes
         state, orders = vessel.ship.start(vessel.speed_m_s, math.radians(vessel.heading_deg))
         for key, value in event.orders.items():
+            if key in DECK_ORDERS:
+                continue
             name = "heading_deg" if key == "course_deg" else key
             _checked(f"{where}.{name}", lambda: vessel.ship.order(orders, state, **{key: value}))
     return event

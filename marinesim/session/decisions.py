@@ -10,6 +10,11 @@
   given, or none needed); not met if it passes, whatever was ordered before (an order that was too little, too
   late, or that brought the passing on). A criterion without an expectation (its quantity has none, a regular
   wave) leaves the decision not judged.
+- ``give_way`` (COLREG Rules 15 and 16: the give-way vessel takes early and substantial action to keep well clear):
+  own-ship's first course or speed order given while the time to the closest point of approach (TCPA) to
+  ``vessel`` was still more than ``within_s``, and her distance to it never less than ``passing_m`` (the range in
+  the record, every :data:`PASSING_STEP_S`). Not met if she passed closer, whatever she did, or acted late; not
+  judged if the run ended before she passed her.
 
 A run stopped early judges what it can: an alarm still waiting for less than ``within_s``, or an expectation that
 has not passed its limit while no order was given, is "not judged".
@@ -19,6 +24,8 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+
+import numpy as np
 
 from marinesim.criteria.monitor import SETTLE_FRACTION
 from marinesim.scenario.schema import Objective
@@ -37,11 +44,40 @@ class Judged:
     why: str
 
 
+PASSING_STEP_S = 1.0
+"""The range to the vessel given way to is looked at this often (s): at 30 kn closing, 15 m between looks."""
+
+
 def judge(exercise: Exercise, objective: Objective) -> Judged:
     """``objective``'s decision in ``exercise`` as it ran."""
     if objective.decision == "acknowledge":
         return _acknowledged(exercise, objective)
+    if objective.decision == "give_way":
+        return _gave_way(exercise, objective)
     return _acted_before(exercise, objective)
+
+
+def _gave_way(exercise: Exercise, objective: Objective) -> Judged:
+    name, asked, early = objective.vessel, objective.passing_m, objective.within_s
+    ordered = next((e["t"] for e in exercise.journal if e["kind"] == "action"
+                    and e["action"] in ("order", "change") and STEERING & e.keys()), None)
+    times = np.arange(0.0, exercise.sim.time + 1e-9, PASSING_STEP_S)
+    rows = exercise.sim.frame(times)
+    ranges, tcpa = rows[f"{name}_range_m"], rows[f"{name}_tcpa_s"]
+    closest = int(np.argmin(ranges))
+    passed = f"passed {name} at {ranges[closest] / 1852.0:.2f} nm ({ranges[closest]:.0f} m) at {times[closest]:.0f} s"
+    if ranges[closest] < asked:
+        return Judged("not met", f"{passed}, inside the {asked:.0f} m asked")
+    if tcpa[-1] > 0.0 and ranges[-1] <= ranges[closest] + 1e-9:
+        return Judged("not judged", f"the run ended before she passed {name}")
+    if ordered is None:
+        return Judged("met", f"{passed} without a course or speed change")
+    left = float(exercise.sim.frame(np.array([ordered]))[f"{name}_tcpa_s"][0])
+    if left < early:
+        return Judged("not met", f"{passed}, but the first course or speed change came at {ordered:.0f} s, "
+                                 f"{left / 60:.1f} min before the closest point of approach ({early / 60:.0f} asked)")
+    return Judged("met", f"{passed}; the first course or speed change at {ordered:.0f} s, {left / 60:.1f} min before "
+                         "the closest point of approach")
 
 
 def _acknowledged(exercise: Exercise, objective: Objective) -> Judged:

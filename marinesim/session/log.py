@@ -40,7 +40,7 @@ from marinesim.errors import FileFormatError, MarinesimError
 from marinesim.formats import SIZE_LIMITS, check_file
 from marinesim.manoeuvring.actuators import TELEGRAPH
 from marinesim.scenario import Scenario
-from marinesim.scenario.model import MAX_DURATION_S
+from marinesim.scenario.model import HELICOPTER_DECISIONS, MAX_DURATION_S
 from marinesim.session.exercise import ACTIONS, CHANGE_KEYS, MAX_MESSAGE, MAX_STATION, WEATHER_KEYS, Exercise
 from marinesim.session.sidecar import sha256, write_table
 from marinesim.session.signing import installation_key, key_id, signature
@@ -277,7 +277,8 @@ def action_problem(entry: dict) -> str | None:
     if unknown:
         return f"{action}: unknown key {unknown[0]!r} (known: {', '.join(sorted(ACTIONS[action])) or 'none'})"
     for key, value in fields.items():
-        if key in CHANGE_KEYS | WEATHER_KEYS | {"rudder_deg", "course_deg", "set_north_m", "set_east_m"} \
+        if key in CHANGE_KEYS | WEATHER_KEYS | {"rudder_deg", "course_deg", "set_north_m", "set_east_m", "hoist_m_s",
+                                                "slew_deg_s"} \
                 and not is_a(value, float):
             return f"key {key!r}: expected a number, got {value!r}"
     if action == "order":
@@ -285,6 +286,8 @@ def action_problem(entry: dict) -> str | None:
             return f"key 'engine': expected one of {', '.join(TELEGRAPH)}, got {fields['engine']!r}"
         if "autopilot" in fields and not isinstance(fields["autopilot"], bool):
             return f"key 'autopilot': expected true or false, got {fields['autopilot']!r}"
+        if "helicopter" in fields and fields["helicopter"] not in HELICOPTER_DECISIONS:
+            return f"key 'helicopter': expected one of {', '.join(HELICOPTER_DECISIONS)}, got {fields['helicopter']!r}"
         if "fault" in fields and not (isinstance(fields["fault"], str) and 0 < len(fields["fault"]) <= 80):
             return f"key 'fault': expected a fault's name (1 to 80 characters), got {fields['fault']!r}"
     if action == "trigger" and not is_a(fields.get("index"), int):

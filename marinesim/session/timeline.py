@@ -36,13 +36,15 @@ from marinesim.constants import KNOT
 from marinesim.errors import ParameterError, require_at_least, require_positive, require_within
 from marinesim.manoeuvring.ship import STEP_S
 from marinesim.manoeuvring.voyage import SHIP_COLUMNS, Voyage
+from marinesim.offshore.crane import Lift
+from marinesim.offshore.helicopter import HelicopterApproach
 from marinesim.pose import Pose
 from marinesim.recent import Recent
 from marinesim.scenario import Scenario
 from marinesim.scenario.model import CHANGE_RAMP_S, MAX_DURATION_S, MAX_SPEED_KN, WEATHER, EnvironmentOptions
 from marinesim.sea.ocean import Components, smoothstep
 from marinesim.sea.seastate import SeaState, scaled_sea
-from marinesim.session import others
+from marinesim.session import helideck, lifting, others
 from marinesim.session.assembly import Assembly
 from marinesim.session.station import StationWorld, station_columns, station_record
 from marinesim.station.vessel import Station
@@ -186,6 +188,16 @@ class Simulation:
         self.bodies = [others.Body(other, self.components) for other in scenario.others]
         """The other vessels and structures (:mod:`marinesim.session.others`)."""
         self._last_others: tuple[float, int, list[Pose]] = (math.nan, 0, [])
+        self._last_motion: tuple[tuple, tuple[ShipPath, np.ndarray], int] | None = None
+        self.lift: Lift | None = None
+        """Own-ship's crane and its load (:mod:`marinesim.session.lifting`), with a ``[crane]``."""
+        if scenario.lifting is not None:
+            self.lift = lifting.lift(scenario.lifting, self._motion, scenario.ocean.depth_m)
+        self.helicopter: HelicopterApproach | None = None
+        """A helicopter approaching her helideck (:mod:`marinesim.session.helideck`), with a ``[helicopter]``."""
+        if scenario.helicopter is not None:
+            self.helicopter = helideck.approach(scenario.helicopter, self.vessel.points[scenario.helicopter.deck_point],
+                                                self._motion, scenario.wind[1])
         if self.wake_on:
             self._request_wake(self.vessel.speed_m_s, wait=True)
 
@@ -262,18 +274,35 @@ class Simulation:
 
     def order(self, *, rudder_deg: float | None = None, engine: str | None = None, speed_kn: float | None = None,
               autopilot: bool | None = None, course_deg: float | None = None, set_north_m: float | None = None,
-              set_east_m: float | None = None, fault: str | None = None, at: float | None = None) -> None:
+              set_east_m: float | None = None, fault: str | None = None, hoist_m_s: float | None = None,
+              slew_deg_s: float | None = None, helicopter: str | None = None, at: float | None = None) -> None:
         """Orders to the ship from ``at`` (s; default now): the rudder by hand (deg, positive to starboard; the
         autopilot off), a telegraph order or the engine set for a speed (kn), the autopilot on (on the present
         heading) or off (the rudder held where it stands), or a course (compass deg) for the autopilot (a DP's
         heading); a DP's position set point (m north and east of her start) or an instructor's ``fault`` on a vessel
-        keeping station (:mod:`marinesim.station.vessel`)."""
+        keeping station (:mod:`marinesim.station.vessel`); to her crane, hoist (m/s, positive up, 0 stops) and slew
+        (deg/s, positive to port, 0 stops); to the helicopter, the deck's word (permit, hold, wave_off)."""
         if self.vessel is None:
             raise ParameterError("the scenario has no vessel: no orders")
         t = self.time if at is None else require_at_least("time of an order (s)", at, self.time)
+        if (hoist_m_s is not None or slew_deg_s is not None) and self.lift is None:
+            raise ParameterError("the scenario has no [crane]: no hoist or slew")
+        if helicopter is not None and self.helicopter is None:
+            raise ParameterError("the scenario has no [helicopter]: no word to give it")
         asked = {"rudder_deg": rudder_deg, "engine": engine, "speed_kn": speed_kn, "autopilot": autopilot,
                  "course_deg": course_deg, "set_north_m": set_north_m, "set_east_m": set_east_m, "fault": fault}
-        self.voyage.order(t, **{key: value for key, value in asked.items() if value is not None})
+        asked = {key: value for key, value in asked.items() if value is not None}
+        if asked:
+            self.voyage.order(t, **asked)
+            if self.lift is not None:  # her motion changes from the step the order acts at
+                self.lift.changed(self.voyage.step_of(t) * STEP_S)
+        if hoist_m_s is not None:
+            self.lift.hoist(t, hoist_m_s)
+        if slew_deg_s is not None:
+            self.lift.slew(t, slew_deg_s)
+        if helicopter is not None:
+            {"permit": self.helicopter.permit, "hold": self.helicopter.hold,
+             "wave_off": self.helicopter.wave_off}[helicopter](t)
         self.version += 1
 
     @property
@@ -297,6 +326,8 @@ class Simulation:
             start = self.voyage.step_of(self.time) * STEP_S
             self.station.weather.change(start, ramp, speed=keys["wind_speed_m_s"])
             self.voyage.changed(start)
+            if self.lift is not None:
+                self.lift.changed(start)
 
     def _start(self, change: _Change) -> None:
         t, last = change.ready_at, self.legs[-1]
@@ -305,6 +336,8 @@ class Simulation:
         self.legs.append(Leg(t, change.ramp_s, change.sea, tuple(before.items()), self._new_set(t + change.ramp_s)))
         if self.station is not None:  # the waves' drift and motion change: she is stepped again from here
             self.voyage.changed(t)
+        if self.lift is not None:
+            self.lift.changed(t)
         self.version += 1
 
     def _new_set(self, t: float) -> int:
@@ -361,6 +394,16 @@ class Simulation:
         self._last_pose = (t, self.version, pose)
         return pose
 
+    def _motion(self, times: np.ndarray) -> tuple[ShipPath, np.ndarray]:
+        """Own-ship's track and linear outputs at ``times`` (s; a grid through the block product where they are one),
+        the last asked for kept: the crane's tip and its landing deck ask for the same block of times."""
+        key = (times.size, float(times[0]), float(times[-1])) if times.size else (0,)
+        if self._last_motion is None or self._last_motion[0] != key or self._last_motion[2] != self.version:
+            steps = np.diff(times)
+            dt = float(steps[0]) if times.size > 2 and np.all(steps == steps[0]) else None
+            self._last_motion = key, (self.voyage.path(times), self._linear(times, dt)), self.version
+        return self._last_motion[1]
+
     def other_poses(self, t: float | None = None) -> list[Pose]:
         """Each other body's track point, heading and 6-DOF motion at ``t`` (default: now), as :attr:`bodies`."""
         t = self.time if t is None else t
@@ -398,6 +441,10 @@ class Simulation:
         out = self.assembly.response.frame(times, linear) | self.voyage.record(times, linear[:, 5])
         if self.station is not None:
             out |= station_record(self.voyage.ship, self.voyage, times)
+        if self.lift is not None:
+            out |= lifting.record(self.lift, times)
+        if self.helicopter is not None:
+            out |= helideck.record(self.helicopter, times)
         if self.bodies:
             out |= others.record(self.bodies, [self._blended(body.along, others.WIDTH, times, dt)
                                                for body in self.bodies], self.voyage.path(times))
@@ -607,10 +654,14 @@ def _linear(response: Response, times: np.ndarray, dt: float | None) -> np.ndarr
 def record_columns(scenario: Scenario) -> list[str]:
     """The record's columns: the motions' (:func:`~marinesim.vessel.response.motion_columns`), then the ship's
     (:data:`~marinesim.manoeuvring.voyage.SHIP_COLUMNS`), then a station-keeping vessel's
-    (:func:`~marinesim.session.station.station_columns`), then the other bodies' (:func:`.others.columns`)."""
+    (:func:`~marinesim.session.station.station_columns`), the crane's (:func:`.lifting.columns`), the helicopter's
+    (:data:`.helideck.COLUMNS`), then the other bodies' (:func:`.others.columns`)."""
     vessel = scenario.vessel
     station = station_columns(vessel.ship) if isinstance(vessel.ship, Station) else []
-    return motion_columns(vessel.points) + list(SHIP_COLUMNS) + station + others.columns(scenario.others)
+    crane = lifting.columns() if scenario.lifting is not None else []
+    helicopter = list(helideck.COLUMNS) if scenario.helicopter is not None else []
+    return (motion_columns(vessel.points) + list(SHIP_COLUMNS) + station + crane + helicopter
+            + others.columns(scenario.others))
 
 
 def _call(function):

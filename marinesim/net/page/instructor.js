@@ -3,6 +3,8 @@
  * Talks to `marinesim serve` over one WebSocket (JSON, see the serve protocol): sends "hello", then actions and
  * controls; receives "welcome", "state" (several a second) and "error". Chart coordinates are metres north/east of
  * the start; headings are compass degrees clockwise from north; rate of turn and rudder are positive to starboard.
+ * The other bodies (state.others) are drawn at the chart's scale, which follows own-ship, and listed with own-ship's
+ * range, bearing, CPA and TCPA to each as the server's record gives them.
  * Every string from the server reaches the DOM through textContent (never innerHTML).
  */
 (function () {
@@ -17,6 +19,12 @@
   const BACKOFF_MAX_MS = 10000;
   const MIN_SPAN_M = 800;          // the chart never zooms in closer than this across
   const NM = 1852;                 // metres per nautical mile
+  const VECTOR_S = 360;            // another ship's vector: where she will be in 6 minutes, as radars draw it
+  const EDGE_PX = 12;              // a body closer than this to the chart's edge, or beyond it, is marked at the edge
+  const MARK_PX = 22;              // ... this far inside the edge (its ring inside the chart)
+  const OTHER_COLOUR = "#8fd0c0";
+  const DANGER_COLOUR = "#e2574c";
+  const NEAREST_COLOUR = "#eef4fa";
 
   const token = new URLSearchParams(window.location.search).get("token") || "";
 
@@ -46,6 +54,8 @@
     scaleTouched: 0,       // performance.now() of the instructor's last scale change
     alarmsKey: "",
     lagKey: "",
+    others: [],            // state.others: the other bodies
+    othersKey: "",         // their names and kinds, as the table's rows were built
   };
 
   // ---------------------------------------------------------------- formatting
@@ -81,6 +91,13 @@
     let d = Math.round(((v % 360) + 360) % 360);
     if (d === 360) d = 0;
     return String(d).padStart(3, "0") + "°";
+  }
+
+  /** Seconds as [-]m:ss. */
+  function minSec(v) {
+    if (!isNum(v)) return "–";
+    const total = Math.round(Math.abs(v));
+    return (v < 0 && total > 0 ? "-" : "") + Math.floor(total / 60) + ":" + String(total % 60).padStart(2, "0");
   }
 
   /** A signed starboard-positive quantity as "12 S" / "12 P" / "0". */
@@ -768,8 +785,47 @@
     updateAlarms(s);
     updateEvents(s);
     updateStations(s);
+    updateOthers(s);
     setConnection("up");
     scheduleDraw();
+  }
+
+  // ---------------------------------------------------------------- other bodies
+  function updateOthers(s) {
+    const list = Array.isArray(s.others) ? s.others.filter((o) => o && typeof o === "object") : [];
+    model.others = list;
+    const key = JSON.stringify(list.map((o) => [o.name, o.kind]));
+    const body = $("others");
+    if (key !== model.othersKey) {
+      model.othersKey = key;
+      body.replaceChildren();
+      list.forEach(function (o, i) {
+        const tr = el("tr", "other");
+        tr.id = "other-" + i;
+        tr.dataset.name = String(o.name);
+        tr.appendChild(el("td", "other-name", o.name));
+        tr.appendChild(el("td", "other-kind", o.kind));
+        for (const what of ["range", "bearing", "cpa", "tcpa"]) {
+          const td = el("td", "num", "–");
+          td.id = "other-" + what + "-" + i;
+          tr.appendChild(td);
+        }
+        const chart = el("td", "other-chart", "");
+        chart.id = "other-chart-" + i;
+        tr.appendChild(chart);
+        body.appendChild(tr);
+      });
+      $("others-panel").hidden = list.length === 0;
+    }
+    list.forEach(function (o, i) {
+      setText("other-range-" + i, isNum(o.range_m) ? fixed(o.range_m / NM, 2) : "–");
+      setText("other-bearing-" + i, compass(o.bearing_deg));
+      setText("other-cpa-" + i, isNum(o.cpa_m) ? fixed(o.cpa_m / NM, 2) : "–");
+      setText("other-tcpa-" + i, minSec(o.tcpa_s));
+      const cls = "other" + (o.danger === true ? " other-danger" : "") + (o.nearest === true ? " other-nearest" : "");
+      const tr = $("other-" + i);
+      if (tr.className !== cls) tr.className = cls;
+    });
   }
 
   function updateScaleSelect(scale) {
@@ -900,16 +956,110 @@
       });
     }
 
+    const vectors = drawOthers(ctx, X, Y, w, h, mpp);
     if (ship) drawShip(ctx, X(ship.east_m), Y(ship.north_m), ship.heading_deg);
+    canvas.dataset.view = JSON.stringify({centre_east_m: ce, centre_north_m: cn, m_per_px: mpp, width_px: w,
+      height_px: h});
 
     drawScaleBar(ctx, h, mpp, unit, useNM);
     drawNorthArrow(ctx, w);
-    if (predicted.length) {
-      ctx.fillStyle = "#7f90a1";
+    ctx.fillStyle = "#7f90a1";
+    ctx.font = "11px sans-serif";
+    ctx.textAlign = "right";
+    if (predicted.length) ctx.fillText("dashed: predicted 3 min (dot per minute)", w - 12, h - 12);
+    if (vectors) ctx.fillText("other ships: 6 min vectors", w - 12, h - 27);
+  }
+
+  /** The other bodies at the chart's scale: a ship as a small hull outline on her heading with her 6-minute
+   * vector, an FPSO or a platform as a square, a buoy as a circle, each named; red when dangerous, ringed when the
+   * nearest CPA ahead. One beyond the chart's edge is marked at the edge, towards it, and said so in the table.
+   * Returns whether a ship's vector was drawn. */
+  function drawOthers(ctx, X, Y, w, h, mpp) {
+    let vectors = false;
+    model.others.forEach(function (o, i) {
+      const cell = $("other-chart-" + i);
+      if (!isNum(o.east_m) || !isNum(o.north_m)) {
+        if (cell) setText(cell.id, "");
+        return;
+      }
+      const x = X(o.east_m), y = Y(o.north_m);
+      const inside = x >= EDGE_PX && x <= w - EDGE_PX && y >= EDGE_PX && y <= h - EDGE_PX;
+      if (cell) setText(cell.id, inside ? "" : "off chart");
+      const colour = o.danger === true ? DANGER_COLOUR : OTHER_COLOUR;
+      ctx.save();
+      ctx.strokeStyle = colour;
+      ctx.fillStyle = colour;
+      ctx.lineWidth = 1.5;
+      ctx.setLineDash([]);
       ctx.font = "11px sans-serif";
-      ctx.textAlign = "right";
-      ctx.fillText("dashed: predicted 3 min (dot per minute)", w - 12, h - 12);
+      let at = [x, y];
+      if (!inside) {
+        at = drawEdgeMark(ctx, x, y, w, h);
+      } else if (o.kind === "ship") {
+        const vector = isNum(o.speed_kn) ? o.speed_kn * NM / 3600 * VECTOR_S / mpp : 0;
+        drawOtherShip(ctx, x, y, o.heading_deg, vector);
+        vectors = vectors || vector > 0;
+      } else if (o.kind === "buoy") {
+        ctx.beginPath();
+        ctx.arc(x, y, 4.5, 0, 2 * Math.PI);
+        ctx.stroke();
+      } else {
+        ctx.strokeRect(x - 6, y - 6, 12, 12);
+      }
+      if (o.nearest === true) {
+        ctx.strokeStyle = NEAREST_COLOUR;
+        ctx.lineWidth = 1;
+        ctx.beginPath();
+        ctx.arc(at[0], at[1], 17, 0, 2 * Math.PI);
+        ctx.stroke();
+      }
+      const right = at[0] < w - 120;
+      ctx.textAlign = right ? "left" : "right";
+      ctx.fillText(String(o.name), at[0] + (right ? 20 : -20), at[1] + (at[1] < 20 ? 14 : 4));
+      ctx.restore();
+    });
+    return vectors;
+  }
+
+  /** Another ship at (x, y) px heading ``heading`` (compass deg): a hull outline 22 px long and her vector,
+   * ``vector`` px from her centre along her heading. */
+  function drawOtherShip(ctx, x, y, heading, vector) {
+    ctx.save();
+    ctx.translate(x, y);
+    ctx.rotate((isNum(heading) ? heading : 0) * Math.PI / 180);
+    if (vector > 11) {
+      ctx.beginPath();
+      ctx.moveTo(0, -11);
+      ctx.lineTo(0, -vector);
+      ctx.stroke();
     }
+    ctx.beginPath();
+    ctx.moveTo(0, -11);
+    ctx.quadraticCurveTo(4.5, -6, 4, -1);
+    ctx.lineTo(4, 10);
+    ctx.lineTo(-4, 10);
+    ctx.lineTo(-4, -1);
+    ctx.quadraticCurveTo(-4.5, -6, 0, -11);
+    ctx.closePath();
+    ctx.stroke();
+    ctx.restore();
+  }
+
+  /** A triangle on the chart's edge pointing at (x, y) px beyond it, on the line from the chart's centre; returns
+   * where it is drawn. */
+  function drawEdgeMark(ctx, x, y, w, h) {
+    const dx = x - w / 2, dy = y - h / 2;
+    const reach = Math.min(Math.abs(dx) > 0 ? (w / 2 - MARK_PX) / Math.abs(dx) : Infinity,
+      Math.abs(dy) > 0 ? (h / 2 - MARK_PX) / Math.abs(dy) : Infinity);
+    const px = w / 2 + dx * reach, py = h / 2 + dy * reach;
+    const a = Math.atan2(dy, dx);
+    ctx.beginPath();
+    ctx.moveTo(px + 8 * Math.cos(a), py + 8 * Math.sin(a));
+    ctx.lineTo(px + 6 * Math.cos(a + 2.4), py + 6 * Math.sin(a + 2.4));
+    ctx.lineTo(px + 6 * Math.cos(a - 2.4), py + 6 * Math.sin(a - 2.4));
+    ctx.closePath();
+    ctx.fill();
+    return [px, py];
   }
 
   function drawGrid(ctx, w, h, mpp, cn, ce, unit, useNM) {

@@ -53,6 +53,11 @@ class VesselLayer:
             self.vao = ctx.vertex_array(self.program.gl, [
                 (self._vbo, "3f 3f 3f", "in_position", "in_normal", "in_colour")])
 
+    def replace(self, mesh: VesselMesh) -> None:
+        """Draw ``mesh`` from now on: as many triangles as the mesh it was made with (a wire moved each frame)."""
+        self.mesh = mesh
+        self._vbo.write(mesh.vertex_data().tobytes())
+
     def draw(self, view: View, pose: Pose) -> None:
         """The mesh in ``pose`` (body -> E frame)."""
         if self.vao is None or not self.shown:

@@ -1,0 +1,61 @@
+"""The crossing situation (COLREG Rule 15): the give-way decision judged from the record by the closest point of
+approach, on the shipped exercise."""
+
+import numpy as np
+import pytest
+
+from marinesim.scenario import load_scenario
+from marinesim.session.decisions import judge
+from marinesim.session.exercise import Exercise, run_exercise
+from marinesim.session.timeline import Simulation
+
+NM = 1852.0
+
+
+@pytest.fixture(scope="module")
+def crossing():
+    return load_scenario("crossing_situation")
+
+
+def give_way(scenario):
+    return next(o for o in scenario.briefing.objectives if o.decision == "give_way")
+
+
+def test_standing_on_is_a_close_quarters_situation(crossing):
+    """Nobody acts: the tanker crosses within a cable of her (CPA 112 m from the start), and the decision is not met,
+    naming the passing distance. What would be wrong: a decision met without the passing distance asked."""
+    exercise = run_exercise(crossing)
+    judged = judge(exercise, give_way(crossing))
+    assert judged.verdict == "not met" and "inside the 1852 m asked" in judged.why, judged
+    passed = float(judged.why.split("(")[1].split(" m)")[0])
+    assert passed < 0.1 * NM
+
+
+def run_with(scenario, at_s: float, **order) -> Exercise:
+    def drive(exercise: Exercise) -> None:
+        exercise.advance_to(at_s)
+        exercise.act("order", **order)
+        exercise.run()
+    return run_exercise(scenario, drive=drive)
+
+
+def test_a_bold_early_turn_to_starboard_gives_way(crossing):
+    """A turn to 070 deg 2 minutes in (13 minutes before the CPA) passes astern of the tanker at more than a mile:
+    met; the same turn 13 minutes in is too late (inside 6 minutes) and passes too close: not met."""
+    early = judge(run_with(crossing, 120.0, course_deg=70.0), give_way(crossing))
+    assert early.verdict == "met", early
+    late = judge(run_with(crossing, 780.0, course_deg=70.0), give_way(crossing))
+    assert late.verdict == "not met", late
+
+
+def test_the_range_the_decision_reads_is_the_closed_form_before_anyone_acts(crossing):
+    """Two straight tracks (16 kn north, 12 kn west from 5560 m east, 7600 m north): the smallest range over the run
+    equals the closed-form CPA, at the closed-form TCPA, within the 1 s the decision looks at."""
+    v = np.array([-12.0, -16.0]) * NM / 3600.0
+    r = np.array([5560.0, 7600.0])
+    tcpa = -(r @ v) / (v @ v)
+    with Simulation(crossing, wake=False) as sim:
+        times = np.arange(0.0, 1200.0, 1.0)
+        ranges = sim.frame(times)["tanker_range_m"]
+    assert times[np.argmin(ranges)] == pytest.approx(tcpa, abs=1.0)
+    assert ranges.min() == pytest.approx(np.linalg.norm(r + v * tcpa), abs=12.0 * NM / 3600.0 * 1.0)
