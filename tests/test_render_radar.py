@@ -133,7 +133,9 @@ def test_a_frame_without_a_radar_has_none_of_it(ctx, huds):
     contacts = [Contact("TUG", np.array([NM, 0.0]), np.array([-3.0, 0.0]), 270.0)]
     radar = Radar(45.0, np.array([3.0, 3.0]), np.array([[-500.0, -600.0], [0.0, 0.0]]), 2 * NM, tuple(contacts))
     bare = render(ctx, hud, SMALL)
-    assert (bare == np.round(np.array(BACKGROUND) * 255)).all()
+    # one level either way: GL lets an implementation round a float colour to 8 bits either way (NVIDIA and Mesa do)
+    assert (np.abs(bare.astype(int) - np.round(np.array(BACKGROUND) * 255)) <= 1).all()
+    assert len(np.unique(bare.reshape(-1, bare.shape[-1]), axis=0)) == 1
     drawn = np.nonzero(np.abs(render(ctx, hud, SMALL, radar=radar).astype(int) - bare).sum(axis=2) > 0)
     x, y, side = hud.radar_rect(SMALL)
     assert x + side == SMALL[0] - hud.margin and y + side == SMALL[1] - hud.margin

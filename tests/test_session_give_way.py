@@ -10,6 +10,8 @@ from marinesim.session.exercise import Exercise, run_exercise
 from marinesim.session.timeline import Simulation
 
 NM = 1852.0
+PAST_S = 1000.0
+"""Long enough to be past the closest point of approach (906 s standing on)."""
 
 
 @pytest.fixture(scope="module")
@@ -22,9 +24,9 @@ def give_way(scenario):
 
 
 def test_standing_on_is_a_close_quarters_situation(crossing):
-    """Nobody acts: the tanker crosses within a cable of her (CPA 112 m from the start), and the decision is not met,
+    """Nobody acts: the tanker crosses within a cable of her (CPA 51 m from the start), and the decision is not met,
     naming the passing distance. What would be wrong: a decision met without the passing distance asked."""
-    exercise = run_exercise(crossing)
+    exercise = run_exercise(crossing, duration_s=PAST_S)
     judged = judge(exercise, give_way(crossing))
     assert judged.verdict == "not met" and "inside the 1852 m asked" in judged.why, judged
     passed = float(judged.why.split("(")[1].split(" m)")[0])
@@ -36,12 +38,12 @@ def run_with(scenario, at_s: float, **order) -> Exercise:
         exercise.advance_to(at_s)
         exercise.act("order", **order)
         exercise.run()
-    return run_exercise(scenario, drive=drive)
+    return run_exercise(scenario, duration_s=PAST_S, drive=drive)
 
 
 def test_a_bold_early_turn_to_starboard_gives_way(crossing):
-    """A turn to 070 deg 2 minutes in (13 minutes before the CPA) passes astern of the tanker at more than a mile:
-    met; the same turn 13 minutes in is too late (inside 6 minutes) and passes too close: not met."""
+    """A turn to 070 deg 2 minutes in (13 minutes before the CPA) passes astern of the tanker at 1.5 nm: met; the same
+    turn 13 minutes in is too late (2 minutes before the CPA) and passes at 0.1 nm: not met."""
     early = judge(run_with(crossing, 120.0, course_deg=70.0), give_way(crossing))
     assert early.verdict == "met", early
     late = judge(run_with(crossing, 780.0, course_deg=70.0), give_way(crossing))
@@ -49,10 +51,10 @@ def test_a_bold_early_turn_to_starboard_gives_way(crossing):
 
 
 def test_the_range_the_decision_reads_is_the_closed_form_before_anyone_acts(crossing):
-    """Two straight tracks (16 kn north, 12 kn west from 5560 m east, 7600 m north): the smallest range over the run
+    """Two straight tracks (10 kn north, 12 kn west from 5560 m east, 4700 m north): the smallest range over the run
     equals the closed-form CPA, at the closed-form TCPA, within the 1 s the decision looks at."""
-    v = np.array([-12.0, -16.0]) * NM / 3600.0
-    r = np.array([5560.0, 7600.0])
+    v = np.array([-12.0, -10.0]) * NM / 3600.0
+    r = np.array([5560.0, 4700.0])
     tcpa = -(r @ v) / (v @ v)
     with Simulation(crossing, wake=False) as sim:
         times = np.arange(0.0, 1200.0, 1.0)

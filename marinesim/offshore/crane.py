@@ -135,16 +135,20 @@ class Crane:
 @dataclass(frozen=True, kw_only=True)
 class Load:
     """A load of ``mass_kg`` on a wire of axial stiffness ``wire_ea_n`` (EA, N; the default a 40 mm steel wire rope)
-    whose axial mode has the damping ratio ``damping_ratio``."""
+    whose axial mode has the damping ratio ``damping_ratio``; the deck crew's tag lines damp its swing with the ratio
+    ``swing_damping_ratio`` of the pendulum's mode: a horizontal force ``-2 zeta m sqrt(g / L) (v - v_tip)`` against
+    its horizontal velocity relative to the boom tip (the lines are held from the vessel)."""
 
     mass_kg: float
     wire_ea_n: float = 1.0e8
     damping_ratio: float = 0.05
+    swing_damping_ratio: float = 0.0
 
     def __post_init__(self) -> None:
         require_positive("load mass_kg", self.mass_kg)
         require_positive("load wire_ea_n", self.wire_ea_n)
         require_within("load damping_ratio", self.damping_ratio, 0.0, 1.0)
+        require_within("load swing_damping_ratio", self.swing_damping_ratio, 0.0, 1.0)
 
 
 class _Program:
@@ -320,6 +324,7 @@ class Lift:
         predicted at the step's end. With ``h`` 0 the one row gives the acceleration at ``state``."""
         x, y, z, vx, vy, vz, ax, ay, az = state
         inverse_mass, kc, cc, g = 1.0 / self.load.mass_kg, self.contact_stiffness_n_m, self.contact_damping_n_s_m, G
+        swing = 2.0 * self.load.swing_damping_ratio
         half = 0.5 * h
         out = []
         for tx, ty, tz, tvx, tvy, tvz, length, length_rate, stiffness, damping, deck, deck_rate in forcing:
@@ -341,6 +346,10 @@ class Lift:
                 if tension > 0.0:
                     f = -tension * inverse_mass / distance
                     ax, ay, az = f * dx, f * dy, az + f * dz
+            if swing:
+                c = swing * math.sqrt(g / length)
+                ax -= c * (px - tvx)
+                ay -= c * (py - tvy)
             penetration = deck - z
             if penetration > 0.0:
                 normal = kc * penetration + cc * (deck_rate - pz)

@@ -67,11 +67,11 @@ MAX_CURRENT_M_S = 5.0
 MIN_VISIBILITY_M, MAX_VISIBILITY_M = 50.0, 200_000.0
 """The range of the meteorological visibility (m): thick fog to the clearest air."""
 NAV_LIGHTS = ("underway", "restricted", "anchored", "none")
-HELICOPTER_DECISIONS = ("permit", "hold", "wave_off")
-"""What the deck tells a helicopter (:mod:`marinesim.offshore.helicopter`)."""
 """The navigation lights a vessel shows (COLREG): making way (masthead lights, sidelights, sternlight), restricted
 in her ability to manoeuvre (those and red-white-red all round), at anchor (all-round white forward and aft), or
 none drawn."""
+HELICOPTER_DECISIONS = ("permit", "hold", "wave_off")
+"""What the deck tells a helicopter (:mod:`marinesim.offshore.helicopter`)."""
 WEATHER = ("visibility_m", "cloud_cover_oktas", "wind_speed_m_s", "rain_mm_h")
 """The ``[environment]`` keys an event or the instructor may change during a run."""
 ORDERS = ("speed_kn", "heading_deg", "rudder_deg", "engine", "autopilot", "set_north_m", "set_east_m", "fault",
@@ -656,6 +656,8 @@ class CraneOptions(Section):
         1.0e8, description="the wire's axial stiffness EA (a 40 mm steel wire rope about 1e8 N)")
     wire_damping_pct: Annotated[float, Quantity("% of critical", ge=0.0, lt=100.0)] = Field(
         5.0, description="damping of the wire's axial mode")
+    tag_lines_pct: Annotated[float, Quantity("% of critical", ge=0.0, lt=100.0)] = Field(
+        0.0, description="damping of the load's swing by the deck crew's tag lines (0: none, the load swings free)")
     wire_m: Annotated[float, Quantity("m", gt=0.0, le=3000.0)] = Field(description="wire paid out at the start")
     landing_point: str | None = Field(
         None, description="the deck the load rests on and is set down on: one of [vessel.points] (it heaves)")

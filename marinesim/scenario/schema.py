@@ -381,7 +381,7 @@ def _lifting(options: CraneOptions, vessel: Vessel, depth: float) -> Lifting:
                   slew_rate_deg_s=options.slew_rate_deg_s, max_wire_m=options.max_wire_m,
                   min_wire_m=options.min_wire_m, load_chart=tuple(tuple(row) for row in options.load_chart))
     load = Load(mass_kg=options.load_t * 1000.0, wire_ea_n=options.wire_ea_n,
-                damping_ratio=options.wire_damping_pct / 100.0)
+                damping_ratio=options.wire_damping_pct / 100.0, swing_damping_ratio=options.tag_lines_pct / 100.0)
     crane.check(load, None if math.isinf(depth) else depth)
     point = None if options.landing_point is None else vessel.points[options.landing_point]
     return Lifting(crane, load, options.wire_m, point, options.landing_deck_m)

@@ -77,6 +77,9 @@ def columns() -> list[str]:
 
 
 def record(lifted: Lift, times: np.ndarray) -> dict[str, np.ndarray]:
-    """The lift's columns at ``times`` (s)."""
+    """The lift's columns at ``times`` (s); the swing is the wire's angle from the vertical while the load hangs,
+    0 while it is on the deck (the wire slack over a load at rest says nothing of a swing)."""
     sample = lifted.sample(times)
-    return {f"crane_{name}": np.asarray(sample[name], float) for name in COLUMNS}
+    out = {f"crane_{name}": np.asarray(sample[name], float) for name in COLUMNS}
+    out["crane_swing_deg"] = np.where(sample["landed"], 0.0, out["crane_swing_deg"])
+    return out
