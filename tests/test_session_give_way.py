@@ -1,6 +1,8 @@
 """The crossing situation (COLREG Rule 15): the give-way decision judged from the record by the closest point of
 approach, on the shipped exercise."""
 
+import dataclasses
+
 import numpy as np
 import pytest
 
@@ -48,6 +50,23 @@ def test_a_bold_early_turn_to_starboard_gives_way(crossing):
     assert early.verdict == "met", early
     late = judge(run_with(crossing, 780.0, course_deg=70.0), give_way(crossing))
     assert late.verdict == "not met", late
+
+
+def test_a_nudge_is_no_action(crossing):
+    """The autopilot's course nudged 1 deg at 60 s, then a turn to 090 at 560 s that passes her at 0.57 nm (1054 m):
+    asked for 1000 m, the passing is enough but the action (her heading 10 deg off, Rule 8: readily apparent) came
+    under 6 minutes before the closest point of approach: not met. Judged by the first order instead, the nudge would
+    have passed for early action."""
+    def drive(exercise: Exercise) -> None:
+        exercise.advance_to(60.0)
+        exercise.act("order", course_deg=1.0)
+        exercise.advance_to(560.0)
+        exercise.act("order", course_deg=90.0)
+        exercise.run()
+    objective = dataclasses.replace(give_way(crossing), passing_m=1000.0)
+    judged = judge(run_exercise(crossing, duration_s=PAST_S, drive=drive), objective)
+    assert judged.verdict == "not met" and "crossing, give way" in judged.why, judged
+    assert "her heading 10 deg off only at 5" in judged.why, judged
 
 
 def test_the_range_the_decision_reads_is_the_closed_form_before_anyone_acts(crossing):

@@ -82,6 +82,24 @@ def test_points_on_board_move_as_the_pose_carries_them():
     np.testing.assert_allclose(velocity, (ahead - behind) / (2 * h), atol=1e-5)
 
 
+def test_her_motions_on_the_grid_are_hers_at_any_time(tmp_path):
+    """What the crane and the helicopter read of her motions (computed every 1/16 s, interpolated to the load's steps)
+    is her response at those times, computed directly: displacements and velocities within 2e-5 of their size but for
+    the grid step (1/4 s) around the ends of a sea change's ramp, where her accelerations jump (there 1e-3)."""
+    from marinesim.session.lifting import on_grid
+
+    scenario = load_scenario(write(tmp_path, SCENARIO))
+    with Simulation(scenario, wake=False) as sim:
+        sim.change(hs_factor=1.5, ramp_s=10.0, at=5.0)
+        sim.advance_to(30.0)
+        times = np.sort(np.random.default_rng(1).uniform(0.0, 30.0, 400))
+        _, interpolated = on_grid(sim.voyage.path, sim._motion_grid)(times)
+        exact = sim._linear(times)[:, :12]
+    error = np.abs(interpolated - exact) / np.abs(exact).max(axis=0)
+    kinks = (np.abs(times - 5.0) < 0.25) | (np.abs(times - 15.0) < 0.25)
+    assert error[~kinks].max() < 2e-5 and error.max() < 1e-3
+
+
 @pytest.fixture(scope="module")
 def crane(tmp_path_factory):
     return load_scenario(write(tmp_path_factory.mktemp("crane"), SCENARIO + CRANE))
@@ -124,10 +142,10 @@ def test_the_helicopter_holds_alongside_then_lands_on_the_heaving_deck(tmp_path)
         sim.order(helicopter="permit", at=arrival + 20.0)
         times = np.array([arrival + 10.0, arrival + 19.0, arrival + 60.0, arrival + 80.0])
         rows = sim.frame(times)
-        path, linear = sim._motion(times)
+        path, linear = sim.voyage.path(times), sim._linear(times)
     assert rows["helicopter_above_deck_m"][:2] == pytest.approx([30 * 0.3048] * 2, abs=0.6)
     deck = points_in_earth(path, linear, np.broadcast_to([20.0, 0.0, 12.0], (4, 3)))[0]
-    np.testing.assert_allclose(rows["helicopter_z_m"][2:], deck[2:, 2], atol=1e-9)
+    np.testing.assert_allclose(rows["helicopter_z_m"][2:], deck[2:, 2], atol=1e-5)  # her motions interpolated
     np.testing.assert_allclose(rows["helicopter_east_m"][2:], path.x[2:] + 20.0 * np.cos(path.heading[2:]),
                                atol=1e-6)
 

@@ -204,15 +204,8 @@ class Lift:
 
     def __init__(self, crane: Crane, load: Load, wire_m: float, tip_motion: TipMotion, spot: Spot | None = None,
                  depth_m: float | None = None) -> None:
-        crane.check(load, depth_m)
-        wire = require_within("wire_m", wire_m, crane.min_wire_m, crane.max_wire_m, "m")
-        m, ea = load.mass_kg, load.wire_ea_n
-        period = 2.0 * math.pi * math.sqrt(m * crane.min_wire_m / ea)
-        if period / STEPS_PER_PERIOD < MIN_STEP_S:
-            shortest = ea / m * (MIN_STEP_S * STEPS_PER_PERIOD / (2.0 * math.pi)) ** 2
-            raise ParameterError(f"crane min_wire_m {crane.min_wire_m:g} m is too short for a {m:g} kg load on a wire "
-                                 f"of EA {ea:g} N (axial period {1e3 * period:.3g} ms, steps under "
-                                 f"{1e3 * MIN_STEP_S:.3g} ms); give at least {shortest:.3g} m")
+        wire, period = self.check(crane, load, wire_m, depth_m)
+        m = load.mass_kg
         self.crane, self.load, self.tip_motion, self.spot = crane, load, tip_motion, spot
         self.step_s = h = math.ldexp(1.0, math.frexp(min(period / STEPS_PER_PERIOD, MAX_STEP_S))[1] - 1)
         self.contact_stiffness_n_m = m * (2.0 * math.pi / (CONTACT_STEPS * h)) ** 2
@@ -222,7 +215,7 @@ class Lift:
         zero = np.zeros(1)
         (tip,), (velocity,) = tip_motion(zero, crane.tip(np.array([crane.slew_deg])))
         deck = -math.inf if spot is None else float(spot(zero)[0][0])
-        position = (tip[0], tip[1], tip[2] - wire - m * G / (ea / wire))
+        position = (tip[0], tip[1], tip[2] - wire - m * G / (load.wire_ea_n / wire))
         if position[2] < deck:
             raise ParameterError(f"wire_m {wire:g} m puts the load {deck - position[2]:.3g} m below the landing deck "
                                  f"at the start")
@@ -231,6 +224,22 @@ class Lift:
         self._blocks: OrderedDict[int, np.ndarray] = OrderedDict()
         """Blocks held ((BLOCK_STEPS + 1, 9) each: the states of its steps and of the next block's first), last
         used last."""
+
+    @staticmethod
+    def check(crane: Crane, load: Load, wire_m: float, depth_m: float | None = None) -> tuple[float, float]:
+        """Refuse (:class:`ParameterError`) what :meth:`Crane.check` refuses, a wire outside the crane's range and a
+        wire so stiff for the load that its step would be below :data:`MIN_STEP_S`; the wire (m) and the axial period
+        at the shortest wire (s) otherwise."""
+        crane.check(load, depth_m)
+        wire = require_within("wire_m", wire_m, crane.min_wire_m, crane.max_wire_m, "m")
+        m, ea = load.mass_kg, load.wire_ea_n
+        period = 2.0 * math.pi * math.sqrt(m * crane.min_wire_m / ea)
+        if period / STEPS_PER_PERIOD < MIN_STEP_S:
+            shortest = ea / m * (MIN_STEP_S * STEPS_PER_PERIOD / (2.0 * math.pi)) ** 2
+            raise ParameterError(f"crane min_wire_m {crane.min_wire_m:g} m is too short for a {m:g} kg load on a wire "
+                                 f"of EA {ea:g} N (axial period {1e3 * period:.3g} ms, steps under "
+                                 f"{1e3 * MIN_STEP_S:.3g} ms); give at least {shortest:.3g} m, or a softer wire")
+        return wire, period
 
     # -- orders ---------------------------------------------------------------------------------
 

@@ -43,6 +43,7 @@ import numpy as np
 from marinesim.angles import compass_to_math
 from marinesim.constants import KNOT
 from marinesim.errors import ParameterError, require_finite, require_positive, require_within
+from marinesim.sea.ocean import smoothstep
 
 NAUTICAL_MILE_M = 1852.0
 FOOT_M = 0.3048
@@ -67,14 +68,14 @@ DeckTrack = Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]]
 DeckHeight = Callable[[np.ndarray], np.ndarray]
 
 
-def smoothstep(s: np.ndarray) -> np.ndarray:
-    """``3 s^2 - 2 s^3`` of ``s`` clipped to 0..1: from 0 to 1 with zero slope at both ends."""
-    s = np.clip(s, 0.0, 1.0)
-    return s * s * (3.0 - 2.0 * s)
+def blend(s: np.ndarray) -> np.ndarray:
+    """The sea's :func:`~marinesim.sea.ocean.smoothstep` of ``s`` clipped to 0..1: from 0 to 1 with zero slope at both
+    ends."""
+    return smoothstep(np.clip(s, 0.0, 1.0))
 
 
 def smoothstep_integral(s: np.ndarray) -> np.ndarray:
-    """The integral of :func:`smoothstep` from 0 to ``s`` (0 below 0; ``s - 1/2`` above 1)."""
+    """The integral of :func:`blend` from 0 to ``s`` (0 below 0; ``s - 1/2`` above 1)."""
     c = np.clip(s, 0.0, 1.0)
     return c**3 - 0.5 * c**4 + np.maximum(s - 1.0, 0.0)
 
@@ -222,9 +223,9 @@ class HelicopterApproach:
         phase = np.where(t < self.arrival_s, PHASES.index("approach"), PHASES.index("hover"))
         if crossing is None:
             return position, phase
-        across = smoothstep((t - crossing) / self.crossing_s)
+        across = blend((t - crossing) / self.crossing_s)
         settle_start = crossing + self.crossing_s
-        down = smoothstep((t - settle_start) / self.settling_s)
+        down = blend((t - settle_start) / self.settling_s)
         moving = t >= crossing
         position[moving, :2] = centre[moving, :2] + (1.0 - across[moving, None]) * self.offset
         above = centre[:, 2] + self.hover_height
@@ -249,5 +250,5 @@ class HelicopterApproach:
         spans = np.array([GO_AROUND_ACCELERATION_S, GO_AROUND_ACCELERATION_S, GO_AROUND_COLLECTIVE_S])
         elapsed = (t - wave)[:, None]
         position = start + velocity * elapsed + (target - velocity) * spans * smoothstep_integral(elapsed / spans)
-        turned = smoothstep((t - wave) / GO_AROUND_ACCELERATION_S)
+        turned = blend((t - wave) / GO_AROUND_ACCELERATION_S)
         return position, self.wind_from_deg - self.side * GO_AROUND_TURN_DEG * turned

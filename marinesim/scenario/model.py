@@ -576,8 +576,9 @@ DECISIONS = {
     "acknowledge": "every alarm of its criteria (of all criteria if it names none) acknowledged within within_s",
     "act_before": "a course or speed order given before the expectation of one of its criteria (the median of "
                   "its window's value in the sea she meets) passes the limit",
-    "give_way": "COLREG Rules 15 and 16: a course or speed order given while the time to the closest point of "
-                "approach to vessel is still more than within_s, and own-ship passing vessel at passing_m or more",
+    "give_way": "COLREG Rules 8, 15 and 16: her heading 10 deg off or her speed a quarter down while the time to the "
+                "closest point of approach to vessel is still within_s or more, and own-ship passing vessel at "
+                "passing_m or more",
 }
 """The decisions an objective may judge, in words."""
 
@@ -832,8 +833,9 @@ class ScenarioFile(Section):
                 raise _refuse(f"vessels[{i}]", "other vessels sail around own-ship: the scenario needs a [vessel]")
             if bodies.index(body.name) != i:
                 raise _refuse(f"vessels[{i}].name", f"{body.name!r} names an earlier vessel too")
-            if body.name in self.vessel.points or body.name in CAMERA_BODIES:
-                raise _refuse(f"vessels[{i}].name", f"{body.name!r} is taken (ownship, or one of [vessel.points])")
+            if body.name in self.vessel.points or body.name in (*CAMERA_BODIES, "crane", "helicopter"):
+                raise _refuse(f"vessels[{i}].name", f"{body.name!r} is taken (ownship, crane, helicopter or one of "
+                                                    "[vessel.points]: the record's columns begin with it)")
         if self.crane is not None:
             if self.vessel is None:
                 raise _refuse("crane", "a crane stands on a [vessel]")
@@ -848,6 +850,9 @@ class ScenarioFile(Section):
         if deck is not None and (self.vessel is None or deck not in self.vessel.points):
             raise _refuse("helicopter.deck_point", f"{self.helicopter.deck_point!r} is not one of [vessel.points] "
                                                    f"({', '.join(self.vessel.points) if self.vessel else 'none'})")
+        if self.helicopter is not None and self.helicopter.start_s >= self.run.duration_s:
+            raise _refuse("helicopter.start_s", f"{self.helicopter.start_s:g} s is not before the run's end "
+                                                f"(run.duration_s {self.run.duration_s:g} s)")
         for i, event in enumerate(self.events):
             if event.helicopter is not None and self.helicopter is None:
                 raise _refuse(f"events[{i}].helicopter", "the scenario has no [helicopter]")

@@ -24,7 +24,7 @@ from marinesim.errors import FileFormatError, MarinesimError, ScenarioError
 from marinesim.hull import Hull, VisualMesh, hydrostatics, load_hull, load_visual_mesh
 from marinesim.manoeuvring.ship import Ship
 from marinesim.manoeuvring.station import StationKeeping
-from marinesim.offshore.crane import Crane, Load
+from marinesim.offshore.crane import Crane, Lift, Load
 from marinesim.offshore.route import Route
 from marinesim.resources import resource_dir
 from marinesim.scenario import examples
@@ -103,7 +103,8 @@ DECK_ORDERS = ("hoist_m_s", "slew_deg_s", "helicopter")
 @dataclass(frozen=True)
 class Lifting:
     """Own-ship's crane and its load (``[crane]``): the wire paid out at the start (m), the landing deck: one of her
-    points (body frame, m) or a fixed deck's height (m above the still water), or neither."""
+    points (body frame, m; the deck a plane at its height, everywhere under the load) or a fixed deck's height (m
+    above the still water), or neither."""
 
     crane: Crane
     load: Load
@@ -382,7 +383,7 @@ def _lifting(options: CraneOptions, vessel: Vessel, depth: float) -> Lifting:
                   min_wire_m=options.min_wire_m, load_chart=tuple(tuple(row) for row in options.load_chart))
     load = Load(mass_kg=options.load_t * 1000.0, wire_ea_n=options.wire_ea_n,
                 damping_ratio=options.wire_damping_pct / 100.0, swing_damping_ratio=options.tag_lines_pct / 100.0)
-    crane.check(load, None if math.isinf(depth) else depth)
+    Lift.check(crane, load, options.wire_m, None if math.isinf(depth) else depth)
     point = None if options.landing_point is None else vessel.points[options.landing_point]
     return Lifting(crane, load, options.wire_m, point, options.landing_deck_m)
 

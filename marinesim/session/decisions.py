@@ -11,10 +11,13 @@
   late, or that brought the passing on). A criterion without an expectation (its quantity has none, a regular
   wave) leaves the decision not judged.
 - ``give_way`` (COLREG Rules 15 and 16: the give-way vessel takes early and substantial action to keep well clear):
-  own-ship's first course or speed order given while the time to the closest point of approach (TCPA) to
-  ``vessel`` was still more than ``within_s``, and her distance to it never less than ``passing_m`` (the range in
-  the record, every :data:`PASSING_STEP_S`). Not met if she passed closer, whatever she did, or acted late; not
-  judged if the run ended before she passed her.
+  her action is when her heading has turned :data:`SUBSTANTIAL_TURN_DEG` from her heading at the start, or her speed
+  over the ground fallen by :data:`SUBSTANTIAL_SLOWING` of it (Rule 8: large enough to be readily apparent; orders
+  that change neither, an autopilot engaged or a course nudged a degree, are no action), as the record shows it every
+  :data:`PASSING_STEP_S`; met if it came while the time to the closest point of approach (TCPA) to ``vessel`` was
+  still at least ``within_s`` and her distance to it was never less than ``passing_m``. Not met if she passed
+  closer, whatever she did, or acted late; not judged if the run ended before she passed her. The encounter at the
+  start, as :func:`~marinesim.offshore.traffic.encounter` classes it (Rules 13 to 15), is said with the verdict.
 
 A run stopped early judges what it can: an alarm still waiting for less than ``within_s``, or an expectation that
 has not passed its limit while no order was given, is "not judged".
@@ -27,7 +30,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from marinesim.constants import KNOT
 from marinesim.criteria.monitor import SETTLE_FRACTION
+from marinesim.offshore.traffic import Encounter, encounter
 from marinesim.scenario.schema import Objective
 from marinesim.session.exercise import Exercise
 from marinesim.session.expectation import STEP_S
@@ -46,6 +51,10 @@ class Judged:
 
 PASSING_STEP_S = 1.0
 """The range to the vessel given way to is looked at this often (s): at 30 kn closing, 15 m between looks."""
+SUBSTANTIAL_TURN_DEG = 10.0
+"""A change of heading that is an action to give way (deg): readily apparent on another ship's radar (Rule 8 (b))."""
+SUBSTANTIAL_SLOWING = 0.25
+"""A fall in speed that is an action to give way: a quarter of her speed (Rule 8 (b) asks for a substantial one)."""
 
 
 def judge(exercise: Exercise, objective: Objective) -> Judged:
@@ -59,46 +68,42 @@ def judge(exercise: Exercise, objective: Objective) -> Judged:
 
 def _gave_way(exercise: Exercise, objective: Objective) -> Judged:
     name, asked, early = objective.vessel, objective.passing_m, objective.within_s
-    ordered = next((e["t"] for e in exercise.journal if e["kind"] == "action"
-                    and e["action"] in ("order", "change") and STEERING & e.keys()), None)
     times = np.arange(0.0, exercise.sim.time + 1e-9, PASSING_STEP_S)
     rows = exercise.sim.frame(times)
     ranges, tcpa = rows[f"{name}_range_m"], rows[f"{name}_tcpa_s"]
+    situation = _encounter(rows, name).value.replace("_", " ")
     closest = int(np.argmin(ranges))
-    passed = f"passed {name} at {ranges[closest] / 1852.0:.2f} nm ({ranges[closest]:.0f} m) at {times[closest]:.0f} s"
+    passed = f"{situation}: passed {name} at {ranges[closest] / 1852.0:.2f} nm ({ranges[closest]:.0f} m) at " \
+             f"{times[closest]:.0f} s"
     if ranges[closest] < asked:
         return Judged("not met", f"{passed}, inside the {asked:.0f} m asked")
     if tcpa[-1] > 0.0 and ranges[-1] <= ranges[closest] + 1e-9:
         return Judged("not judged", f"the run ended before she passed {name}")
-    if ordered is None:
-        return Judged("met", f"{passed} without a course or speed change")
-    left = float(exercise.sim.frame(np.array([ordered]))[f"{name}_tcpa_s"][0])
-    if left < early:
-        return Judged("not met", f"{passed}, but the first course or speed change came at {ordered:.0f} s, "
-                                 f"{left / 60:.1f} min before the closest point of approach ({early / 60:.0f} asked)")
-    return Judged("met", f"{passed}; the first course or speed change at {ordered:.0f} s, {left / 60:.1f} min before "
-                         "the closest point of approach")
+    turned = np.abs((rows["heading_deg"] - rows["heading_deg"][0] + 180.0) % 360.0 - 180.0) >= SUBSTANTIAL_TURN_DEG
+    slowed = rows["speed_over_ground_kn"] <= (1.0 - SUBSTANTIAL_SLOWING) * rows["speed_over_ground_kn"][0]
+    acted = np.flatnonzero(turned | slowed)
+    if not acted.size:
+        return Judged("met", f"{passed} without a change of course or speed")
+    at = int(acted[0])
+    how = f"her heading {SUBSTANTIAL_TURN_DEG:g} deg off" if turned[at] else \
+        f"her speed {SUBSTANTIAL_SLOWING:.0%} down"
+    if tcpa[at] < early:
+        return Judged("not met", f"{passed}, but {how} only at {times[at]:.0f} s, {tcpa[at] / 60:.1f} min before the "
+                                 f"closest point of approach ({early / 60:.0f} asked)")
+    return Judged("met", f"{passed}; {how} at {times[at]:.0f} s, {tcpa[at] / 60:.1f} min before the closest point "
+                         "of approach")
 
 
-def _acknowledged(exercise: Exercise, objective: Objective) -> Judged:
-    names = set(objective.criteria) or {c.label for c in exercise.criteria}
-    alarms = [a for a in exercise.alarms if a.name in names]
-    end, within = exercise.sim.time, objective.within_s
-    late = [a for a in alarms if (a.acknowledged_s if a.acknowledged_s is not None else end) - a.raised_s > within]
-    waiting = [a for a in alarms if a.acknowledged_s is None and end - a.raised_s <= within]
-    if late:
-        first = late[0]
-        how = ("never acknowledged" if first.acknowledged_s is None
-               else f"acknowledged after {first.acknowledged_s - first.raised_s:.0f} s")
-        return Judged("not met", f"{len(late)} of {len(alarms)} alarms late: {first.name} at {first.raised_s:.0f} s "
-                                 f"{how} (within {within:g} s asked)")
-    if waiting:
-        return Judged("not judged", f"the run ended with an alarm waiting for less than {within:g} s")
-    if not alarms:
-        return Judged("not judged", "no alarm was raised")
-    slowest = max(a.acknowledged_s - a.raised_s for a in alarms)
-    return Judged("met", f"{len(alarms)} alarm{'s' if len(alarms) > 1 else ''} acknowledged, the slowest after "
-                         f"{slowest:.0f} s (within {within:g} s asked)")
+def _encounter(rows: dict[str, np.ndarray], name: str) -> Encounter:
+    """The encounter with ``name`` at the start (COLREG Rules 13 to 15), from the record's first row."""
+    own_heading, own_speed = rows["heading_deg"][0], rows["speed_over_ground_kn"][0] * KNOT
+    course = math.radians(rows["course_over_ground_deg"][0])
+    own_v = own_speed * np.array([math.sin(course), math.cos(course)])
+    heading = math.radians(rows[f"{name}_heading_deg"][0])
+    other_v = rows[f"{name}_speed_kn"][0] * KNOT * np.array([math.sin(heading), math.cos(heading)])
+    bearing = math.radians(rows[f"{name}_bearing_deg"][0])
+    relative = rows[f"{name}_range_m"][0] * np.array([math.sin(bearing), math.cos(bearing)])
+    return encounter(float(own_heading), own_v, relative, float(rows[f"{name}_heading_deg"][0]), other_v)
 
 
 def _acted_before(exercise: Exercise, objective: Objective) -> Judged:

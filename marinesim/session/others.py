@@ -16,7 +16,7 @@ import numpy as np
 
 from marinesim.angles import math_to_compass
 from marinesim.constants import KNOT
-from marinesim.offshore.traffic import cpa
+from marinesim.offshore.traffic import bearing_deg, cpa
 from marinesim.scenario.schema import OtherVessel
 from marinesim.sea.ocean import Components
 from marinesim.vessel.along import ShipPath, linear_along
@@ -112,7 +112,7 @@ def record(bodies: list[Body], linear: list[np.ndarray], own: ShipPath) -> dict[
                 f"{name}_speed_kn": path.speed / KNOT, f"{name}_heave_m": motion[:, 2],
                 f"{name}_roll_deg": np.degrees(motion[:, 3]), f"{name}_pitch_deg": np.degrees(motion[:, 4]),
                 f"{name}_range_m": np.hypot(d[:, 0], d[:, 1]),
-                f"{name}_bearing_deg": np.degrees(np.arctan2(d[:, 0], d[:, 1])) % 360.0,
+                f"{name}_bearing_deg": bearing_deg(own_xy, xy),
                 f"{name}_cpa_m": dcpa, f"{name}_tcpa_s": tcpa}
     return out
 

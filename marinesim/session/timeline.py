@@ -41,7 +41,8 @@ from marinesim.offshore.helicopter import HelicopterApproach
 from marinesim.pose import Pose
 from marinesim.recent import Recent
 from marinesim.scenario import Scenario
-from marinesim.scenario.model import CHANGE_RAMP_S, MAX_DURATION_S, MAX_SPEED_KN, WEATHER, EnvironmentOptions
+from marinesim.scenario.model import (CHANGE_RAMP_S, HELICOPTER_DECISIONS, MAX_DURATION_S, MAX_SPEED_KN, WEATHER,
+                                      EnvironmentOptions)
 from marinesim.sea.ocean import Components, smoothstep
 from marinesim.sea.seastate import SeaState, scaled_sea
 from marinesim.session import helideck, lifting, others
@@ -188,16 +189,18 @@ class Simulation:
         self.bodies = [others.Body(other, self.components) for other in scenario.others]
         """The other vessels and structures (:mod:`marinesim.session.others`)."""
         self._last_others: tuple[float, int, list[Pose]] = (math.nan, 0, [])
-        self._last_motion: tuple[tuple, tuple[ShipPath, np.ndarray], int] | None = None
+        self._last_motion: tuple[tuple[int, int, int], np.ndarray] | None = None
         self.lift: Lift | None = None
         """Own-ship's crane and its load (:mod:`marinesim.session.lifting`), with a ``[crane]``."""
         if scenario.lifting is not None:
-            self.lift = lifting.lift(scenario.lifting, self._motion, scenario.ocean.depth_m)
+            self.lift = lifting.lift(scenario.lifting, lifting.on_grid(self.voyage.path, self._motion_grid),
+                                     scenario.ocean.depth_m)
         self.helicopter: HelicopterApproach | None = None
         """A helicopter approaching her helideck (:mod:`marinesim.session.helideck`), with a ``[helicopter]``."""
         if scenario.helicopter is not None:
             self.helicopter = helideck.approach(scenario.helicopter, self.vessel.points[scenario.helicopter.deck_point],
-                                                self._motion, scenario.wind[1])
+                                                lifting.on_grid(self.voyage.path, self._motion_grid),
+                                                scenario.wind[1])
         if self.wake_on:
             self._request_wake(self.vessel.speed_m_s, wait=True)
 
@@ -289,6 +292,9 @@ class Simulation:
             raise ParameterError("the scenario has no [crane]: no hoist or slew")
         if helicopter is not None and self.helicopter is None:
             raise ParameterError("the scenario has no [helicopter]: no word to give it")
+        if helicopter is not None and helicopter not in HELICOPTER_DECISIONS:
+            raise ParameterError(f"the deck's word to the helicopter is one of {', '.join(HELICOPTER_DECISIONS)}, "
+                                 f"got {helicopter!r}")
         asked = {"rudder_deg": rudder_deg, "engine": engine, "speed_kn": speed_kn, "autopilot": autopilot,
                  "course_deg": course_deg, "set_north_m": set_north_m, "set_east_m": set_east_m, "fault": fault}
         asked = {key: value for key, value in asked.items() if value is not None}
@@ -322,6 +328,7 @@ class Simulation:
         after = before.changed(hours, **keys)
         ramp = require_within("ramp time of a weather change", ramp_s, 0.0, MAX_DURATION_S, "s")
         self._weather = _WeatherRamp(self.time, ramp, before.changed(hours) if hours else before, after)
+        self.version += 1
         if self.station is not None and "wind_speed_m_s" in keys:  # from the step it acts at, as an order
             start = self.voyage.step_of(self.time) * STEP_S
             self.station.weather.change(start, ramp, speed=keys["wind_speed_m_s"])
@@ -394,14 +401,13 @@ class Simulation:
         self._last_pose = (t, self.version, pose)
         return pose
 
-    def _motion(self, times: np.ndarray) -> tuple[ShipPath, np.ndarray]:
-        """Own-ship's track and linear outputs at ``times`` (s; a grid through the block product where they are one),
-        the last asked for kept: the crane's tip and its landing deck ask for the same block of times."""
-        key = (times.size, float(times[0]), float(times[-1])) if times.size else (0,)
-        if self._last_motion is None or self._last_motion[0] != key or self._last_motion[2] != self.version:
-            steps = np.diff(times)
-            dt = float(steps[0]) if times.size > 2 and np.all(steps == steps[0]) else None
-            self._last_motion = key, (self.voyage.path(times), self._linear(times, dt)), self.version
+    def _motion_grid(self, k0: int, n: int) -> np.ndarray:
+        """Own-ship's linear outputs (n, 18) at ``(k0 + arange(n)) * lifting.GRID_S``, the
+        newest kept: the crane's tip, its landing deck and the helicopter's deck ask for the same stretch."""
+        key = (k0, n, self.version)
+        if self._last_motion is None or self._last_motion[0] != key:
+            times = (k0 + np.arange(n)) * lifting.GRID_S
+            self._last_motion = key, self._linear(times)[:, :18]
         return self._last_motion[1]
 
     def other_poses(self, t: float | None = None) -> list[Pose]:
