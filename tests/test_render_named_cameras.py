@@ -18,9 +18,11 @@ from marinesim.scenario import load_scenario
 
 TRAINING = ROOT / "configs" / "training"
 SIZE = (200, 112)
-ROLES = {"crane_lift": "crane cab", "helideck_landing": "helideck officer", "heavy_weather_transit": "bridge wing",
-         "offshore_loading": "loading master"}
-"""Each exercise's role camera."""
+ROLES = {"crane_lift": ("crane cab", "load"), "helideck_landing": ("helideck officer", "helideck"),
+         "heavy_weather_transit": ("bridge wing", "target"), "offshore_loading": ("loading master", "target"),
+         "crossing_situation": ("starboard wing", "tanker")}
+"""Each exercise's role camera and what it must show: its target, a point on board, the crane's load, or another
+vessel."""
 CAMERA = """
 [[cameras]]
 name = "deck"
@@ -29,38 +31,60 @@ target = "bow"
 """
 
 
-def _view(scenario, camera: str, vessel: bool = True) -> Offscreen:
+def _view(scenario, camera: str, vessel: bool = True, size: tuple[int, int] = SIZE) -> Offscreen:
     from marinesim.gl import GraphicsError
 
     options = RenderOptions(hud="off", reproducible=True, vessel=vessel, spray=False, wake=False)
     try:
-        return Offscreen(scenario, SIZE, camera, "off", options)
+        return Offscreen(scenario, size, camera, "off", options)
     except GraphicsError as error:
         pytest.skip(f"no EGL OpenGL 4.3 here: {error}")
 
 
+def _shown(view, camera, what: str) -> np.ndarray:
+    """Where ``what`` is in the E frame (m): the camera's target, a point on board, the crane's load (the middle of
+    the container) or another vessel (her bridge front's height above her reference point)."""
+    sim = view.scene.sim
+    pose = sim.pose()
+    if what == "target":
+        return pose.world(np.array([camera.target]))[0]
+    if what == "load":
+        row = sim.lift.sample(np.array([sim.time]))
+        return np.array([row["load_x_m"][0], row["load_y_m"][0], row["load_z_m"][0] + 1.3])
+    if what in sim.vessel.points:
+        return pose.world(np.array([sim.vessel.points[what]]))[0]
+    index = [body.other.name for body in sim.bodies].index(what)
+    return sim.other_poses()[index].world(np.array([[0.0, 0.0, 12.0]]))[0]
+
+
 @pytest.mark.parametrize("exercise", sorted(ROLES))
 def test_each_role_camera_shows_what_it_names(exercise):
-    """In the first frame from the exercise's role camera the point it looks at is at the centre of the picture, and
-    the depth image there is that point's distance (within 15 %): nothing stands between, and it is the vessel that
-    is seen (with the vessel left out the centre is far beyond it). A camera looking past its deck, from inside the
-    hull or at a stack of containers would show the trainee nothing of the job."""
+    """In the first frame from the exercise's role camera what it is there to watch (its target, the crane's load, the
+    helideck, the other vessel) is in the picture, and the depth image at its pixel is its distance (within 15 %):
+    nothing stands between, and it is what is seen (with the vessels left out that pixel is far beyond). A camera
+    looking past its deck, from inside the hull or at a stack of containers would show the trainee nothing of the
+    job."""
     scenario = load_scenario(TRAINING / f"{exercise}.toml")
-    camera, = (c for c in scenario.cameras if c.name == ROLES[exercise])
+    name, what = ROLES[exercise]
+    camera, = (c for c in scenario.cameras if c.name == name)
+    size = SIZE if what != "tanker" else (4 * SIZE[0], 4 * SIZE[1])  # she is 4 nm off: a few pixels at 200
     distances = []
     for vessel in (True, False):
-        view = _view(scenario, camera.name, vessel)
+        view = _view(scenario, camera.name, vessel, size)
         with view:
             view.go_to(0.0)
             view.frame(hud=False)
             depth = view.depth_m()
-            pose = view.scene.sim.pose()
-            (x, y, w), = view.scene.camera.eye(pose).project(pose.world(np.array([camera.target])), SIZE)
-            assert w > 0 and abs(x - SIZE[0] / 2) < 1.0 and abs(y - SIZE[1] / 2) < 1.0
-            distances.append(float(np.median(depth[SIZE[1] // 2 - 2:SIZE[1] // 2 + 3, SIZE[0] // 2 - 2:SIZE[0] // 2 + 3])))
+            pose = view.scene.camera_pose()
+            (x, y, w), = view.scene.camera.eye(pose).project(_shown(view, camera, what)[None], size)
+            if what == "target":
+                assert abs(x - size[0] / 2) < 1.0 and abs(y - size[1] / 2) < 1.0
+            assert w > 0 and 2 <= x < size[0] - 2 and 2 <= y < size[1] - 2, (exercise, x, y)
+            row, col = int(y), int(x)
+            distances.append(float(np.median(depth[row - 1:row + 2, col - 1:col + 2])))
     seen, beyond = distances
-    assert seen == pytest.approx(w, rel=0.15), f"{exercise}: the centre shows something {seen:.1f} m off, not the " \
-                                               f"target {w:.1f} m off"
+    assert seen == pytest.approx(w, rel=0.15), f"{exercise}: the pixel shows something {seen:.1f} m off, not " \
+                                               f"{what} {w:.1f} m off"
     assert beyond > 1.2 * w
 
 

@@ -154,6 +154,8 @@ def test_the_helicopter_holds_alongside_then_lands_on_the_heaving_deck(tmp_path)
     (CRANE.replace("load_t = 10.0", "load_t = 30.0"), "crane: load 30.0 t exceeds the crane's safe working load"),
     (CRANE.replace("max_wire_m = 60.0", "max_wire_m = 200.0"), "reaches below the sea floor"),
     (CRANE.replace('landing_point = "cargo_deck"', 'landing_point = "hatch"'), "crane.landing_point: 'hatch'"),
+    (CRANE.replace("wire_m = 16.5", "wire_m = 70.0"), "crane: wire_m must be"),
+    ('[helicopter]\ndeck_point = "helideck"\nstart_s = 500.0\n', "helicopter.start_s: 500 s is not before the run's"),
     ('[[events]]\nat_s = 5.0\nhoist_m_s = 0.2\n', "events[0].hoist_m_s: hoist and slew are orders to a crane"),
     ('[helicopter]\ndeck_point = "roof"\n', "helicopter.deck_point: 'roof' is not one of"),
     ('[[events]]\nat_s = 5.0\nhelicopter = "permit"\n', "events[0].helicopter: the scenario has no [helicopter]"),

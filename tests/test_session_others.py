@@ -173,6 +173,7 @@ def test_the_bodies_and_their_files_are_recorded(abeam):
     ('name = "tug"\nkind = "ship"\nposition_m = [1.0, 2.0]\nrao = "r"\nhull = "h"\nheading_deg = 10.0\n'
      'waypoints_m = [[100.0, 100.0]]', "heads along her first leg"),
     ('name = "bridge"\nkind = "buoy"\nposition_m = [1.0, 2.0]', "'bridge' is taken"),
+    ('name = "crane"\nkind = "buoy"\nposition_m = [1.0, 2.0]', "'crane' is taken"),
     ('name = "far"\nkind = "buoy"\nposition_m = [1.0e6, 2.0]', "vessels[0].position_m"),
 ])
 def test_bad_bodies_are_refused_in_one_line(tmp_path, body, words):
