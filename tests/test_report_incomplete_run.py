@@ -17,6 +17,7 @@ from chromium import screenshot
 from conftest import ROOT
 from marinesim.cli import main
 from marinesim.criteria.monitor import Level
+from marinesim.criteria.quantities import CRANE_QUANTITIES
 from marinesim.report.plots import NONE, OK
 from marinesim.scenario import load_scenario, with_run
 from marinesim.session.exercise import Exercise, ran_words
@@ -29,7 +30,7 @@ PLANNED_S = 300.0
 STOP_S = 60.0
 """When the early session closes: 20 % of the run (s)."""
 CRITERIA = 4
-"""The crane lift's criteria: its objectives' three and her DP footprint."""
+"""The crane lift's criteria here: its objectives' three and her DP footprint."""
 TIGHT_ROLL_DEG = 1.5
 """A roll limit the crane lift's roll goes above within its first minute (about 1.9 deg by 36 s)."""
 
@@ -75,9 +76,13 @@ OBJECTIVES = "objectives = [\n" + "".join(
 
 
 def crane_lift(folder, roll_limit_deg: float | None = None):
-    """The crane lift with :data:`OBJECTIVES`, its roll limit at ``roll_limit_deg`` if given, its files named from the
+    """The crane lift with :data:`OBJECTIVES` and the vessel's criteria only (the crane's load's, which the crane
+    operator's hoisting decides, left out), its roll limit at ``roll_limit_deg`` if given, its files named from the
     checkout: its path in ``folder``."""
     text = CRANE_LIFT.read_text(encoding="utf-8").replace('"../../', f'"{ROOT}/')
+    blocks = text.split("[[criteria]]")
+    kept = (b for b in blocks[1:] if not any(f'"{q}"' in b for q in CRANE_QUANTITIES))
+    text = "[[criteria]]".join([blocks[0], *kept])
     start = text.index("objectives = [")
     text = text[:start] + OBJECTIVES + text[text.index("]", text.index("\n]", start)) + 1:]
     if roll_limit_deg is not None:

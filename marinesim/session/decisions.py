@@ -66,6 +66,27 @@ def judge(exercise: Exercise, objective: Objective) -> Judged:
     return _acted_before(exercise, objective)
 
 
+def _acknowledged(exercise: Exercise, objective: Objective) -> Judged:
+    names = set(objective.criteria) or {c.label for c in exercise.criteria}
+    alarms = [a for a in exercise.alarms if a.name in names]
+    end, within = exercise.sim.time, objective.within_s
+    late = [a for a in alarms if (a.acknowledged_s if a.acknowledged_s is not None else end) - a.raised_s > within]
+    waiting = [a for a in alarms if a.acknowledged_s is None and end - a.raised_s <= within]
+    if late:
+        first = late[0]
+        how = ("never acknowledged" if first.acknowledged_s is None
+               else f"acknowledged after {first.acknowledged_s - first.raised_s:.0f} s")
+        return Judged("not met", f"{len(late)} of {len(alarms)} alarms late: {first.name} at {first.raised_s:.0f} s "
+                                 f"{how} (within {within:g} s asked)")
+    if waiting:
+        return Judged("not judged", f"the run ended with an alarm waiting for less than {within:g} s")
+    if not alarms:
+        return Judged("not judged", "no alarm was raised")
+    slowest = max(a.acknowledged_s - a.raised_s for a in alarms)
+    return Judged("met", f"{len(alarms)} alarm{'s' if len(alarms) > 1 else ''} acknowledged, the slowest after "
+                         f"{slowest:.0f} s (within {within:g} s asked)")
+
+
 def _gave_way(exercise: Exercise, objective: Objective) -> Judged:
     name, asked, early = objective.vessel, objective.passing_m, objective.within_s
     times = np.arange(0.0, exercise.sim.time + 1e-9, PASSING_STEP_S)

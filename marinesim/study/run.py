@@ -17,7 +17,7 @@ import numpy as np
 
 from marinesim import __version__
 from marinesim.criteria import spectral
-from marinesim.criteria.quantities import STATION_QUANTITIES
+from marinesim.criteria.quantities import CRANE_QUANTITIES, STATION_QUANTITIES
 from marinesim.errors import ParameterError, ScenarioError
 from marinesim.scenario import Scenario
 from marinesim.sea.kinds import BREAKING_DEPTH_RATIO, BREAKING_STEEPNESS
@@ -56,7 +56,7 @@ class Study:
     @property
     def criteria(self):
         """The scenario's criteria on the wave-frequency motions: a station-keeping footprint is the simulation's
-        (her low-frequency excursions), not the spectra's."""
+        (her low-frequency excursions), not the spectra's, and a crane's load's the lift's."""
         return motion_criteria(self.scenario)
 
     @property
@@ -70,8 +70,9 @@ class Study:
 
 
 def motion_criteria(scenario: Scenario) -> tuple:
-    """``scenario``'s criteria less a station-keeping vessel's (:data:`STATION_QUANTITIES`)."""
-    return tuple(c for c in scenario.criteria if c.quantity not in STATION_QUANTITIES)
+    """``scenario``'s criteria less a station-keeping vessel's (:data:`STATION_QUANTITIES`) and a crane's load's
+    (:data:`CRANE_QUANTITIES`: the lift's, which depend on the crane operator, not on the vessel's response alone)."""
+    return tuple(c for c in scenario.criteria if c.quantity not in STATION_QUANTITIES + CRANE_QUANTITIES)
 
 
 def prepare(scenario: Scenario, scatter_path: Path, headings_deg: np.ndarray, duration_h: float) -> Study:
