@@ -5,6 +5,7 @@ acceleration back within its limit. Every shipped scenario, exercise or not, dra
 
 from __future__ import annotations
 
+import dataclasses
 import html
 import json
 
@@ -14,6 +15,7 @@ import pytest
 from conftest import ROOT, offscreen
 from marinesim.cli import main
 from marinesim.criteria.monitor import Level
+from marinesim.criteria.quantities import CRANE_QUANTITIES
 from marinesim.report.debrief import debrief, sickness_criteria
 from marinesim.scenario import load_scenario, with_run
 from marinesim.scenario.model import SCRIPTED_SHARE, EnvironmentOptions
@@ -82,8 +84,11 @@ def test_the_scripted_outcome_holds_over_twenty_seeds(path):
     for it in the sea met, averaged over the seeds, agrees (at least 80 %, or at most 20 %; a run's own chance
     depends on its track: the crane lift's turn comes when its crane tip passes 1.5 m/s). What would be wrong: an
     outcome that hangs on the shipped seed (a helideck pitch limit passed in 1 run in 100), or a chance that does
-    not describe the runs."""
+    not describe the runs. The crane's load is left out: no scripted criterion is its, and it does not move the ship
+    (stepping it is half the crane lift's run)."""
     scenario = load_scenario(path)
+    scenario = dataclasses.replace(scenario, lifting=None, criteria=tuple(
+        c for c in scenario.criteria if c.quantity not in CRANE_QUANTITIES))
     scripted = dict(scenario.scripted)
     held, chance = dict.fromkeys(scripted, 0), dict.fromkeys(scripted, 0.0)
     for seed in range(1, 21):
