@@ -6,5 +6,8 @@ G = 9.80665
 RHO_SEAWATER = 1025.0
 """Sea-water density, kg/m^3."""
 
-KNOT = 1852.0 / 3600.0
+NAUTICAL_MILE = 1852.0
+"""One nautical mile in m."""
+
+KNOT = NAUTICAL_MILE / 3600.0
 """One knot in m/s."""

@@ -8,8 +8,9 @@ import math
 import numpy as np
 import pytest
 
+from marinesim.constants import NAUTICAL_MILE
 from marinesim.errors import ParameterError
-from marinesim.offshore.traffic import (DCPA_LIMIT_M, HEAD_ON_DEG, NAUTICAL_MILE, Encounter, bearing_deg, cpa,
+from marinesim.offshore.traffic import (DCPA_LIMIT_M, HEAD_ON_DEG, Encounter, bearing_deg, cpa,
                                         encounter, relative_bearing_deg)
 
 

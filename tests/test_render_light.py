@@ -16,8 +16,9 @@ import numpy as np
 import pytest
 
 from conftest import luminance, offscreen, run_lengths
+from marinesim.constants import NAUTICAL_MILE
 from marinesim.render.daylight import bodies_at, illuminated_fraction, light_at, visible_drops_m3
-from marinesim.render.nav_lights import (CUT_OFF_DEG, NAUTICAL_MILE_M, RED, THRESHOLD_LUX, TRANSMISSIVITY, WHITE,
+from marinesim.render.nav_lights import (CUT_OFF_DEG, RED, THRESHOLD_LUX, TRANSMISSIVITY, WHITE,
                                          illuminance_lux, lit, luminous_intensity_cd, place_lights, sector_weight)
 from marinesim.scenario.model import EnvironmentOptions
 
@@ -88,8 +89,8 @@ def test_intensities_follow_annex_one_and_reach_their_range_in_its_atmosphere(ra
     """Annex I section 8(b)'s table of minimum intensities; and seen through the atmosphere it assumes (K = 0.8 per
     nm, a meteorological visibility of ln 20 / -ln 0.8 nm), the light gives the threshold illuminance at its range."""
     assert luminous_intensity_cd(range_nm) == pytest.approx(candela, rel=0.05)
-    visibility_m = math.log(20.0) / -math.log(TRANSMISSIVITY) * NAUTICAL_MILE_M
-    at_range = illuminance_lux(luminous_intensity_cd(range_nm), range_nm * NAUTICAL_MILE_M, visibility_m)
+    visibility_m = math.log(20.0) / -math.log(TRANSMISSIVITY) * NAUTICAL_MILE
+    at_range = illuminance_lux(luminous_intensity_cd(range_nm), range_nm * NAUTICAL_MILE, visibility_m)
     assert at_range == pytest.approx(THRESHOLD_LUX, rel=1e-4)  # Annex I's 3.43e6 is 1852^2 rounded
 
 

@@ -9,7 +9,7 @@ import math
 import numpy as np
 import pytest
 
-from marinesim.offshore.traffic import NAUTICAL_MILE as NM
+from marinesim.constants import NAUTICAL_MILE as NM
 from marinesim.render.hud import (ALARM_COLOR, CONTACT_COLOR, DANGER_COLOR, OWN_SHIP_COLOR, RADAR_PANEL_COLOR,
                                   RING_COLOR, Banner, Contact, Footprint, Hud, Radar, Slider, StripChart,
                                   font_px_for, ring_interval_m)

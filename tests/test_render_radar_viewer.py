@@ -20,7 +20,7 @@ import pytest
 from conftest import ROOT, VESSEL_SCENARIO, offscreen, write
 from marinesim.constants import KNOT
 from marinesim.gl import GraphicsError
-from marinesim.offshore.traffic import NAUTICAL_MILE as NM
+from marinesim.constants import NAUTICAL_MILE as NM
 from marinesim.scenario import load_scenario
 
 NO_WINDOW = 77

@@ -34,11 +34,10 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import NamedTuple
 
+from marinesim.constants import KNOT
 from marinesim.errors import ParameterError
 from marinesim.net.geo import Origin, ecef, ecef_orientation, ned_basis, position
 
-KNOT = 1852.0 / 3600.0
-"""Metres per second in one knot."""
 
 PROTOCOL_VERSION = 7
 ENTITY_STATE_TYPE = 1

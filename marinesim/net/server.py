@@ -35,6 +35,7 @@ import numpy as np
 from marinesim import __version__
 from marinesim.angles import wave_compass_from_beta
 from marinesim.atomic import strict_json
+from marinesim.constants import KNOT
 from marinesim.errors import MarinesimError, ParameterError
 from marinesim.offshore.traffic import DCPA_LIMIT_M
 from marinesim.scenario.schema import briefing_paragraphs
@@ -189,7 +190,7 @@ def others_state(exercise: Exercise, row: dict[str, float]) -> list[dict[str, An
 def predicted(ship: dict[str, Any]) -> list[list[float]]:
     """The track ahead (north, east in m) over :data:`PREDICT_S` at the ship's present speed and course over ground,
     turning at her present rate: the curved predictor an ECDIS draws."""
-    speed = ship["speed_over_ground_kn"] * 1852.0 / 3600.0
+    speed = ship["speed_over_ground_kn"] * KNOT
     course = math.radians(ship["course_over_ground_deg"])
     rate = math.radians(ship["rate_of_turn_deg_min"]) / 60.0
     points = []

@@ -41,11 +41,10 @@ from collections.abc import Callable
 import numpy as np
 
 from marinesim.angles import compass_to_math
-from marinesim.constants import KNOT
+from marinesim.constants import KNOT, NAUTICAL_MILE
 from marinesim.errors import ParameterError, require_finite, require_positive, require_within
 from marinesim.sea.ocean import smoothstep
 
-NAUTICAL_MILE_M = 1852.0
 FOOT_M = 0.3048
 PHASES = ("approach", "hover", "crossing", "landing", "on_deck", "wave_off")
 """The phases in the order a landing goes through them (a wave-off may follow any before on_deck)."""
@@ -102,7 +101,7 @@ class HelicopterApproach:
         self.wind_from_deg = require_finite("wind_from_deg", wind_from_deg) % 360.0
         self.speed = require_positive("approach_speed_kn", approach_speed_kn) * KNOT
         self.glide = math.radians(require_within("glide_angle_deg", glide_angle_deg, 2.0, 15.0, "deg"))
-        self.start_range = require_positive("start_range_nm", start_range_nm) * NAUTICAL_MILE_M
+        self.start_range = require_positive("start_range_nm", start_range_nm) * NAUTICAL_MILE
         self.hover_height = require_positive("hover_height_ft", hover_height_ft) * FOOT_M
         self.hover_offset = require_positive("hover_offset_m", hover_offset_m)
         self.crossing_s = require_positive("crossing_s", crossing_s)
@@ -111,7 +110,7 @@ class HelicopterApproach:
         self.braking = self.speed**2 / (2.0 * DECELERATION_M_S2)
         """The distance over which the approach slows to the hover (m)."""
         if self.start_range <= self.braking:
-            raise ParameterError(f"start_range_nm must be > {self.braking / NAUTICAL_MILE_M:.3g} nm (the distance to "
+            raise ParameterError(f"start_range_nm must be > {self.braking / NAUTICAL_MILE:.3g} nm (the distance to "
                                  f"slow from {approach_speed_kn:g} kn to the hover), got {start_range_nm!r}")
         track = compass_to_math(self.wind_from_deg)
         self.ahead = np.array([math.cos(track), math.sin(track)])

@@ -11,10 +11,9 @@ import enum
 
 import numpy as np
 
+from marinesim.constants import NAUTICAL_MILE
 from marinesim.errors import ParameterError, require_finite, require_positive
 
-NAUTICAL_MILE = 1852.0
-"""One nautical mile, m."""
 HEAD_ON_DEG = 6.0
 """Rule 14: courses within this many degrees of reciprocal are "nearly reciprocal" (a common practical bound, about
 the 1-3 deg cut-off of the sidelights beyond right ahead, Annex I 9(a), with the uncertainty of a compass and a

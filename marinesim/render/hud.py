@@ -20,9 +20,10 @@ import numpy as np
 from matplotlib.font_manager import FontProperties, findfont
 from PIL import Image, ImageDraw, ImageFont
 
+from marinesim.constants import NAUTICAL_MILE
 from marinesim.errors import require_positive
 from marinesim.gl import GraphicsError, Program
-from marinesim.offshore.traffic import NAUTICAL_MILE, cpa
+from marinesim.offshore.traffic import cpa
 
 FIRST_CHAR, LAST_CHAR = 32, 126
 """The atlas holds printable ASCII; anything else is drawn as '?'."""

@@ -26,14 +26,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-NAUTICAL_MILE_M = 1852.0
+from marinesim.constants import NAUTICAL_MILE
+
 THRESHOLD_LUX = 2e-7
 """Annex I's threshold of illuminance at night: the light is just seen."""
 TRANSMISSIVITY = 0.8
 """Annex I's atmospheric transmissivity per nautical mile (a meteorological visibility of about 13 nm)."""
 CUT_OFF_DEG = 2.0
 """Outside its sector a light falls to nothing over this many degrees (Annex I allows 1 to 3)."""
-RESTRICTED_VISIBILITY_M = 2.0 * NAUTICAL_MILE_M
+RESTRICTED_VISIBILITY_M = 2.0 * NAUTICAL_MILE
 """Below this visibility the lights are lit by day too (Rule 20 (b))."""
 AFTER_MASTHEAD_ABOVE_M = 4.5
 """Annex I 2 (a)(ii): the after masthead light is at least this much above the forward one."""

@@ -119,6 +119,7 @@ class Renderer:
                                              if options.vessel else [])
                               for layer, body in zip(self.others, sim.bodies)]
         self.load = self.wire = self.boom = None
+        self._boom_slew = float("nan")
         if sim.lift is not None and options.vessel:
             self.load = VesselLayer(ctx, container_mesh())
             self.wire = VesselLayer(ctx, wire_mesh(np.zeros(3), -np.ones(3)))
@@ -199,8 +200,11 @@ class Renderer:
         self.load.draw(view, Pose(load[0], load[1], heading, (0.0, 0.0, load[2], 0.0, 0.0, 0.0)))
         self.wire.replace(wire_mesh(tip, load + np.array([0.0, 0.0, CONTAINER_M[2]])))
         self.wire.draw(view, Pose())
-        crane = self.sim.lift.crane
-        self.boom.replace(boom_mesh(np.add(crane.pedestal_m, (0.0, 0.0, 1.2)), crane.tip(row["slew_deg"][0])))
+        slew = float(row["slew_deg"][0])
+        if slew != self._boom_slew:  # the boom is rebuilt only when it slews
+            crane = self.sim.lift.crane
+            self.boom.replace(boom_mesh(np.add(crane.pedestal_m, (0.0, 0.0, 1.2)), crane.tip(slew)))
+            self._boom_slew = slew
         self.boom.draw(view, pose)
 
     def release(self) -> None:

@@ -17,11 +17,11 @@ import moderngl
 import numpy as np
 
 from marinesim.angles import math_to_compass, wave_compass_from_beta
+from marinesim.constants import NAUTICAL_MILE
 from marinesim.criteria.monitor import Level, value_and_limit
 from marinesim.errors import ParameterError
 from marinesim.gl import is_software
 from marinesim.render import HUDS
-from marinesim.offshore.traffic import NAUTICAL_MILE
 from marinesim.pose import Pose
 from marinesim.render.camera import NAKED_EYE_FOV_DEG, BridgeCamera, Eye, FreeCamera, OrbitCamera
 from marinesim.render.clock import FrameClock

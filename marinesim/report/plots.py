@@ -237,8 +237,6 @@ STATION_M = 5.0
 """A track that never leaves this circle round the start is drawn as held on station."""
 KM_ABOVE_M = 5000.0
 """A track wider or taller than this is drawn in km."""
-NM = 1852.0
-"""A nautical mile, m."""
 
 
 def heading_curve(heading_deg, course_deg=None) -> tuple[np.ndarray, np.ndarray]:

@@ -30,7 +30,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from marinesim.constants import KNOT
+from marinesim.constants import KNOT, NAUTICAL_MILE
 from marinesim.criteria.monitor import SETTLE_FRACTION
 from marinesim.offshore.traffic import Encounter, encounter
 from marinesim.scenario.schema import Objective
@@ -94,7 +94,7 @@ def _gave_way(exercise: Exercise, objective: Objective) -> Judged:
     ranges, tcpa = rows[f"{name}_range_m"], rows[f"{name}_tcpa_s"]
     situation = _encounter(rows, name).value.replace("_", " ")
     closest = int(np.argmin(ranges))
-    passed = f"{situation}: passed {name} at {ranges[closest] / 1852.0:.2f} nm ({ranges[closest]:.0f} m) at " \
+    passed = f"{situation}: passed {name} at {ranges[closest] / NAUTICAL_MILE:.2f} nm ({ranges[closest]:.0f} m) at " \
              f"{times[closest]:.0f} s"
     if ranges[closest] < asked:
         return Judged("not met", f"{passed}, inside the {asked:.0f} m asked")
