@@ -23,11 +23,12 @@ import math
 from pathlib import Path
 
 from marinesim.atomic import atomic_path
+from marinesim.constants import NAUTICAL_MILE
 from marinesim.criteria.monitor import Level
 from marinesim.report.debrief import Conditions, Debrief, LogCheck
 from marinesim.scenario.schema import briefing_paragraphs
 from marinesim.session.exercise import share_words
-from marinesim.report.plots import (CAUTION, EXCEEDED, NM, NONE, OK, STATION_M, clock, compass, criterion_png,
+from marinesim.report.plots import (CAUTION, EXCEEDED, NONE, OK, STATION_M, clock, compass, criterion_png,
                                     footprint_png, handling_png, number, station_use_png, timeline_png, track_png,
                                     with_unit)
 
@@ -321,7 +322,7 @@ class _Page:
             moved = ["held on station" + (" at the start position" if reach < 0.05 else f", within {reach:.1f} m")]
         else:
             run = sum(math.hypot(n1 - n0, e1 - e0) for n0, e0, n1, e1 in zip(north, east, north[1:], east[1:]))
-            moved = [f"{number(run / NM)} nm over the ground in {self.clock(time[-1] - time[0])}"]
+            moved = [f"{number(run / NAUTICAL_MILE)} nm over the ground in {self.clock(time[-1] - time[0])}"]
         if heading:
             moved.append(f"heading {compass(heading[0])} → {compass(heading[-1])}")
         handled = []
