@@ -231,3 +231,81 @@ def test_a_session_log_keeps_the_station_files_and_its_replay_refuses_them_chang
                                                    "periods_s = [90.0, 90.0, 80.0]"))
     with pytest.raises(Refused, match="station file .*tanker.toml has changed since the session"):
         session_scenario(read_log(log), log)
+
+
+TANKER = ROOT / "configs" / "station" / "tanker.toml"
+HAWSER = ROOT / "configs" / "moorings" / "tanker_hawser.toml"
+
+
+def _tanker_on_her_hawser(turn_about: str | None) -> Voyage:
+    """The shuttle tanker on DP made fast by her bow hawser (configs/moorings/tanker_hawser.toml) in calm water,
+    heading 260, turning about the hawser's far end (``turn_about = "hawser"``) or about her origin (None)."""
+    from marinesim.scenario.moorings_file import load_moorings
+
+    file = load_station(TANKER)
+    m, d = file.matrices()
+    moorings = load_moorings(HAWSER, math.inf)
+    station = Station(file.name, m, d, Calm(), file.thruster_set(), Dp(m, d, file.tuning()), moorings,
+                      turn_about=turn_about)
+    state, orders = station.start(0.0, moorings.heading)
+    return Voyage(station, state, orders, 0.1)
+
+
+def _chock_span(voyage: Voyage, times: np.ndarray) -> np.ndarray:
+    """The horizontal distance (m) from her bow chock to the hawser's fixed point at ``times``."""
+    moorings = voyage.ship.moorings
+    line = moorings.lines[0]
+    x, y = line.fairlead[:2]
+    out = []
+    for t in times:
+        s = voyage.state(t)
+        c, sn = math.cos(s.psi), math.sin(s.psi)
+        out.append(math.hypot(line.anchor[0] - (s.north + x * c - y * sn), line.anchor[1] - (s.east + x * sn + y * c)))
+    return np.array(out)
+
+
+def test_a_tanker_on_dp_turns_about_her_hawsers_far_end_and_keeps_it_taut_not_overstretched():
+    """Her DP's tandem mode (``turn_about``): a heading order of 40 deg to starboard moves her set point along the
+    arc about the hawser's fixed point, 213 m from her origin, at the DP's 0.3 m/s (4.8 deg/min, slower than its
+    10 deg/min) and on the arc to 1e-9 m at every step; she follows and settles on the new heading, her bow chock
+    never closing on the fixed point by 3 m (a set point cutting the chord would bring it 13 m closer) and the hawser
+    never pulled past a quarter of its breaking load. Before the order she sits on her set point: the DP starts with
+    the hawser's 190 kN pretension in its bias. Turning about her origin instead, the same order would swing her bow
+    53 m off the line: the hawser holds it, her thrusters saturate and she stops short of the heading by more than
+    15 deg. What would be wrong if not: a set point off the arc, a turn faster than the DP may move her, or a start
+    that jerks her off station."""
+    voyage = _tanker_on_her_hawser("hawser")
+    station = voyage.ship
+    pivot = station.moorings.lines[0].anchor
+    before = voyage.sample(np.arange(0.0, 120.0, 1.0))
+    assert np.hypot(before["north"], before["east"]).max() < 0.05, "the DP holds her on the hawser from the start"
+    voyage.order(120.0, course_deg=300.0)
+    times = np.arange(0.0, 1800.0, 0.5)
+    ref = station.set_point(np.array([voyage.state(t).extra for t in times]))
+    radius = np.hypot(ref[:, 0] - pivot[0], ref[:, 1] - pivot[1])
+    np.testing.assert_allclose(radius, math.hypot(*pivot), atol=1e-9)
+    rate = np.abs(np.diff(ref[:, 2])) / 0.5
+    assert rate.max() <= 0.3 / math.hypot(*pivot) * (1.0 + 1e-9)
+    assert rate.max() == pytest.approx(0.3 / math.hypot(*pivot), rel=1e-6), "the arc at the DP's speed limit"
+    assert math.degrees(ref[-1, 2]) % 360.0 == pytest.approx(300.0, abs=1e-9)
+    span = _chock_span(voyage, times)
+    assert span.min() > span[0] - 3.0, f"the bow closed {span[0] - span.min():.1f} m on the FPSO"
+    assert math.degrees(voyage.state(1800.0).psi) % 360.0 == pytest.approx(300.0, abs=0.5)
+    tension = np.array([station.line_tensions(voyage.state(t), frozenset())[0] for t in times[::4]])
+    assert tension.max() < 0.25 * station.moorings.mbl[0]
+
+    about_origin = _tanker_on_her_hawser(None)
+    about_origin.order(120.0, course_deg=300.0)
+    late = [about_origin.state(t) for t in np.arange(600.0, 1800.0, 10.0)]
+    assert max(math.degrees(s.psi) % 360.0 for s in late) < 285.0, "the hawser holds her bow"
+    assert about_origin.ship.thruster_use(np.array([s.extra for s in late])).max() > 0.99
+
+
+def test_a_tanker_turning_about_her_hawser_takes_no_position_set_point():
+    """What would be wrong if not: a position order that pulls her set point off the arc her heading orders keep
+    it on, fighting the hawser."""
+    from marinesim.errors import ParameterError
+
+    voyage = _tanker_on_her_hawser("hawser")
+    with pytest.raises(ParameterError, match="turns about line hawser's far end: she takes heading set points"):
+        voyage.order(10.0, set_north_m=5.0)

@@ -61,7 +61,22 @@ CASES = {
     "moorings laid for another heading": (
         lambda tmp: _heading(_moored_scenario(tmp), 200.0),
         r"vessel\.heading_deg: 200 deg, but the moorings \(lines\.toml\) are laid for a vessel heading 250"),
+    "a line to turn about without DP": (
+        lambda tmp: _tandem(tmp, 'mode = "dp"', 'mode = "moored"'),
+        r"tandem\.toml: station\.turn_about: a line to turn about needs mode = \"dp\" and her moorings"),
+    "a line to turn about that she does not have": (
+        lambda tmp: _tandem(tmp, 'turn_about = "hawser"', 'turn_about = "bow"'),
+        r"station\.turn_about: 'bow' is not a line of tanker_hawser\.toml \(its lines: hawser\)"),
 }
+
+
+def _tandem(tmp_path, old: str, new: str) -> str:
+    """The offshore-loading exercise (on DP, turning about her hawser's far end) with ``old`` made ``new``."""
+    text = (ROOT / "configs" / "training" / "offshore_loading.toml").read_text()
+    assert old in text
+    path = tmp_path / "tandem.toml"
+    path.write_text(text.replace('"../../', f'"{ROOT.as_posix()}/').replace(old, new))
+    return str(path)
 
 
 def _heading(path: str, heading: float) -> str:

@@ -52,7 +52,7 @@ from marinesim.render.layers.synthesis import CascadeSynthesis
 from marinesim.render.layers.solver_field import SolverFieldLayer
 from marinesim.render.layers.vessel import VesselLayer, drawn_mesh, other_mesh
 from marinesim.render.layers.wake import WakeLayer
-from marinesim.render.vessel_mesh import CONTAINER_M, boom_mesh, container_mesh, wire_mesh
+from marinesim.render.vessel_mesh import CONTAINER_M, boom_mesh, container_mesh, hawser_mesh, wire_mesh
 from marinesim.session.timeline import Simulation
 
 
@@ -124,6 +124,11 @@ class Renderer:
             self.load = VesselLayer(ctx, container_mesh())
             self.wire = VesselLayer(ctx, wire_mesh(np.zeros(3), -np.ones(3)))
             self.boom = VesselLayer(ctx, boom_mesh(np.zeros(3), np.ones(3)))
+        moorings = sim.voyage.ship.moorings if sim.station is not None else None
+        self.hawsers = [(i, VesselLayer(ctx, hawser_mesh(np.zeros(3), np.ones(3), 0.0)))
+                        for i, line in enumerate(moorings.lines if moorings is not None and options.vessel else ())
+                        if line.hawser]
+        """Own-ship's hawsers (a line's index, its layer): drawn in air from her fairlead to the fixed point."""
         self.helicopter = self.helicopter_lights = None
         if sim.helicopter is not None and options.vessel:
             self.helicopter = VesselLayer(ctx, helicopter_mesh())
@@ -176,6 +181,8 @@ class Renderer:
             layer.draw(view, other)
         if self.load is not None:
             self._draw_lift(view, pose)
+        if self.hawsers:
+            self._draw_hawsers(view, pose)
         helicopter = None
         if self.helicopter is not None:
             row = self.sim.helicopter.sample(np.array([self.sim.time]))
@@ -207,12 +214,30 @@ class Renderer:
             self._boom_slew = slew
         self.boom.draw(view, pose)
 
+    def _draw_hawsers(self, view: View, pose: Pose) -> None:
+        """Own-ship's hawsers still fast, each sagging under its weight by ``w s^2 / (8 T)`` at mid-span (s its span,
+        T its tension now)."""
+        voyage, t = self.sim.voyage, self.sim.time
+        station, faults = voyage.ship, voyage.orders_at(t).faults
+        tensions = station.line_tensions(voyage.state(t), faults)
+        for index, layer in self.hawsers:
+            line = station.moorings.lines[index]
+            if f"line:{line.name}" in faults:
+                continue
+            x, y, z = line.fairlead  # body axes, y to starboard: the pose's y is to port
+            fairlead = pose.world(np.array([[x, -y, z]]))[0]
+            fixed = np.array([line.anchor[1], line.anchor[0], line.anchor_height_m])
+            span = float(np.linalg.norm(fixed - fairlead))
+            layer.replace(hawser_mesh(fairlead, fixed, line.weight_n_m * span**2 / (8.0 * max(tensions[index], 1e3))))
+            layer.draw(view, Pose())
+
     def release(self) -> None:
         if self.synthesis is not None:
             self.synthesis.release()
         for layer in (self.sky, self.cascades, self.foam, self.wake, self.solver_field, self.hull_mask, self.ocean,
                       self.vessel, self.nav_lights, self.rain, self.spray_layer, *self.others, *self.others_lights,
                       *((self.load, self.wire, self.boom) if self.load is not None else ()),
+                      *(layer for _, layer in self.hawsers),
                       *((self.helicopter, self.helicopter_lights) if self.helicopter is not None else ())):
             layer.release()
 

@@ -165,6 +165,17 @@ def wire_mesh(top: np.ndarray, bottom: np.ndarray, width_m: float = 0.12) -> Ves
     return part_mesh(kit.beam(bottom, top, width_m, kit.BLACK, up=up))
 
 
+def hawser_mesh(fairlead: np.ndarray, fixed: np.ndarray, sag_m: float, width_m: float = 0.3,
+                segments: int = 8) -> VesselMesh:
+    """A hawser from ``fairlead`` to ``fixed`` (E frame, m) hanging ``sag_m`` below the chord at mid-span (a
+    parabola: a taut line's catenary), in ``segments`` straight pieces of a white nylon rope drawn ``width_m``
+    thick."""
+    fairlead, fixed = np.asarray(fairlead, float), np.asarray(fixed, float)
+    s = np.linspace(0.0, 1.0, segments + 1)[:, None]
+    points = fairlead + s * (fixed - fairlead) - 4.0 * sag_m * s * (1.0 - s) * np.array([0.0, 0.0, 1.0])
+    return part_mesh(kit.join([kit.beam(p0, p1, width_m, kit.WHITE) for p0, p1 in zip(points[:-1], points[1:])]))
+
+
 def boom_mesh(heel: np.ndarray, tip: np.ndarray) -> VesselMesh:
     """A crane's boom from ``heel`` to ``tip`` (body frame, m): a yellow box girder, with a sheave block at the tip."""
     return part_mesh(kit.join([kit.beam(heel, tip, 0.9, kit.CRANE_YELLOW, height=0.8),

@@ -678,9 +678,14 @@ class StationOptions(Section):
 
     vessel: str = Field(description='her station-keeping file: a shipped one by name ("supply", "semisub": '
                                     'configs/station) or a file (.toml)')
-    mode: Literal["dp", "moored"] = Field("dp", description="on dynamic positioning, or held by moorings")
-    moorings: str | None = Field(None, description='moored: the mooring file, a shipped one by name '
-                                                   '("semisub_8_chain": configs/moorings) or a file (.toml)')
+    mode: Literal["dp", "moored"] = Field("dp", description="on dynamic positioning (with moorings, if given: her "
+                                                            "thrusters assist them), or held by moorings")
+    moorings: str | None = Field(None, description='the mooring file, a shipped one by name ("semisub_8_chain": '
+                                                   'configs/moorings) or a file (.toml): required when moored')
+    turn_about: str | None = Field(
+        None, description="on DP with moorings, a line's name: heading orders turn her about its far end, which "
+                          "keeps its place in her body frame (a shuttle tanker's DP weathervaning about the FPSO's "
+                          "stern, where her hawser is made fast); absent: she turns about her origin")
     pull_kn: Annotated[float, Quantity("kN", ge=0.0, le=5000.0)] = Field(
         0.0, description="moored: a constant pull astern on her own engines, as a shuttle tanker keeps her hawser "
                          "taut (20 to 50 t)")
@@ -690,8 +695,10 @@ class StationOptions(Section):
 
     @model_validator(mode="after")
     def _moorings_when_moored(self) -> StationOptions:
-        if (self.mode == "moored") != (self.moorings is not None):
-            raise _refuse("moorings", "give moorings with mode = \"moored\" (and only then)")
+        if self.mode == "moored" and self.moorings is None:
+            raise _refuse("moorings", "required by mode = \"moored\"")
+        if self.turn_about is not None and (self.mode != "dp" or self.moorings is None):
+            raise _refuse("turn_about", "a line to turn about needs mode = \"dp\" and her moorings")
         if self.pull_kn and self.mode != "moored":
             raise _refuse("pull_kn", "a pull astern is a moored vessel's: on DP her thrusters hold her")
         return self

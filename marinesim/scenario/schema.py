@@ -440,6 +440,9 @@ def _station(path: Path, options: StationOptions, vessel: Vessel, depth: float) 
         if abs((laid - vessel.heading_deg + 180.0) % 360.0 - 180.0) > 0.5:
             raise ScenarioError(f"vessel.heading_deg: {vessel.heading_deg:g} deg, but the moorings "
                                 f"({mooring_path.name}) are laid for a vessel heading {laid:g} deg")
+        if options.turn_about is not None and options.turn_about not in moorings.names:
+            raise ScenarioError(f"station.turn_about: {options.turn_about!r} is not a line of {mooring_path.name} "
+                                f"(its lines: {', '.join(moorings.names)})")
     return StationSetup(options, file, file_path, loads, drift, moorings, files)
 
 
@@ -473,7 +476,8 @@ def _station_vessel(setup: StationSetup, vessel: Vessel) -> Station:
     m, d = setup.file.matrices()
     thrusters = setup.file.thruster_set() if setup.options.mode == "dp" else None
     dp = None if thrusters is None else Dp(m, d, setup.file.tuning())
-    return Station(setup.file.name, m, d, Calm(), thrusters, dp, setup.moorings, setup.options.pull_kn * 1e3)
+    return Station(setup.file.name, m, d, Calm(), thrusters, dp, setup.moorings, setup.options.pull_kn * 1e3,
+                   setup.options.turn_about)
 
 
 def _named_file(scenario: Path, name: str, folder: str, expected: str = "a shipped file") -> Path:

@@ -19,7 +19,8 @@ low-frequency mass (with added mass) and linear damping.
   notch of depth ``zeta / zeta_n`` at ``omega_0``, cut-off ``omega_c`` above it) and ``K4``, ``K3 = K4 / 10``
   from the low-frequency loop's own bandwidth. Stepped by forward Euler at the DP computer's cycle.
 - **Reference model**: the set point moves to an ordered position at no more than ``speed_limit`` and to an
-  ordered heading at no more than ``rate_limit`` (DP operators move a vessel at 0.1 to 0.5 m/s, 10 deg/min).
+  ordered heading at no more than ``rate_limit`` (DP operators move a vessel at 0.1 to 0.5 m/s, 10 deg/min); or,
+  turning about a pivot (a shuttle tanker's DP weathervaning about the FPSO's stern), along the arc about it.
 - **Controller** (Fossen 2021, sec. 12.2.6): ``tau = -R^T (Kp e + Ki z) - Kd nu_hat - tau_wind``, ``e`` the
   estimated position less the set point (heading wrapped), ``z' = e`` (held while the thrusters saturate), by pole
   placement per degree of freedom: ``Kp = M w_n^2``, ``Kd = 2 zeta w_n M - D``, ``Ki = w_n / 10 Kp``; ``tau_wind``
@@ -105,6 +106,20 @@ class Dp:
         turn = wrap(target[2] - ref[2])
         out[2] = ref[2] + max(min(turn, self.tuning.rate_limit * h), -self.tuning.rate_limit * h)
         return out
+
+    def reference_about(self, ref: np.ndarray, pivot: tuple[float, float, float, float], course: float, h: float
+                        ) -> np.ndarray:
+        """The set point (north, east, psi) ``h`` s after ``ref``, its heading turning towards ``course`` (rad,
+        unwrapped near ``ref``'s) about ``pivot`` = (north m, east m, x m, y m): the point (north, east) keeps its
+        place (x forward, y to starboard) in her body frame, so the set point sweeps an arc about it, at no more than
+        ``rate_limit`` nor ``speed_limit`` along the arc."""
+        north, east, x, y = pivot
+        radius = math.hypot(x, y)
+        rate = self.tuning.rate_limit if radius == 0.0 else min(self.tuning.rate_limit,
+                                                                 self.tuning.speed_limit / radius)
+        psi = ref[2] + max(min(wrap(course - ref[2]), rate * h), -rate * h)
+        c, s = math.cos(psi), math.sin(psi)
+        return np.array([north - (x * c - y * s), east - (x * s + y * c), psi])
 
     def command(self, est: np.ndarray, ref: np.ndarray, integral: np.ndarray, wind: np.ndarray
                 ) -> np.ndarray:

@@ -109,6 +109,10 @@ class Station:
     moorings: Moorings | None = None
     pull: float = 0.0
     """A constant thrust astern along her own axis (N) on moorings: a shuttle tanker keeping her hawser taut."""
+    turn_about: str | None = None
+    """On DP with moorings: the line about whose far end her heading orders turn her (a shuttle tanker's DP in its
+    tandem mode, weathervaning about the FPSO's stern: her hawser's fixed point keeps its place in her body frame);
+    None: she turns about her origin. Either way her DP holds against her lines through its integral and bias."""
     kind = "station"
 
     def __post_init__(self) -> None:
@@ -116,8 +120,20 @@ class Station:
             raise ParameterError(f"{self.name}: dynamic positioning needs both thrusters and a DP computer")
         if self.thrusters is None and self.moorings is None:
             raise ParameterError(f"{self.name}: a vessel keeping station needs thrusters (DP) or moorings")
+        if self.turn_about is not None and (self.dp is None or self.moorings is None
+                                            or self.turn_about not in self.moorings.names):
+            raise ParameterError(f"{self.name}: turning about line {self.turn_about!r} needs DP and moorings with "
+                                 f"that line")
+        object.__setattr__(self, "_pivot", None if self.turn_about is None else self._pivot_of(self.turn_about))
         object.__setattr__(self, "_m_inv", np.linalg.inv(np.asarray(self.m, float)))
         object.__setattr__(self, "_d", np.asarray(self.d, float))
+
+    def _pivot_of(self, line: str) -> tuple[float, float, float, float]:
+        """Line ``line``'s far end (north m, east m from the set point) and where it lies in her body frame on her
+        set point (x m forward, y m to starboard)."""
+        north, east = self.moorings.lines[self.moorings.names.index(line)].anchor
+        c, s = math.cos(self.moorings.heading), math.sin(self.moorings.heading)
+        return north, east, north * c + east * s, -north * s + east * c
 
     @property
     def label(self) -> str:
@@ -135,8 +151,8 @@ class Station:
     def start(self, speed: float, psi: float) -> tuple[ShipState, Orders]:
         """Her state and orders at rest on heading ``psi`` (rad, clockwise from north), the set point where she is.
         On DP she starts settled, as a trainee takes her over: the thrusters already balance the weather of the
-        start (wind, current and waves' drift), the observer's bias and the controller's integral already hold
-        it (the wind's share is the feed-forward's)."""
+        start (wind, current, waves' drift and her lines' pull), the observer's bias and the controller's integral
+        already hold it (the wind's share is the feed-forward's)."""
         if speed > 0.0:
             raise ParameterError(f"{self.name} keeps station: she has no speed")
         extra = np.zeros(len(EXTRA) + (self.thrusters.width if self.thrusters is not None else 0))
@@ -145,6 +161,8 @@ class Station:
             env = self.environment
             current = np.asarray(self.d, float) @ _in_body(env.current(0.0), psi)
             load = env.loads(0.0, 0.0, 0.0, psi, 0.0, 0.0, 0.0) + current
+            if self.moorings is not None:
+                load = load + self.moorings.force(0.0, 0.0, psi)
             wind = env.wind_load(0.0, psi, 0.0, 0.0)
             turn = rotation(psi)
             extra[BIAS] = turn @ load
@@ -162,6 +180,9 @@ class Station:
         point for the DP, or an instructor's ``fault`` (:data:`FAULTS`); helm and engine orders are refused."""
         if any(o is not None for o in (rudder_deg, engine, speed_kn, autopilot)):
             raise ParameterError(f"{self.name}: {self.describe()}; she takes set points, not helm or engine orders")
+        if self.turn_about is not None and (set_north_m is not None or set_east_m is not None):
+            raise ParameterError(f"{self.name} turns about line {self.turn_about}'s far end: she takes heading set "
+                                 f"points, her position follows from them")
         new = orders
         if (course_deg is not None or set_north_m is not None or set_east_m is not None) and self.dp is None:
             raise ParameterError(f"{self.name} is moored: she takes no set points")
@@ -253,7 +274,9 @@ class Station:
         out[OBSERVER] = computer.observe(est, measured, thrusters.b @ f_now, h)
         if not saturated:
             out[INTEGRAL] = z + h * computer.error(est, ref)
-        out[SET_POINT] = computer.reference(ref, (orders.north, orders.east, _unwrapped(orders.course, ref[2])), h)
+        course = _unwrapped(orders.course, ref[2])
+        out[SET_POINT] = (computer.reference(ref, (orders.north, orders.east, course), h) if self._pivot is None
+                          else computer.reference_about(ref, self._pivot, course, h))
         if "reference drift" in orders.faults:
             out[REFERENCE_DRIFT.start] = drift[0] + REFERENCE_DRIFT_M_S * h
         out[FEED_FORWARD] = feed + (env.wind_load(t, s.psi, s.u, s.v) - feed) * (1.0 - math.exp(-h / WIND_FILTER_S))
