@@ -48,6 +48,16 @@ def _red(pixels: list[list[int]]) -> int:
     return sum(r > 100 and r - g > 50 and r - b > 50 for r, g, b in pixels)
 
 
+def _open(playwright, url: str):
+    """Headless Chromium on ``url`` at 1400x900: (the browser, the page, the console's errors as they come)."""
+    browser = playwright.chromium.launch(executable_path=CHROMIUM, args=["--no-sandbox"])
+    page = browser.new_page(viewport={"width": 1400, "height": 900})
+    errors: list[str] = []
+    page.on("console", lambda m: errors.append(m.text) if m.type == "error" else None)
+    page.goto(url)
+    return browser, page, errors
+
+
 def test_the_instructors_page_changes_the_sea_triggers_an_event_and_messages_a_station(tmp_path):
     """On the page: the sea made 1.5 times higher, the next scripted event triggered, the visibility brought down to
     2 km over a minute and a message sent to the bridge. Each is journaled once, within a second of simulated time of the click, and the bridge station applies
@@ -67,11 +77,7 @@ def test_the_instructors_page_changes_the_sea_triggers_an_event_and_messages_a_s
         clicked: dict[str, float] = {}
         try:
             with sync_playwright() as playwright:
-                browser = playwright.chromium.launch(executable_path=CHROMIUM, args=["--no-sandbox"])
-                page = browser.new_page(viewport={"width": 1400, "height": 900})
-                errors: list[str] = []
-                page.on("console", lambda m: errors.append(m.text) if m.type == "error" else None)
-                page.goto(page_url)
+                browser, page, errors = _open(playwright, page_url)
                 page.wait_for_function("document.body.dataset.connected === 'yes' && +document.body.dataset.t > 0",
                                        timeout=WAIT_MS)
                 page.wait_for_function("[...document.querySelectorAll('#message-to option')]"
@@ -132,11 +138,7 @@ def test_the_page_lists_the_other_bodies_and_draws_each_where_it_is(tmp_path):
     page_url = f"http://127.0.0.1:{served.port}/?token={served.server.token}"
     try:
         with sync_playwright() as playwright:
-            browser = playwright.chromium.launch(executable_path=CHROMIUM, args=["--no-sandbox"])
-            page = browser.new_page(viewport={"width": 1400, "height": 900})
-            errors: list[str] = []
-            page.on("console", lambda m: errors.append(m.text) if m.type == "error" else None)
-            page.goto(page_url)
+            browser, page, errors = _open(playwright, page_url)
             page.wait_for_function("+document.body.dataset.t > 0 && document.querySelectorAll('#others tr').length "
                                    "=== 2", timeout=WAIT_MS)
             page.click("#freeze")
@@ -178,3 +180,47 @@ def test_the_page_lists_the_other_bodies_and_draws_each_where_it_is(tmp_path):
         assert cells == [name, kind, f"{row[f'{name}_range_m'] / 1852:.2f}",
                          f"{round(row[f'{name}_bearing_deg']) % 360:03d}°", f"{row[f'{name}_cpa_m'] / 1852:.2f}",
                          f"{tcpa // 60}:{tcpa % 60:02d}", chart], name
+
+
+def test_the_instructor_drives_the_crossing_tanker_from_the_page(tmp_path):
+    """The crossing exercise's tanker sails under her own model: the page offers her in its Traffic box; course 320 and
+    8 kn ordered there reach her as one journaled order after the click, and the served simulation's record has her
+    turning to starboard (270 to 320) and slowing within four minutes. A page that sent the order to own-ship, or a
+    server that dropped the vessel's name, would leave the instructor unable to make the stand-on vessel act."""
+    from playwright.sync_api import sync_playwright
+
+    scenario = with_run(load_scenario(resource_dir("configs") / "training" / "crossing_situation.toml"), 900.0)
+    served = ServedInThread(scenario, tmp_path / "served.jsonl", scale=8.0)
+    page_url = f"http://127.0.0.1:{served.port}/?token={served.server.token}"
+    try:
+        with sync_playwright() as playwright:
+            browser, page, errors = _open(playwright, page_url)
+            page.wait_for_function("document.body.dataset.connected === 'yes' && +document.body.dataset.t > 0",
+                                   timeout=WAIT_MS)
+            page.wait_for_selector("#drive-box", state="visible", timeout=WAIT_MS)
+            assert page.evaluate("[...document.querySelectorAll('#drive-ship option')].map(o => o.value)") == \
+                ["tanker"]
+            page.fill("#drive-course", "320")
+            page.fill("#drive-speed", "8")
+            clicked = float(page.evaluate("() => { const t = +document.body.dataset.t; "
+                                          "document.getElementById('drive-order').click(); return t; }"))
+            page.wait_for_function("[...document.querySelectorAll('#journal *')]"
+                                   ".some(e => e.textContent.includes('course 320'))", timeout=WAIT_MS)
+            if SHOTS:
+                page.wait_for_timeout(3000)  # the tanker drawn turning on the chart
+                page.screenshot(path=str(Path(SHOTS) / "instructor_page_drive.png"))
+            assert not errors, errors
+            browser.close()
+        orders = [e for e in served.server.exercise.journal if e["kind"] == "action"]
+        assert len(orders) == 1
+        order = orders[0]
+        assert order == order | {"action": "order", "vessel": "tanker", "course_deg": 320, "speed_kn": 8}
+        assert order["t"] >= clicked, (order, clicked)
+        sim = served.server.exercise.sim
+        later = order["t"] + 240.0
+        rows = sim.frame(np.array([order["t"], later]))
+    finally:
+        served.close()
+    assert rows["tanker_heading_deg"][0] == np.float64(270.0)
+    assert 290.0 < rows["tanker_heading_deg"][1] <= 320.5, "turning to starboard, to 320"
+    assert rows["tanker_speed_kn"][1] < rows["tanker_speed_kn"][0] - 0.3, "slowing for 8 kn"

@@ -330,6 +330,9 @@ def test_bad_messages_are_refused_and_the_exercise_goes_on(tmp_path):
                                 "fields": {"hs_factor": 2.0}}): "the instructor's, not a station's",
                     json.dumps({"type": "action", "token": server.station_token, "action": "order",
                                 "fields": {"fault": "thruster:bow"}}): "the instructor's, not a station's",
+                    json.dumps({"type": "action", "token": server.station_token, "action": "order",
+                                "fields": {"vessel": "tanker", "course_deg": 300.0}}):
+                        "the instructor's, not a station's",
                     json.dumps({"type": "lag", "token": server.station_token, "lag_s": float("nan")}): "finite",
                     '{"type": "lag", "token": "%s", "lag_s": 1e400}' % server.station_token: "finite",
                     json.dumps({"type": "control", "token": server.station_token, "control": "freeze"}):

@@ -139,3 +139,39 @@ def test_two_cameras_of_one_name_are_refused(tmp_path):
         load_scenario(write(tmp_path, SCENARIO + CAMERA + CAMERA))
     scenario = load_scenario(write(tmp_path, SCENARIO + CAMERA, "one.toml"))
     assert replace(scenario, cameras=()).cameras == ()
+
+
+def test_the_hawser_is_drawn_from_her_bow_chock_to_the_fpsos_stern():
+    """Offshore loading, from the FPSO's stern: the hawser's far end is made fast on the FPSO (her stern chock,
+    125 m abaft her origin, 25 m up) and rides on her; the rope's mid-span, hanging ``w s^2 / (8 T)`` below the
+    chord, is what the pixel there shows (its depth the distance to it, 15 %), and with the vessels left out that
+    pixel is far beyond. A hawser drawn from the wrong side of her bow, to a point the FPSO has moved away from, or
+    not at all would show the deck crew a line that is not where the physics has it."""
+    scenario = load_scenario(TRAINING / "offshore_loading.toml")
+    size = (4 * SIZE[0], 4 * SIZE[1])
+    distances = []
+    for vessel in (True, False):
+        view = _view(scenario, "FPSO stern", vessel, size)
+        with view:
+            view.go_to(0.0)
+            view.frame(hud=False)
+            depth = view.depth_m()
+            renderer, sim = view.scene.renderer, view.scene.sim
+            if vessel:
+                (index, layer, fast), = renderer.hawsers
+                assert fast is not None and fast[0] == 0, "made fast on the FPSO"
+                np.testing.assert_allclose(fast[1], [-125.0, 0.0, 25.0], atol=0.05)
+            line = sim.voyage.ship.moorings.lines[0]
+            x, y, z = line.fairlead
+            fairlead = sim.pose().world(np.array([[x, -y, z]]))[0]
+            far = sim.other_poses()[0].world(np.array([[-125.0, 0.0, 25.0]]))[0]
+            tension = sim.voyage.ship.line_tensions(sim.voyage.state(0.0), frozenset())[0]
+            span = float(np.linalg.norm(far - fairlead))
+            middle = 0.5 * (fairlead + far) - [0.0, 0.0, line.weight_n_m * span**2 / (8.0 * tension)]
+            pose = view.scene.camera_pose()
+            (px, py, w), = view.scene.camera.eye(pose).project(middle[None], size)
+            assert w > 0 and 2 <= px < size[0] - 2 and 2 <= py < size[1] - 2, (px, py)
+            distances.append(float(np.median(depth[int(py) - 1:int(py) + 2, int(px) - 1:int(px) + 2])))
+    seen, beyond = distances
+    assert seen == pytest.approx(w, rel=0.15), f"the pixel shows something {seen:.1f} m off, not the hawser {w:.1f} m"
+    assert beyond > 1.2 * w

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from conftest import VESSEL_SCENARIO, write
+from conftest import ROOT, VESSEL_SCENARIO, write
 from marinesim.errors import ScenarioError
 from marinesim.scenario import load_scenario
 from marinesim.scenario.schema import Objective
@@ -98,3 +98,30 @@ def test_a_decision_names_what_it_needs(tmp_path):
         with pytest.raises(ScenarioError, match=key):
             load_scenario(write(tmp_path, base.replace("{o}", objective)))
 
+
+
+TRAFFIC = f'''
+[[vessels]]
+name = "coaster"
+kind = "ship"
+rao = "{ROOT / 'rao' / 'tanker' / 'tanker.4'}"
+hull = "{ROOT / 'hulls' / 'tanker.gdf'}"
+position_m = [3000.0, 3000.0]
+speed_kn = 10.0
+heading_deg = 270.0
+manoeuvring = "tanker"
+'''
+
+
+def test_an_order_to_another_ship_is_not_the_trainees(tmp_path):
+    """The instructor alters another ship (an order with ``vessel``) in a run stopped before the expectation could
+    pass: that is no course or speed change of own-ship's, so the decision is not judged. Counted as hers, it would
+    be met for what the instructor did."""
+    def drive(exercise: Exercise) -> None:
+        exercise.advance_to(30.0)
+        exercise.act("order", vessel="coaster", course_deg=300.0)
+        exercise.advance_to(60.0)
+    exercise = _run(tmp_path, 90.0, drive, TRAFFIC)
+    assert not exercise.complete()
+    assert judge(exercise, ACT) == judge(exercise, ACT).__class__(
+        "not judged", "the run stopped before the expectation passed the limit")

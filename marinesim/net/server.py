@@ -205,7 +205,8 @@ def predicted(ship: dict[str, Any]) -> list[list[float]]:
 
 
 def describe(exercise: Exercise, faults: tuple[str, ...]) -> dict[str, Any]:
-    """The exercise as the page's welcome gives it: name, briefing, objectives, events, criteria, faults."""
+    """The exercise as the page's welcome gives it: name, briefing, objectives, events, criteria, faults, and the
+    other ships the instructor may drive (those under their own manoeuvring model)."""
     scenario = exercise.scenario
     briefing = scenario.briefing
     events = [{"index": i, "trigger": f"at {e.at_s:g} s" if e.at_s is not None else f"when {e.condition}",
@@ -217,7 +218,8 @@ def describe(exercise: Exercise, faults: tuple[str, ...]) -> dict[str, Any]:
             "briefing": "\n\n".join("\n".join(lines) for lines in paragraphs),
             "objectives": [o.text for o in briefing.objectives] if briefing else [],
             "duration_s": exercise.duration_s, "seed": scenario.run.seed, "events": events, "criteria": criteria,
-            "faults": list(faults)}
+            "faults": list(faults),
+            "driven": [body.other.name for body in exercise.sim.bodies if body.other.ship is not None]}
 
 
 class ExerciseServer:
@@ -247,8 +249,8 @@ class ExerciseServer:
         self._stop = False
         sim = exercise.sim
         ship = sim.voyage.ship if sim.vessel is not None else None
-        faults = ((*ship.unit_faults, *(("reference drift",) if ship.dp is not None else ()))
-                  if sim.station is not None else ())
+        faults = ((*ship.unit_faults, *(f"line:{name}" for name in ship.line_names if ship.dp is not None),
+                   *(("reference drift",) if ship.dp is not None else ())) if sim.station is not None else ())
         self.scenario = describe(exercise, faults)
         self._runner = None
 
@@ -367,9 +369,9 @@ class ExerciseServer:
             entry = {"action": message.get("action"), **fields} if isinstance(fields, dict) else {"action": None}
             problem = action_problem(entry)
             if problem is None and client.role == "station" and (entry["action"] not in STATION_ACTIONS
-                                                                 or "fault" in entry):
-                problem = f"{entry['action']}: the instructor's, not a station's (a station orders, acknowledges, " \
-                          "reports)"
+                                                                 or "fault" in entry or "vessel" in entry):
+                problem = f"{entry['action']}: the instructor's, not a station's (a station orders own-ship, " \
+                          "acknowledges, reports)"
             if problem is None and entry["action"] == "report":
                 entry["station"] = client.station
             if problem is not None:

@@ -125,10 +125,11 @@ class Renderer:
             self.wire = VesselLayer(ctx, wire_mesh(np.zeros(3), -np.ones(3)))
             self.boom = VesselLayer(ctx, boom_mesh(np.zeros(3), np.ones(3)))
         moorings = sim.voyage.ship.moorings if sim.station is not None else None
-        self.hawsers = [(i, VesselLayer(ctx, hawser_mesh(np.zeros(3), np.ones(3), 0.0)))
+        self.hawsers = [(i, VesselLayer(ctx, hawser_mesh(np.zeros(3), np.ones(3), 0.0)), self._made_fast(line))
                         for i, line in enumerate(moorings.lines if moorings is not None and options.vessel else ())
                         if line.hawser]
-        """Own-ship's hawsers (a line's index, its layer): drawn in air from her fairlead to the fixed point."""
+        """Own-ship's hawsers (a line's index, its layer, where its far end is made fast): drawn in air from her
+        fairlead to the fixed point, or to where the body holding it has moved that point."""
         self.helicopter = self.helicopter_lights = None
         if sim.helicopter is not None and options.vessel:
             self.helicopter = VesselLayer(ctx, helicopter_mesh())
@@ -182,7 +183,7 @@ class Renderer:
         if self.load is not None:
             self._draw_lift(view, pose)
         if self.hawsers:
-            self._draw_hawsers(view, pose)
+            self._draw_hawsers(view, pose, others)
         helicopter = None
         if self.helicopter is not None:
             row = self.sim.helicopter.sample(np.array([self.sim.time]))
@@ -214,19 +215,36 @@ class Renderer:
             self._boom_slew = slew
         self.boom.draw(view, pose)
 
-    def _draw_hawsers(self, view: View, pose: Pose) -> None:
+    def _made_fast(self, line) -> tuple[int, np.ndarray] | None:
+        """The body at rest whose drawn hull holds ``line``'s fixed point (within 2 m), and that point in its body
+        frame (x forward, y to port, z up, m): (index in :attr:`Simulation.bodies`, (3,)); None: none does."""
+        fixed = np.array([line.anchor[1], line.anchor[0], line.anchor_height_m])
+        for index, (body, layer) in enumerate(zip(self.sim.bodies, self.others)):
+            if body.route.speed > 0.0:
+                continue
+            rest = body.path(np.array([0.0]))
+            dx, dy = fixed[0] - rest.x[0], fixed[1] - rest.y[0]
+            c, s = np.cos(rest.heading[0]), np.sin(rest.heading[0])
+            point = np.array([dx * c + dy * s, -dx * s + dy * c, fixed[2]])
+            lo, hi = layer.mesh.positions.min(axis=0) - 2.0, layer.mesh.positions.max(axis=0) + 2.0
+            if np.all((point >= lo) & (point <= hi)):
+                return index, point
+        return None
+
+    def _draw_hawsers(self, view: View, pose: Pose, others: list[Pose]) -> None:
         """Own-ship's hawsers still fast, each sagging under its weight by ``w s^2 / (8 T)`` at mid-span (s its span,
-        T its tension now)."""
+        T its tension now); the far end rides on the body it is made fast to (its tension is the fixed point's)."""
         voyage, t = self.sim.voyage, self.sim.time
         station, faults = voyage.ship, voyage.orders_at(t).faults
         tensions = station.line_tensions(voyage.state(t), faults)
-        for index, layer in self.hawsers:
+        for index, layer, fast in self.hawsers:
             line = station.moorings.lines[index]
             if f"line:{line.name}" in faults:
                 continue
             x, y, z = line.fairlead  # body axes, y to starboard: the pose's y is to port
             fairlead = pose.world(np.array([[x, -y, z]]))[0]
-            fixed = np.array([line.anchor[1], line.anchor[0], line.anchor_height_m])
+            fixed = (np.array([line.anchor[1], line.anchor[0], line.anchor_height_m]) if fast is None
+                     else others[fast[0]].world(fast[1][None])[0])
             span = float(np.linalg.norm(fixed - fairlead))
             layer.replace(hawser_mesh(fairlead, fixed, line.weight_n_m * span**2 / (8.0 * max(tensions[index], 1e3))))
             layer.draw(view, Pose())
@@ -237,7 +255,7 @@ class Renderer:
         for layer in (self.sky, self.cascades, self.foam, self.wake, self.solver_field, self.hull_mask, self.ocean,
                       self.vessel, self.nav_lights, self.rain, self.spray_layer, *self.others, *self.others_lights,
                       *((self.load, self.wire, self.boom) if self.load is not None else ()),
-                      *(layer for _, layer in self.hawsers),
+                      *(layer for _, layer, _ in self.hawsers),
                       *((self.helicopter, self.helicopter_lights) if self.helicopter is not None else ())):
             layer.release()
 

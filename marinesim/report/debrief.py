@@ -281,7 +281,8 @@ def _action(entry: dict) -> str:
     if entry["action"] == "change":
         return "change: " + ", ".join(f"{k} {v:g}" for k, v in fields.items() if k != "ramp_s")
     if entry["action"] == "order":
-        return "order: " + ", ".join(_order_words(k, v) for k, v in fields.items())
+        to = f" to {fields.pop('vessel')}" if "vessel" in fields else ""
+        return f"order{to}: " + ", ".join(_order_words(k, v) for k, v in fields.items())
     if entry["action"] == "weather":
         return "weather: " + ", ".join(f"{k} {v:g}" for k, v in fields.items())
     if entry["action"] == "trigger":

@@ -77,6 +77,8 @@ WEATHER = ("visibility_m", "cloud_cover_oktas", "wind_speed_m_s", "rain_mm_h")
 ORDERS = ("speed_kn", "heading_deg", "rudder_deg", "engine", "autopilot", "set_north_m", "set_east_m", "fault",
           "hoist_m_s", "slew_deg_s", "helicopter")
 """The ``[[events]]`` keys that are orders to the ship."""
+SHIP_ORDERS = ("heading_deg", "speed_kn", "rudder_deg", "engine", "autopilot")
+"""The orders an event may give another ship (``vessel``)."""
 
 
 @dataclass(frozen=True)
@@ -503,6 +505,10 @@ class EventOptions(Section):
     helicopter: Literal[HELICOPTER_DECISIONS] | None = Field(
         None, description="the deck's word to the helicopter: permit (GREEN: land), hold (RED: hold in the hover) or "
                           "wave_off")
+    vessel: Annotated[str | None, Field(min_length=1, max_length=40)] = Field(
+        None, description="the name of a ship of [[vessels]] under her manoeuvring model: the helm, engine and "
+                          "autopilot orders (heading_deg, speed_kn, rudder_deg, engine, autopilot) are hers, not "
+                          "own-ship's, and from then she answers them, not her route (the instructor drives her)")
     fault: Annotated[str | None, Field(min_length=1, max_length=80)] = Field(
         None, description='an instructor\'s fault on a vessel keeping station: "thruster:NAME" lost, '
                           '"drive-off:NAME" stuck at full thrust, "reference drift" (the position reference walks '
@@ -523,6 +529,12 @@ class EventOptions(Section):
         if self.heading_deg is not None and self.autopilot is False:
             raise _refuse("autopilot", "heading_deg is a course for the autopilot: it cannot come with "
                                        "autopilot = false")
+        if self.vessel is not None:
+            helm = [key for key in SHIP_ORDERS if getattr(self, key) is not None]
+            other = [key for key in ORDERS if key not in SHIP_ORDERS and getattr(self, key) is not None]
+            if not helm or other:
+                raise _refuse("vessel", "orders to another ship are her helm, engine and autopilot: give "
+                                        + ", ".join(SHIP_ORDERS) + (f", not {other[0]}" if other else ""))
         if self.rudder_deg is not None and (self.heading_deg is not None or self.autopilot):
             raise _refuse("rudder_deg", "a rudder order by hand takes the helm from the autopilot: give it without "
                                         "heading_deg or autopilot = true")
@@ -734,6 +746,11 @@ class OtherVesselOptions(Section):
         default_factory=list, description="a ship's route after position_m, [[east, north], ...] (m)")
     turn_radius_m: Annotated[float, Quantity("m", gt=10.0, le=10_000.0)] = Field(
         500.0, description="the radius of a ship's turns at her waypoints")
+    manoeuvring: str | None = Field(
+        None, description='a ship\'s manoeuvring model, a shipped one by name ("tanker", "s175", "kvlcc2", '
+                          '"supply": configs/vessels) or a file (.toml): her autopilot steers her route from each '
+                          "wheel-over point, and the instructor may drive her (events' vessel); absent: she sails "
+                          "the route exactly")
     hull: str | None = Field(None, description="a hull mesh in metres and body axes: a ship drawn from it")
     visual_mesh: str | None = Field(None, description="a mesh in metres and body axes drawn for the body")
     topsides_rgb: Annotated[list[int] | None, Quantity("", ge=0, le=255, what="colour levels"),
@@ -749,9 +766,11 @@ class OtherVesselOptions(Section):
         if not moves and self.rao is not None:
             raise _refuse("rao", f"a {self.kind} has no RAO table: leave rao out")
         if self.kind != "ship":
-            for key in ("speed_kn", "waypoints_m", "turn_radius_m"):
+            for key in ("speed_kn", "waypoints_m", "turn_radius_m", "manoeuvring"):
                 if key in self.model_fields_set:
                     raise _refuse(key, f"a {self.kind} does not sail: {key} is a ship's")
+        if self.manoeuvring is not None and self.speed_kn <= 0.0:
+            raise _refuse("manoeuvring", "a ship under her manoeuvring model sails her route: give speed_kn > 0")
         if self.waypoints_m and self.heading_deg is not None:
             raise _refuse("heading_deg", "a ship on waypoints heads along her first leg: leave heading_deg out")
         if self.kind == "platform" and self.visual_mesh is None:
@@ -863,6 +882,10 @@ class ScenarioFile(Section):
         for i, event in enumerate(self.events):
             if event.helicopter is not None and self.helicopter is None:
                 raise _refuse(f"events[{i}].helicopter", "the scenario has no [helicopter]")
+            driven = [o.name for o in self.vessels if o.manoeuvring is not None]
+            if event.vessel is not None and event.vessel not in driven:
+                raise _refuse(f"events[{i}].vessel", f"{event.vessel!r} is not a ship of [[vessels]] under her "
+                                                     f"manoeuvring model ({', '.join(driven) or 'none'})")
         for i, criterion in enumerate(self.criteria):
             if criterion.quantity in CRANE_QUANTITIES and self.crane is None:
                 raise _refuse(f"criteria[{i}].quantity", f"{criterion.quantity} is a crane's load's: the scenario has "

@@ -89,11 +89,14 @@ class OtherVessel:
     visual: VisualMesh | None = None        # drawn instead, body frame
     topsides_rgb: tuple[int, int, int] | None = None
     nav_lights: str = "underway"
+    ship: Ship | None = None                # a ship's manoeuvring model: she sails her route under it
+    ship_path: Path | None = None           # ... read from this file
 
     @property
     def files(self) -> dict[str, Path]:
         """The files read for it, by role: a session log keeps their sha256."""
-        return {} if self.rao_path is None else {f"{self.name} rao": self.rao_path}
+        return {f"{self.name} {role}": path for role, path in (("rao", self.rao_path), ("manoeuvring", self.ship_path))
+                if path is not None}
 
 
 DECK_ORDERS = ("hoist_m_s", "slew_deg_s", "helicopter")
@@ -136,11 +139,13 @@ class Event:
     hoist_m_s: float | None = None        # the crane's hoist, positive up
     slew_deg_s: float | None = None       # the crane's slew, positive to port
     helicopter: str | None = None         # the deck's word to the helicopter (model.HELICOPTER_DECISIONS)
+    vessel: str | None = None             # the orders are this other ship's (a [[vessels]] name)
 
     @property
     def orders(self) -> dict[str, float | str | bool]:
-        """The orders to the ship, as :meth:`Simulation.order`'s keywords."""
-        asked = {"speed_kn": None if self.speed_m_s is None else self.speed_m_s / KNOT, "course_deg": self.heading_deg,
+        """The orders to the ship (to ``vessel`` where named), as :meth:`Simulation.order`'s keywords."""
+        asked = {"vessel": self.vessel, "speed_kn": None if self.speed_m_s is None else self.speed_m_s / KNOT,
+                 "course_deg": self.heading_deg,
                  "rudder_deg": self.rudder_deg, "engine": self.engine, "autopilot": self.autopilot,
                  "set_north_m": self.set_north_m, "set_east_m": self.set_east_m, "fault": self.fault,
                  "hoist_m_s": self.hoist_m_s, "slew_deg_s": self.slew_deg_s, "helicopter": self.helicopter}
@@ -155,6 +160,7 @@ class Event:
         parts = []
         if self.sea is not None:
             parts.append(f"sea Hs {self.sea.hs:.2f} m Tp {self.sea.tp:.1f} s over {self.ramp_s:g} s")
+        first_order = len(parts)
         if self.speed_m_s is not None:
             parts.append(f"speed {self.speed_m_s / KNOT:.3g} kn")
         if self.heading_deg is not None:
@@ -170,6 +176,8 @@ class Event:
             parts.append(f"set point {self.set_north_m or 0.0:g} m N {self.set_east_m or 0.0:g} m E")
         if self.fault is not None:
             parts.append(f"fault {self.fault}")
+        if self.vessel is not None and len(parts) > first_order:
+            parts[first_order] = f"{self.vessel}: {parts[first_order]}"
         change = ", ".join(parts)
         words = {"visibility_m": "visibility {:g} m", "cloud_cover_oktas": "cloud {:g} oktas",
                  "wind_speed_m_s": "wind {:g} m/s", "rain_mm_h": "rain {:g} mm/h"}
@@ -355,7 +363,8 @@ def build_scenario(path: Path, file: ScenarioFile) -> Scenario:
     if file.station is not None:
         station = _station(path, file.station, vessel, depth)
         vessel = dataclasses.replace(vessel, ship=_station_vessel(station, vessel))
-    events = tuple(_event(f"events[{i}]", e, depth, vessel) for i, e in enumerate(file.events))
+    others = tuple(_other(path, f"vessels[{i}]", o, sea) for i, o in enumerate(file.vessels))
+    events = tuple(_event(f"events[{i}]", e, depth, vessel, others) for i, e in enumerate(file.events))
     criteria = tuple(_criterion(f"criteria[{i}]", c, vessel) for i, c in enumerate(file.criteria))
     if station is not None and station.options.footprint_m is not None and not any(
             c.quantity in STATION_QUANTITIES for c in criteria):
@@ -369,7 +378,6 @@ def build_scenario(path: Path, file: ScenarioFile) -> Scenario:
     notes = () if vessel is None else vessel.rao.warnings + _speed_notes(vessel, events)
     scripted = tuple((c.label, options.scripted) for c, options in zip(criteria, file.criteria) if options.scripted)
     cameras = tuple(_camera(c, vessel.points) for c in file.cameras)
-    others = tuple(_other(path, f"vessels[{i}]", o, sea) for i, o in enumerate(file.vessels))
     lifting = None if file.crane is None else _checked("crane", lambda: _lifting(file.crane, vessel, depth))
     return Scenario(path.resolve(), sea, file.ocean, file.run, vessel, events, criteria, briefing, file.environment,
                     notes, station, scripted, cameras, others, lifting, file.helicopter)
@@ -408,7 +416,16 @@ def _other(path: Path, where: str, options: OtherVesselOptions, sea: SeaState) -
     if options.visual_mesh is not None:
         visual = _checked(f"{where}.visual_mesh", lambda: load_visual_mesh(_file(path, options.visual_mesh)))
     topsides = tuple(options.topsides_rgb) if options.topsides_rgb is not None else None
-    return OtherVessel(options.name, options.kind, route, rao_path, rao, hull, visual, topsides, options.nav_lights)
+    ship = ship_path = None
+    if options.manoeuvring is not None:
+        ship_path = _checked(f"{where}.manoeuvring", lambda: _named_file(path, options.manoeuvring, "vessels",
+                                                                          "a shipped vessel"))
+        _, ship = _checked(f"{where}.manoeuvring", lambda: load_ship(ship_path))
+        if ship.autopilot is None:
+            raise ScenarioError(f"{where}.manoeuvring: {ship.name} has no autopilot to steer her route")
+        _checked(f"{where}.speed_kn", lambda: ship.rps_for_speed(options.speed_kn * KNOT))
+    return OtherVessel(options.name, options.kind, route, rao_path, rao, hull, visual, topsides, options.nav_lights,
+                       ship, ship_path)
 
 
 def _station(path: Path, options: StationOptions, vessel: Vessel, depth: float) -> StationSetup:
@@ -437,7 +454,8 @@ def _station(path: Path, options: StationOptions, vessel: Vessel, depth: float) 
         moorings = _checked("station.moorings", lambda: load_moorings(mooring_path, depth))
         files["moorings"] = mooring_path
         laid = math.degrees(moorings.heading) % 360.0
-        if abs((laid - vessel.heading_deg + 180.0) % 360.0 - 180.0) > 0.5:
+        # turning about a line's far end, its place in her body frame is taken on the moorings' heading: hers exactly
+        if abs((laid - vessel.heading_deg + 180.0) % 360.0 - 180.0) > (1e-6 if options.turn_about else 0.5):
             raise ScenarioError(f"vessel.heading_deg: {vessel.heading_deg:g} deg, but the moorings "
                                 f"({mooring_path.name}) are laid for a vessel heading {laid:g} deg")
         if options.turn_about is not None and options.turn_about not in moorings.names:
@@ -505,20 +523,27 @@ def _sea(where: str, options: list[SeaOptions], depth: float, whole: str) -> Sea
     return _checked(whole, lambda: SeaState(tuple(systems), depth=depth))
 
 
-def _event(where: str, options: EventOptions, depth: float, vessel: Vessel | None) -> Event:
+def _event(where: str, options: EventOptions, depth: float, vessel: Vessel | None,
+           others: tuple[OtherVessel, ...]) -> Event:
     sea = None if options.sea is None else _sea(f"{where}.sea", options.sea, depth, f"{where}.sea")
     speed = None if options.speed_kn is None else options.speed_kn * KNOT
-    if speed is not None:
+    if options.vessel is not None:  # orders to another ship: hers, checked against her model and her RAO table
+        other, = (o for o in others if o.name == options.vessel)
+        if speed is not None:
+            _check_speed(f"{where}.speed_kn", other.rao, options.speed_kn)
+        vessel = dataclasses.replace(vessel, rao=other.rao, ship=other.ship, speed_m_s=other.route.speed,
+                                     heading_deg=math_to_compass(other.route.pieces[0].heading))
+    elif speed is not None:
         _check_speed(f"{where}.speed_kn", vessel.rao, options.speed_kn)
     condition = None if options.when is None else parse_condition(options.when)
     weather = {key: getattr(options, key) for key in WEATHER if getattr(options, key) is not None}
     event = Event(options.at_s, condition, options.ramp_s, sea, speed, options.heading_deg, options.message, weather,
                   options.rudder_deg, options.engine, options.autopilot, options.fault, options.set_north_m,
-                  options.set_east_m, options.hoist_m_s, options.slew_deg_s, options.helicopter)
+                  options.set_east_m, options.hoist_m_s, options.slew_deg_s, options.helicopter, options.vessel)
     if event.orders:  # an order the ship cannot carry out is refused now, not when it comes
         state, orders = vessel.ship.start(vessel.speed_m_s, math.radians(vessel.heading_deg))
         for key, value in event.orders.items():
-            if key in DECK_ORDERS:
+            if key in DECK_ORDERS or key == "vessel":
                 continue
             name = "heading_deg" if key == "course_deg" else key
             _checked(f"{where}.{name}", lambda: vessel.ship.order(orders, state, **{key: value}))
@@ -558,7 +583,8 @@ def _speed_notes(vessel: Vessel, events: tuple[Event, ...]) -> tuple[str, ...]:
     if vessel.rao.speed.size > 1:
         return ()
     asked = [("vessel.speed_kn", vessel.speed_m_s)] + [(f"events[{i}].speed_kn", event.speed_m_s)
-                                                       for i, event in enumerate(events) if event.speed_m_s is not None]
+                                                       for i, event in enumerate(events)
+                                                       if event.speed_m_s is not None and event.vessel is None]
     length, length_from = _length(vessel)
     notes = [(where, one_speed_note(vessel.rao, speed, length, length_from)) for where, speed in asked]
     return tuple(f"{where}: {note}" for where, note in notes if note is not None)

@@ -129,7 +129,7 @@ def _encounter(rows: dict[str, np.ndarray], name: str) -> Encounter:
 
 def _acted_before(exercise: Exercise, objective: Objective) -> Judged:
     ordered = next((e["t"] for e in exercise.journal if e["kind"] == "action"
-                    and e["action"] in ("order", "change") and STEERING & e.keys()), None)
+                    and e["action"] in ("order", "change") and STEERING & e.keys() and "vessel" not in e), None)
     labels = [c.label for c in exercise.criteria]
     if any(exercise.expectations.window(labels.index(name), exercise.sim.time) is None for name in objective.criteria):
         return Judged("not judged", "no spectral expectation for its criteria (docs/FORMULAS.md)")

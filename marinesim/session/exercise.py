@@ -186,7 +186,7 @@ CHANGE_KEYS = frozenset({"hs_factor", "tp_factor", "turn_waves_deg", "speed_kn",
 """What a live change may give (:meth:`Simulation.change`'s keywords, the sea as factors of the present one; speed
 and heading are orders to the engine and the autopilot)."""
 ORDER_KEYS = frozenset({"rudder_deg", "engine", "speed_kn", "autopilot", "course_deg", "set_north_m", "set_east_m",
-                        "fault", "hoist_m_s", "slew_deg_s", "helicopter"})
+                        "fault", "hoist_m_s", "slew_deg_s", "helicopter", "vessel"})
 """What a live order may give (:meth:`Simulation.order`'s keywords)."""
 WEATHER_KEYS = frozenset({*WEATHER, "hours", "ramp_s"})
 """What a live weather change may give (:meth:`Simulation.change_weather`'s keywords): new values, the clock moved,

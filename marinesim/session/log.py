@@ -290,6 +290,8 @@ def action_problem(entry: dict) -> str | None:
             return f"key 'helicopter': expected one of {', '.join(HELICOPTER_DECISIONS)}, got {fields['helicopter']!r}"
         if "fault" in fields and not (isinstance(fields["fault"], str) and 0 < len(fields["fault"]) <= 80):
             return f"key 'fault': expected a fault's name (1 to 80 characters), got {fields['fault']!r}"
+        if "vessel" in fields and not (isinstance(fields["vessel"], str) and 0 < len(fields["vessel"]) <= 40):
+            return f"key 'vessel': expected another ship's name (1 to 40 characters), got {fields['vessel']!r}"
     if action == "trigger" and not is_a(fields.get("index"), int):
         return f"key 'index': expected an event's index, got {fields.get('index')!r}"
     if action in ("message", "report") and not (isinstance(fields.get("text"), str)

@@ -16,6 +16,8 @@ import numpy as np
 
 from marinesim.angles import math_to_compass
 from marinesim.constants import KNOT
+from marinesim.offshore.route import Route
+from marinesim.offshore.sailing import Sailed
 from marinesim.offshore.traffic import bearing_deg, cpa
 from marinesim.scenario.schema import OtherVessel
 from marinesim.sea.ocean import Components
@@ -40,7 +42,14 @@ class Body:
     def __init__(self, other: OtherVessel, components: Callable[[int], Components]) -> None:
         self.other = other
         self._components = components
-        self._kept: dict[tuple[int, int], Response] = {}
+        self._kept: dict[tuple[int, object], Response] = {}
+        self.route: Route | Sailed = other.route if other.ship is None else Sailed(other.route, other.ship)
+        """Her route: sailed exactly, or by her manoeuvring model (:mod:`marinesim.offshore.sailing`)."""
+
+    def order(self, t: float, **request) -> None:
+        """The instructor's order to her from ``t`` (s) (:meth:`Sailed.order`): she leaves her route for it."""
+        self.route.order(t, **request)
+        self._kept.clear()
 
     def along(self, index: int, times: np.ndarray, dt: float | None = None) -> np.ndarray:
         """The linear outputs (T, :data:`WIDTH`) at ``times`` (s, increasing; a grid of step ``dt`` where given) in
@@ -50,7 +59,7 @@ class Body:
         if not times.size or other.kind == "platform":
             return out
         components = self._components(index)
-        route = other.route
+        route = self.route
         if other.kind == "buoy":
             x, y = route.pieces[0].start
             return _follower(components, x, y, times, out)
@@ -74,7 +83,7 @@ class Body:
 
     def path(self, times: np.ndarray) -> ShipPath:
         """Its track at ``times`` (s)."""
-        return self.other.route.path(times)
+        return self.route.path(times)
 
 
 def _follower(components: Components, x: float, y: float, times: np.ndarray, out: np.ndarray) -> np.ndarray:

@@ -75,6 +75,9 @@ RESPONSES_KEPT = 3
 WAKE_GRID = WakeGrid()
 """The viewer's wake grid: the default one, so the viewer reads the wakes the headless run cached."""
 
+SHIP_ORDER_KEYS = frozenset({"course_deg", "speed_kn", "rudder_deg", "engine", "autopilot"})
+"""The orders another ship takes (:meth:`Simulation.order` with ``vessel``)."""
+
 
 @dataclass(frozen=True)
 class _Change:
@@ -278,16 +281,24 @@ class Simulation:
     def order(self, *, rudder_deg: float | None = None, engine: str | None = None, speed_kn: float | None = None,
               autopilot: bool | None = None, course_deg: float | None = None, set_north_m: float | None = None,
               set_east_m: float | None = None, fault: str | None = None, hoist_m_s: float | None = None,
-              slew_deg_s: float | None = None, helicopter: str | None = None, at: float | None = None) -> None:
+              slew_deg_s: float | None = None, helicopter: str | None = None, vessel: str | None = None,
+              at: float | None = None) -> None:
         """Orders to the ship from ``at`` (s; default now): the rudder by hand (deg, positive to starboard; the
         autopilot off), a telegraph order or the engine set for a speed (kn), the autopilot on (on the present
         heading) or off (the rudder held where it stands), or a course (compass deg) for the autopilot (a DP's
         heading); a DP's position set point (m north and east of her start) or an instructor's ``fault`` on a vessel
         keeping station (:mod:`marinesim.station.vessel`); to her crane, hoist (m/s, positive up, 0 stops) and slew
-        (deg/s, positive to port, 0 stops); to the helicopter, the deck's word (permit, hold, wave_off)."""
+        (deg/s, positive to port, 0 stops); to the helicopter, the deck's word (permit, hold, wave_off). With
+        ``vessel``, the helm, engine and autopilot orders are that other ship's (:meth:`others.Body.order`)."""
         if self.vessel is None:
             raise ParameterError("the scenario has no vessel: no orders")
         t = self.time if at is None else require_at_least("time of an order (s)", at, self.time)
+        if vessel is not None:
+            self._order_other(vessel, t, rudder_deg=rudder_deg, engine=engine, speed_kn=speed_kn,
+                              autopilot=autopilot, course_deg=course_deg, set_north_m=set_north_m,
+                              set_east_m=set_east_m, fault=fault, hoist_m_s=hoist_m_s, slew_deg_s=slew_deg_s,
+                              helicopter=helicopter)
+            return
         if (hoist_m_s is not None or slew_deg_s is not None) and self.lift is None:
             raise ParameterError("the scenario has no [crane]: no hoist or slew")
         if helicopter is not None and self.helicopter is None:
@@ -309,6 +320,20 @@ class Simulation:
         if helicopter is not None:
             {"permit": self.helicopter.permit, "hold": self.helicopter.hold,
              "wave_off": self.helicopter.wave_off}[helicopter](t)
+        self.version += 1
+
+    def _order_other(self, name: str, t: float, **asked) -> None:
+        """Helm, engine and autopilot orders ``asked`` to the other ship ``name`` from ``t`` (s)."""
+        driven = {body.other.name: body for body in self.bodies if body.other.ship is not None}
+        if name not in driven:
+            raise ParameterError(f"no ship {name!r} under her manoeuvring model to take orders "
+                                 f"({', '.join(driven) or 'none'})")
+        helm = {key: value for key, value in asked.items() if value is not None}
+        wrong = sorted(helm.keys() - SHIP_ORDER_KEYS)
+        if wrong or not helm:
+            raise ParameterError(f"orders to {name} are her helm, engine and autopilot "
+                                 f"({', '.join(sorted(SHIP_ORDER_KEYS))})" + (f", not {wrong[0]}" if wrong else ""))
+        driven[name].order(t, **helm)
         self.version += 1
 
     @property

@@ -2,13 +2,13 @@
 
 Axes as :mod:`marinesim.manoeuvring.state`: the vessel's low-frequency position ``north``, ``east`` (m, from the
 set point) and heading ``psi`` (rad, clockwise from north); body axes x forward, y to starboard. A line runs from
-its far end, given in the earth frame as (north m, east m) from the set point, to its fairlead on the vessel, given
-in the body frame as (x m forward, y m to starboard, z m up from the waterline). The far end is an anchor on the
-seabed, or for a hawser a fixed point above the water (an FPSO's stern chock, the FPSO not simulated: the point
-does not move). The fairleads stay at their depth or height: the vessel's wave-frequency motion (heave, roll,
-pitch) is not felt by the lines. An anchored line's wet weight acts over its whole length (a fairlead above the
-waterline: its few metres in air counted wet); a hawser hangs in air and weighs its mass (a slack hawser dipping
-into the sea is still weighed in air).
+its far end, given in the earth frame as (north m, east m) from the set point, to its fairlead on the vessel, given in
+the body frame as (x m forward, y m to starboard, z m up from the waterline). The far end is an anchor on the seabed, or
+for a hawser a fixed point above the water (an FPSO's stern chock: the FPSO's own motions, drawn where a scenario has
+her as a body, do not move it). The fairleads stay at their depth or height: the vessel's wave-frequency motion (heave,
+roll, pitch) is not felt by the lines. An anchored line's wet weight acts over its whole length (a fairlead above the
+waterline: its few metres in air counted wet); a hawser hangs in air and weighs its mass (a slack hawser dipping into
+the sea is still weighed in air).
 
 Line physics is MoorPy's (``moorpy.Catenary.catenary``: an elastic catenary with seabed contact, no seabed
 friction; a hawser's hung from its fixed point, ``CB`` < 0) and its line-property library

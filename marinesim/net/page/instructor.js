@@ -267,6 +267,7 @@
     buildCriteria(crit, same);
     buildEvents(Array.isArray(sc.events) ? sc.events : []);
     buildFaults(Array.isArray(sc.faults) ? sc.faults : []);
+    buildDriven(Array.isArray(sc.driven) ? sc.driven : []);
 
     model.track = [];
     model.lastTrackT = -Infinity;
@@ -609,8 +610,9 @@
     }
     const [words, used] = fieldWords(e);
     const label = {change: "sea", weather: "weather", order: "order"}[a] || a || "action";
-    const head = a === "change" ? "sea change: " : a === "weather" ? "weather: " : a === "order" ? "" : a + ": ";
-    return [label, head + words + rest(e, ["action"].concat(used)), "action"];
+    const ship = a === "order" && typeof e.vessel === "string" ? e.vessel + ": " : "";
+    const head = a === "change" ? "sea change: " : a === "weather" ? "weather: " : a === "order" ? ship : a + ": ";
+    return [label, head + words + rest(e, ["action", "vessel"].concat(used)), "action"];
   }
 
   /** Readable [label, words, style] for one journal entry. */
@@ -732,6 +734,38 @@
       sel.appendChild(o);
     }
     $("faults-box").hidden = faults.length === 0;
+  }
+
+  // ---------------------------------------------------------------- other ships the instructor drives
+  function buildDriven(names) {
+    const sel = $("drive-ship");
+    sel.replaceChildren();
+    for (const name of names) {
+      const o = el("option", "", name);
+      o.value = String(name);
+      sel.appendChild(o);
+    }
+    $("drive-box").hidden = names.length === 0;
+  }
+
+  function orderShip() {
+    const fields = {vessel: $("drive-ship").value};
+    for (const [id, key, lo, hi] of [["drive-course", "course_deg", 0, 360], ["drive-speed", "speed_kn", 0, 30]]) {
+      const input = $(id);
+      if (input.value === "") continue;
+      const v = Number(input.value);
+      if (!isNum(v) || v < lo || v > hi) {
+        input.classList.add("bad");
+        showError(key + ": expected " + lo + " to " + hi, true);
+        return;
+      }
+      fields[key] = v;
+    }
+    if (!fields.vessel || Object.keys(fields).length === 1) {
+      showError("traffic: give her a course or a speed", true);
+      return;
+    }
+    sendAction("order", fields);
   }
 
   // ---------------------------------------------------------------- state
@@ -1267,6 +1301,7 @@
     model.scaleTouched = performance.now();
     send({type: "control", control: "scale", value: Number($("scale").value)});
   });
+  $("drive-order").addEventListener("click", orderShip);
   $("fault-inject").addEventListener("click", function () {
     const f = $("fault-select").value;
     if (!f) {
