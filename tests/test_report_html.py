@@ -7,6 +7,8 @@ import copy
 import dataclasses
 import io
 import re
+from collections import Counter
+from html.parser import HTMLParser
 
 import numpy as np
 import pytest
@@ -160,7 +162,7 @@ def test_the_page_says_what_the_debrief_needs(report):
         assert objective.text in page and f"'>{objective.verdict}</span>" in page, objective
     assert "<td class='num'>6.5 s</td>" in page, "the alarm table gives the acknowledgement delay"
     assert "not acknowledged" in page and "did not happen" in page
-    assert "&lt;script&gt;alert(&#x27;wave&#x27;)&lt;/script&gt; &amp; check the lashings" in page, "text is escaped"
+    assert "&lt;script&gt;alert(&#39;wave&#39;)&lt;/script&gt; &amp; check the lashings" in page, "text is escaped"
     assert page.count("<script") == 1, "one script only: the plot counter"
     assert not re.search(r"(?:src|href)=['\"]?(?:https?:|//)", page) and "http://" not in page, "nothing fetched"
     sections = ("briefing", "criteria", "statistics", "ship", "alarms", "sickness", "log", "conditions")
@@ -190,6 +192,48 @@ def test_missing_parts_leave_their_sections_out():
     assert "<section id='ship'>" not in page
     bare = render_report(Debrief(title="bare", criteria=[], events=[], alarms=[], messages=[], ship=None))
     assert "<h1>bare</h1>" in bare and "<img" not in bare and "class='badge none verdict'>no value<" in bare
+
+
+MARKUP = "<script>alert(1)</script> \"quoted\" & <b>bold</b>"
+"""Text that would be a script and a bold element if the page took it for markup."""
+
+
+class _Tags(HTMLParser):
+    """A page's start tags (counted by name) and its text, as a browser's parser splits them."""
+
+    def __init__(self, page: str) -> None:
+        super().__init__()
+        self.tags: Counter = Counter()
+        self.text: list[str] = []
+        self.feed(page)
+        self.close()
+
+    def handle_starttag(self, tag: str, attrs: list) -> None:
+        self.tags[tag] += 1
+
+    def handle_data(self, data: str) -> None:
+        self.text.append(data)
+
+
+def test_markup_in_the_data_is_shown_as_text():
+    """A criterion's name, an objective, an instructor's message and the scenario's name and file holding markup: the
+    page has the same elements as with plain words in their place (one script, the plot counter), and the markup's
+    characters are its text. What would be wrong: the texts written into the page unescaped, a script run."""
+    def page(text: str) -> str:
+        series = Series([1.0, 2.0, 3.0], [1.0, 2.5, 1.5])
+        name = f"roll {text}"
+        return render_report(Debrief(
+            title=f"landing {text}", verdict="within limits",
+            briefing=Briefing("Land on the deck.", [Objective(f"Keep the roll low {text}", [name], "met")]),
+            conditions=Conditions(scenario=f"configs/{text}.toml", duration_s=3.0),
+            criteria=[_criterion(name, "deck", "roll_max_deg", "deg", 3.0, 1.0, series)],
+            messages=[Message(2.0, f"stand by {text}", "instructor")]))
+
+    marked, plain = _Tags(page(MARKUP)), _Tags(page("plain"))
+    assert marked.tags == plain.tags and marked.tags["script"] == 1, marked.tags - plain.tags
+    for text in (f"landing {MARKUP}", f"roll {MARKUP}", f"Keep the roll low {MARKUP}", f"stand by {MARKUP}",
+                 f"configs/{MARKUP}.toml"):
+        assert any(text in chunk for chunk in marked.text), f"{text!r} is not the page's text"
 
 
 def test_a_three_hour_run_keeps_every_point_and_a_small_page():

@@ -9,7 +9,8 @@ debrief of a session log says at the top whether the log is verified; one that i
 "UNVERIFIED LOG" banner above everything else, saying why, and the page's title says so too. A run stopped
 before its planned duration says so under the title, with the share that ran; its verdict reads INCOMPLETE
 unless a criterion went above its limit, and each objective and criterion it could not judge NOT JUDGED. A
-part the data leave out (or give empty) is left out of the page. Every text from the data is HTML-escaped.
+part the data leave out (or give empty) is left out of the page. The markup is Jinja2's templates in ``templates/``,
+autoescaped: every text from the data is HTML-escaped by the engine.
 The same data give the same bytes: no dates, and the PNGs carry no metadata (:mod:`marinesim.report.plots`).
 The one script counts the plots the browser decoded into ``body[data-plots-loaded]``, for a test to read the
 rendered page.
@@ -18,14 +19,16 @@ rendered page.
 from __future__ import annotations
 
 import base64
-import html
 import math
 from pathlib import Path
+
+import jinja2
+from markupsafe import Markup
 
 from marinesim.atomic import atomic_path
 from marinesim.constants import NAUTICAL_MILE
 from marinesim.criteria.monitor import Level
-from marinesim.report.debrief import Conditions, Debrief, LogCheck
+from marinesim.report.debrief import Conditions, Debrief
 from marinesim.scenario.schema import briefing_paragraphs
 from marinesim.session.exercise import share_words
 from marinesim.report.plots import (CAUTION, EXCEEDED, NONE, OK, STATION_M, clock, compass, criterion_png,
@@ -105,6 +108,9 @@ table{{font-size:8.5pt}} th,td{{padding:3px 5px}} .badge{{font-size:7.5pt;paddin
 SCRIPT = ("addEventListener('load',function(){var n=0;document.querySelectorAll('img.plot').forEach("
           "function(i){if(i.complete&&i.naturalWidth>0)n++});document.body.dataset.plotsLoaded=n})")
 """Counts the plots the browser decoded (a test reads it from the rendered page)."""
+TEMPLATES = jinja2.Environment(loader=jinja2.PackageLoader("marinesim.report", "templates"), autoescape=True,
+                               undefined=jinja2.StrictUndefined, keep_trailing_newline=True)
+"""The report's templates (``templates/``: the page, report.html.j2, and a macro per section), every value escaped."""
 
 
 def write_report(data: Debrief, out: Path) -> Path:
@@ -120,23 +126,20 @@ def write_report(data: Debrief, out: Path) -> Path:
 def render_report(data: Debrief) -> str:
     """The report of ``data`` (see the module's docstring) as the text of one HTML page."""
     page = _Page(data)
-    parts = [page.header_section(), page.briefing_section(), page.criteria_section(), page.statistics_section(),
-             page.ship_section(), page.alarms_section(), page.sickness_section(), page.log_section(),
-             page.conditions_section()]
-    title = _e(data.title or "exercise")
     check = data.log_check
-    unverified = " (UNVERIFIED LOG)" if check and not check.verified else ""
-    return ("<!DOCTYPE html>\n<html lang='en'>\n<head>\n<meta charset='utf-8'>\n"
-            "<meta name='viewport' content='width=device-width,initial-scale=1'>\n"
-            f"<title>Debrief{unverified}: {title}</title>\n<style>{CSS}</style>\n</head>\n<body>\n<main>\n"
-            + "\n".join(part for part in parts if part)
-            + f"\n<footer>After-action report written by marinesim {_e(page.conditions.marinesim or '')}"
-            " from the data named above; the same run gives this same file.</footer>\n</main>\n"
-            f"<script>{SCRIPT}</script>\n</body>\n</html>\n")
+    # CSS and SCRIPT are this module's constants, no data in them, and go into <style> and <script>, raw text where
+    # an entity is not decoded: escaping their quotes would break them, so they are marked safe.
+    return TEMPLATES.get_template("report.html.j2").render(
+        title=data.title or "exercise", unverified=bool(check and not check.verified), css=Markup(CSS),
+        script=Markup(SCRIPT), marinesim=page.conditions.marinesim or "", header=page.header_section(),
+        briefing=page.briefing_section(), criteria=page.criteria_section(), statistics=page.statistics_section(),
+        ship=page.ship_section(), alarms=page.alarms_section(), sickness=page.sickness_section(),
+        log=page.log_section(), conditions=page.conditions_section())
 
 
 class _Page:
-    """The report's sections, each HTML text or '' when the data have nothing for it."""
+    """The values of the report's sections, for its templates: each a dict or list, or None when the data have
+    nothing for it."""
 
     def __init__(self, data: Debrief) -> None:
         self.data = data
@@ -156,100 +159,60 @@ class _Page:
     def clock(self, t: float | None) -> str:
         return "—" if t is None else clock(t, self.long)
 
-    def header_section(self) -> str:
-        verdict = self.data.verdict or "no value"
-        source = self.data.source
+    def header_section(self) -> dict:
+        """The title, the overall verdict, the facts; the problems of a log that is not verified (None: no banner)."""
         stopped = self.data.stopped_early
         ran = stopped or (f"{self.duration:g} s" if self.duration else "")
-        facts = [self._fact("Run", self.clock(self.duration) if self.duration else "—",
-                            " · ".join(x for x in (ran, _seed(self.conditions.seed)) if x),
-                            "none" if stopped else "")]
+        facts = [_fact("Run", self.clock(self.duration) if self.duration else "—",
+                       " · ".join(x for x in (ran, _seed(self.conditions.seed)) if x), "none" if stopped else "")]
         if self.criteria:
             readings = [c.reading for c in self.criteria]
             worst = next((LEVEL_BADGES[lv] for lv in (Level.EXCEEDED, Level.CAUTION, Level.OK) if lv in readings),
                          "none" if stopped else "")
             counts = ", ".join(f"{readings.count(reading)} {words}" for reading, words in SHOWN.items()
                                if reading in readings)
-            facts.append(self._fact("Criteria", str(len(self.criteria)), counts, worst))
+            facts.append(_fact("Criteria", str(len(self.criteria)), counts, worst))
         alarms = [a for _, a in self.alarms]
         acked = [a.acknowledged_s - a.raised_s for a in alarms if a.acknowledged_s is not None]
         if self.data.alarms is not None:
             missed = len(alarms) - len(acked)
             detail = ([f"{len(acked)} acknowledged" + (f", slowest {max(acked):.1f} s" if acked else "")]
                       + ([f"{missed} not acknowledged"] if missed else []) if alarms else ["none raised"])
-            facts.append(self._fact("Alarms", str(len(alarms)), detail,
-                                    LEVEL_BADGES[Level.EXCEEDED if alarms else Level.OK]))
+            facts.append(_fact("Alarms", str(len(alarms)), detail,
+                               LEVEL_BADGES[Level.EXCEEDED if alarms else Level.OK]))
         objectives = self.data.briefing.objectives if self.data.briefing is not None else []
         if objectives:
             met = sum(o.verdict in ("met", "met with caution") for o in objectives)
             verdicts = [o.verdict for o in objectives]
             worst = next((BADGES[v] for v in ("not met", "not judged", "met with caution") if v in verdicts),
                          BADGES["met"])
-            facts.append(self._fact("Objectives", f"{met} of {len(objectives)} met",
-                                    _count(verdicts, "not met", "not judged", "met with caution"), worst))
+            facts.append(_fact("Objectives", f"{met} of {len(objectives)} met",
+                               _count(verdicts, "not met", "not judged", "met with caution"), worst))
         check = self.data.log_check
-        return ("<header class='top'>\n" + (self._unverified(check) if check and not check.verified else "")
-                + "<div class='kicker'>After-action report · debrief</div>\n"
-                f"<div class='titlerow'><h1>{_e(self.data.title or 'exercise')}</h1>"
-                f"{_badge(verdict, extra='verdict')}</div>\n"
-                + (f"<p class='source'>{_e(source)}</p>\n" if source else "")
-                + (f"<p class='stopped'><b>Stopped early:</b> {_e(stopped)} of the exercise ran. An objective is "
-                   "judged only over the whole run, unless one of its criteria went above its limit before the "
-                   "stop: the others are NOT JUDGED.</p>\n" if stopped else "")
-                + ("<p class='logcheck'>Session log verified: it is the log the session wrote on this installation, "
-                   "unchanged and whole (it ends with its end entry).</p>\n" if check and check.verified else "")
-                + f"<dl class='facts'>{''.join(facts)}</dl>\n</header>")
+        return {"unverified": list(check.problems) if check and not check.verified else None,
+                "title": self.data.title or "exercise", "verdict": _badge(self.data.verdict or "no value"),
+                "source": self.data.source, "stopped": stopped, "verified": bool(check and check.verified),
+                "facts": facts}
 
-    @staticmethod
-    def _unverified(check: LogCheck) -> str:
-        """The banner of a debrief made from a log that is not verified, with why."""
-        reasons = "".join(f"<li>{_e(problem)}</li>" for problem in check.problems)
-        return ("<div class='unverified' role='alert'><strong>UNVERIFIED LOG</strong>\n"
-                "<p>This debrief was made from a session log that cannot be shown to be the one the session "
-                "wrote:</p>\n" + (f"<ul>{reasons}</ul>\n" if reasons else "")
-                + "<p>Its times, alarms, acknowledgement delays and verdicts may not be what happened: do not take it "
-                "as a record of the trainee's performance.</p></div>\n")
-
-    @staticmethod
-    def _fact(name: str, value: str, detail: str | list[str] = "", level: str = "") -> str:
-        lines = [detail] if isinstance(detail, str) else detail
-        small = "".join(f"<small>{_e(line)}</small>" for line in lines if line)
-        return f"<div class='{level}'><dt>{name}</dt><dd>{_e(value)}{small}</dd></div>"
-
-    def briefing_section(self) -> str:
+    def briefing_section(self) -> dict | None:
+        """The briefing's paragraphs (each its lines) and its objectives with their verdicts."""
         briefing = self.data.briefing
         if briefing is None:
-            return ""
-        out = ["<section id='briefing'>\n<h2>Briefing</h2>"]
-        out += [f"<p>{'<br>'.join(map(_e, lines))}</p>" for lines in briefing_paragraphs(briefing.text or "")]
-        objectives = briefing.objectives
-        if objectives:
-            rows = [(_td(str(i), "num"),
-                     _td(_e(o.text) + (f"<br><span class='muted'>{_e(o.why)}</span>" if o.why else "")),
-                     _td(_e(", ".join(o.criteria)) or "<span class='muted'>—</span>"),
-                     _td(_badge(o.verdict or "no value")))
-                    for i, o in enumerate(objectives, start=1)]
-            out.append("<h3>Objectives and how they went</h3>"
-                       + _table((("#", "num"), "objective", "judged by", "verdict"), rows))
-        return "\n".join(out) + "\n</section>"
+            return None
+        objectives = [{"number": i, "text": o.text, "why": o.why, "criteria": ", ".join(o.criteria),
+                       "verdict": _badge(o.verdict or "no value")}
+                      for i, o in enumerate(briefing.objectives, start=1)]
+        return {"paragraphs": briefing_paragraphs(briefing.text or ""), "objectives": objectives}
 
-    def criteria_section(self) -> str:
+    def criteria_section(self) -> list[dict] | None:
+        """Each criterion's plot over the run and its caption."""
         if not self.criteria:
-            return ""
-        out = ["<section id='criteria'>\n<h2>The exercise, criterion by criterion</h2>",
-               "<p class='intro'>Each criterion's running value at every evaluation: "
-               "<span class='k'><span class='key value'></span>value</span> "
-               "<span class='k'><span class='key limit'></span>limit</span> "
-               "<span class='k'><span class='key caution'></span>caution</span> "
-               "<span class='k'><span class='key span'></span>above the limit</span> "
-               "<span class='k'><span class='key event'></span>event E<i>n</i></span> "
-               "<span class='k'>&nbsp;<b style='color:var(--exceeded)'>▼A<i>n</i></b> alarm raised</span>. "
-               "Grey at the start: the running window still filling, no value yet.</p>"]
+            return None
+        out = []
         for criterion in self.criteria:
             mine = [(n, a) for n, a in self.alarms if a.criterion == criterion.name]
             png = criterion_png(criterion, self.duration, self.events, mine)
             point = f" ({criterion.point})" if criterion.point else ""
-            alt = f"{criterion.name}{point} over the run"
             unit = criterion.unit
             bits = []
             if criterion.value is not None:
@@ -265,52 +228,41 @@ class _Page:
                 bits.append(f"expected {with_unit(criterion.expected, unit)} in this sea"
                             + (f", this run at the {_ordinal(criterion.percentile)} percentile"
                                if criterion.percentile is not None else ""))
-            caption = (f"{_level_badge(criterion.reading)} <b>{_e(criterion.name)}</b>"
-                       f"<span>{_e(' · '.join(bits))}</span>")
-            out.append(f"<figure>{_img(png, alt)}<figcaption>{caption}</figcaption></figure>")
-        return "\n".join(out) + "\n</section>"
+            out.append({"plot": _img(png, f"{criterion.name}{point} over the run"),
+                        "badge": _level_badge(criterion.reading), "name": criterion.name, "caption": " · ".join(bits)})
+        return out
 
-    def statistics_section(self) -> str:
+    def statistics_section(self) -> dict | None:
+        """Each criterion's worst, time above its limit and alarms; ``odds``: against the sea it met, where known."""
         if not self.criteria:
-            return ""
+            return None
         rows = []
         for c in self.criteria:
             unit, limit = c.unit, c.limit
-            alarms = sum(1 for _, a in self.alarms if a.criterion == c.name)
             above = c.time_exceeded_s
             share = "—" if above is None or not self.duration else f"{100 * above / self.duration:.1f} %"
-            point = f"<br><span class='muted'>{_e(c.point)}</span>" if c.point else ""
-            rows.append((_td(f"<b>{_e(c.name)}</b>{point}"), _td(_level_badge(c.reading)),
-                         _td("—" if c.value is None else _e(with_unit(c.value, unit)), "num"),
-                         _td(self.clock(c.value_at_s) if c.value is not None else "—", "num"),
-                         _td("—" if limit is None else _e(with_unit(limit, unit)), "num"),
-                         _td("—" if above is None else f"{above:.0f} s", "num"), _td(share, "num"),
-                         _td(str(alarms), "num"), _td(self.clock(c.first_exceeded_s), "num")))
-        odds = [(_td(f"<b>{_e(c.name)}</b>"), _td("—" if c.value is None else _e(with_unit(c.value, c.unit)), "num"),
-                 _td("—" if c.limit is None else _e(with_unit(c.limit, c.unit)), "num"),
-                 _td(_e(with_unit(c.expected, c.unit)), "num"),
-                 _td("—" if c.percentile is None else _ordinal(c.percentile), "num"),
-                 _td("—" if c.chance_exceeded is None else _e(share_words(c.chance_exceeded)), "num"))
+            rows.append({"name": c.name, "point": c.point, "badge": _level_badge(c.reading),
+                         "worst": "—" if c.value is None else with_unit(c.value, unit),
+                         "at": self.clock(c.value_at_s) if c.value is not None else "—",
+                         "limit": "—" if limit is None else with_unit(limit, unit),
+                         "above": "—" if above is None else f"{above:.0f} s",
+                         "share": share,
+                         "alarms": sum(1 for _, a in self.alarms if a.criterion == c.name),
+                         "first": self.clock(c.first_exceeded_s)})
+        odds = [{"name": c.name, "worst": "—" if c.value is None else with_unit(c.value, c.unit),
+                 "limit": "—" if c.limit is None else with_unit(c.limit, c.unit),
+                 "expected": with_unit(c.expected, c.unit),
+                 "percentile": "—" if c.percentile is None else _ordinal(c.percentile),
+                 "chance": "—" if c.chance_exceeded is None else share_words(c.chance_exceeded)}
                 for c in self.criteria if c.expected is not None]
-        sea = ("<h3>What the sea made of it</h3>\n<p class='intro'>The same run's worst values against the sea the "
-               "vessel met, from the spectral estimate (docs/FORMULAS.md): <i>expected</i>, the median worst over "
-               "seeds; <i>percentile</i>, where this run's worst falls among seeds; <i>chance above the limit</i>, "
-               "how often the worst goes above it in that sea. A verdict at a high percentile owes more to the draw "
-               "of the waves than to the sea state.</p>\n"
-               + _table(("criterion", ("worst", "num"), ("limit", "num"), ("expected", "num"), ("percentile", "num"),
-                         ("chance above the limit", "num")), odds)) if odds else ""
-        return ("<section id='statistics'>\n<h2>Exceedance statistics</h2>\n"
-                f"<p class='intro'>Times are elapsed {'h:min:s' if self.long else 'min:s'} from the start of the "
-                "run; the share is of the whole run.</p>\n"
-                + _table(("criterion", "level", ("worst", "num"), ("at", "num"), ("limit", "num"),
-                          ("time above limit", "num"), ("share of run", "num"), ("alarms", "num"),
-                          ("first above", "num")), rows) + "\n" + sea + "\n</section>")
+        return {"clock": "h:min:s" if self.long else "min:s", "rows": rows, "odds": odds}
 
-    def ship_section(self) -> str:
-        """The ship's track over the ground and her handling (heading, speed, rudder, propeller), with a vessel."""
+    def ship_section(self) -> dict | None:
+        """The ship's track over the ground and her handling (heading, speed, rudder, propeller), with a vessel; on
+        station, her footprint and her thrusters' or mooring lines' work."""
         ship = self.ship
         if not ship:
-            return ""
+            return None
         name = ship.get("name") or "the ship"
         track = track_png(ship, self.events, self.alarms)
         handling = handling_png(ship, self.events, self.duration)
@@ -341,72 +293,49 @@ class _Page:
         rpm = _floats(ship.get("propeller_rpm"))
         if rpm and min(rpm) < 0:
             handled.append(f"astern to {min(rpm):.0f} rpm")
-        out = ["<section id='ship'>\n<h2>Ship handling</h2>",
-               f"<p class='intro'><b>{_e(name)}</b>: {_e(ship.get('model') or 'no model given')}. Her track over "
-               "the ground (midship, from the start; north up, to scale) with her outline every few minutes along "
-               "her heading and filled where she ended, each event E<i>n</i> and alarm A<i>n</i> marked where she "
-               "was when it happened; then her heading with the autopilot's set course (dashed where it steered), "
-               "speed over ground, rudder angle and order (+ starboard), and propeller rpm (− astern) on the time "
-               "axis of the plots above.</p>",
-               f"<figure>{_img(track, f'track of {name} over the ground')}<figcaption><b>Track</b>"
-               f"<span>{_e(' · '.join(moved))}</span></figcaption></figure>",
-               f"<figure>{_img(handling, f'heading, speed, rudder and propeller of {name} over the run')}"
-               f"<figcaption><b>Handling</b><span>{_e(' · '.join(handled))}</span></figcaption></figure>"]
+        out = {"name": name, "model": ship.get("model") or "no model given",
+               "track": _img(track, f"track of {name} over the ground"), "moved": " · ".join(moved),
+               "handling": _img(handling, f"heading, speed, rudder and propeller of {name} over the run"),
+               "handled": " · ".join(handled), "station": None}
         station = ship.get("station")
         if station:
             offset = max((math.hypot(n, e) for n, e in zip(station["north_from_set_point_m"],
                                                             station["east_from_set_point_m"])), default=0.0)
             kept = "within" if offset <= station["footprint_m"] else "outside"
             work = "thruster use" if station.get("thrusters") else "mooring line tensions"
-            out += [f"<figure>{_img(footprint_png(ship), f'footprint of {name} around the set point')}"
-                    f"<figcaption><b>Footprint</b><span>largest offset {offset:.1f} m, {kept} the "
-                    f"{station['footprint_m']:g} m footprint</span></figcaption></figure>",
-                    f"<figure>{_img(station_use_png(ship, self.duration), f'wind and {work} of {name}')}"
-                    f"<figcaption><b>Station keeping</b><span>the wind and {work} over the run</span></figcaption>"
-                    "</figure>"]
-        return "\n".join(out) + "\n</section>"
+            out["station"] = {"footprint": _img(footprint_png(ship), f"footprint of {name} around the set point"),
+                              "offset": f"{offset:.1f}", "kept": kept, "size": f"{station['footprint_m']:g}",
+                              "use": _img(station_use_png(ship, self.duration), f"wind and {work} of {name}"),
+                              "work": work}
+        return out
 
-    def alarms_section(self) -> str:
+    def alarms_section(self) -> dict | None:
+        """The timeline of events, messages, actions and alarms, and the alarms one by one (``recorded``: the
+        debrief records the alarms, so that none raised is said)."""
         if not (self.alarms or self.events or self.messages or self.actions):
-            return ""
-        out = ["<section id='alarms'>\n<h2>Timeline and alarms</h2>",
-               "<p class='intro'>Events (E<i>n</i>), messages (filled: the instructor's, open: an event's), "
-               "instructor actions, and each alarm A<i>n</i>: dark red from raised to acknowledged (hatched: never "
-               "acknowledged), light red until the value was back within the limit.</p>",
-               "<figure>" + _img(timeline_png(self.duration, self.events, self.messages, self.actions, self.alarms),
-                                 "timeline of events, messages, actions and alarms") + "</figure>"]
-        if self.alarms:
-            rows = []
-            for n, a in self.alarms:
-                acked, cleared = a.acknowledged_s, a.cleared_s
-                value, limit = _value_limit(a.value, a.limit, self.units.get(a.criterion))
-                rows.append((_td(f"A{n}", "tag"), _td(_e(a.criterion)),
-                             _td(self.clock(a.raised_s), "num"), _td(_e(f"{value} / {limit}"), "num"),
-                             _td("<span class='warn'>not acknowledged</span>" if acked is None else self.clock(acked),
-                                 "num"),
-                             _td("—" if acked is None else f"{acked - a.raised_s:.1f} s", "num"),
-                             _td("<span class='muted'>not by the end</span>" if cleared is None
-                                 else self.clock(cleared), "num")))
-            out.append("<h3>Alarms</h3>" + _table(("#", "criterion", ("raised", "num"), ("value / limit", "num"),
-                                                   ("acknowledged", "num"), ("acknowledgement delay", "num"),
-                                                   ("back within limit", "num")), rows))
-        elif self.data.alarms is not None:
-            out.append("<p>No alarm was raised.</p>")
-        return "\n".join(out) + "\n</section>"
+            return None
+        rows = []
+        for n, a in self.alarms:
+            acked = a.acknowledged_s
+            value, limit = _value_limit(a.value, a.limit, self.units.get(a.criterion))
+            rows.append({"tag": f"A{n}", "criterion": a.criterion, "raised": self.clock(a.raised_s),
+                         "value_limit": f"{value} / {limit}",
+                         "acknowledged": None if acked is None else self.clock(acked),
+                         "delay": "—" if acked is None else f"{acked - a.raised_s:.1f} s",
+                         "cleared": None if a.cleared_s is None else self.clock(a.cleared_s)})
+        timeline = timeline_png(self.duration, self.events, self.messages, self.actions, self.alarms)
+        return {"timeline": _img(timeline, "timeline of events, messages, actions and alarms"), "rows": rows,
+                "recorded": self.data.alarms is not None}
 
-    def sickness_section(self) -> str:
-        sickness = self.data.sickness
-        if not sickness:
-            return ""
-        rows = [(_td(_e(s.point)),
-                 _td("—" if s.msi_percent is None else f"{s.msi_percent:.1f} %", "num"),
-                 _td("—" if s.msdv_m_s1_5 is None else f"{s.msdv_m_s1_5:.1f}", "num")) for s in sickness]
-        return ("<section id='sickness'>\n<h2>Motion sickness</h2>\n<p class='intro'>MSI: the share of people "
-                "expected to vomit in a 2 h exposure (O'Hanlon &amp; McCauley); MSDV: the ISO 2631-1 motion sickness "
-                "dose value of the vertical acceleration, W<sub>f</sub>-weighted, over the exercise.</p>\n"
-                + _table(("point", ("MSI", "num"), ("MSDV (m/s¹·⁵)", "num")), rows, css="narrow") + "\n</section>")
+    def sickness_section(self) -> list[dict] | None:
+        """MSI (%) and MSDV (m/s^1.5) at each of the vessel's points."""
+        if not self.data.sickness:
+            return None
+        return [{"point": s.point, "msi": "—" if s.msi_percent is None else f"{s.msi_percent:.1f} %",
+                 "msdv": "—" if s.msdv_m_s1_5 is None else f"{s.msdv_m_s1_5:.1f}"} for s in self.data.sickness]
 
-    def log_section(self) -> str:
+    def log_section(self) -> list[dict] | None:
+        """The events, alarms, messages and actions in time order; an event that did not happen last."""
         entries = []  # (time, order, tag, kind, text, class)
         for event in self.events:
             what = event.what or ""
@@ -429,61 +358,55 @@ class _Page:
         for action in self.actions:
             entries.append((action.time_s, 3, "", "action", action.what or "", ""))
         if not entries:
-            return ""
+            return None
         entries.sort(key=lambda r: (r[0] is None, r[0] or 0.0, r[1]))
-        rows = [(_td(self.clock(t), "num"), _td(_e(tag), "tag"), _td(_e(kind)), _td(_e(text)), css)
+        return [{"time": self.clock(t), "tag": tag, "kind": kind, "text": text, "css": css}
                 for t, _, tag, kind, text, css in entries]
-        return ("<section id='log'>\n<h2>Log</h2>\n"
-                + _table((("time", "num"), "", "what", "detail"), rows) + "\n</section>")
 
-    def conditions_section(self) -> str:
+    def conditions_section(self) -> dict | None:
+        """What the run was made from (a row each), the vessel's points (m) and the sea at the start."""
         c = self.data.conditions
         if c is None:
-            return ""
+            return None
         rows = []
         if c.scenario:
-            rows.append(("scenario", _file(c.scenario, c.scenario_sha256)))
+            rows.append(_row("scenario", file=_file(c.scenario, c.scenario_sha256)))
         if c.log:
             check = self.data.log_check
-            status = ("" if check is None else "<br><b>verified</b>" if check.verified
-                      else "<br><span class='warn'>UNVERIFIED</span>")
-            rows.append(("session log", _file(c.log, c.log_sha256) + status))
+            rows.append(_row("session log", file=_file(c.log, c.log_sha256),
+                             check=None if check is None else "verified" if check.verified else "unverified"))
         if c.seed is not None:
-            rows.append(("random seed", _e(str(c.seed))))
+            rows.append(_row("random seed", str(c.seed)))
         if c.duration_s is not None:
             step = f", time step {c.dt_s:g} s" if c.dt_s is not None else ""
             early = self.data.stopped_early
-            ran = f", stopped early: ran {_e(early)}" if early else ""
-            rows.append(("run", f"{c.duration_s:g} s ({self.clock(c.duration_s)}){ran}{step}"))
+            ran = f", stopped early: ran {early}" if early else ""
+            rows.append(_row("run", f"{c.duration_s:g} s ({self.clock(c.duration_s)}){ran}{step}"))
         if c.marinesim:
-            rows.append(("marinesim", _e(str(c.marinesim))))
+            rows.append(_row("marinesim", str(c.marinesim)))
         vessel = c.vessel
         if vessel is not None and vessel.rao:
-            rows.append(("vessel (RAO)", _file(vessel.rao, vessel.rao_sha256)))
+            rows.append(_row("vessel (RAO)", file=_file(vessel.rao, vessel.rao_sha256)))
         if vessel is not None and (vessel.speed_kn is not None or vessel.heading_deg is not None):
-            rows.append(("speed, heading", f"{_plain(vessel.speed_kn)} kn, {_plain(vessel.heading_deg)}°"))
-        out = ["<section id='conditions'>\n<h2>Conditions</h2>",
-               _table(("", ""), [(_td(f"<b>{name}</b>"), _td(value)) for name, value in rows], head=False)]
+            rows.append(_row("speed, heading", f"{_plain(vessel.speed_kn)} kn, {_plain(vessel.heading_deg)}°"))
         points = vessel.points_m if vessel is not None else {}
-        if points:
-            prows = [(_td(_e(name)), *(_td(_plain(x), "num") for x in (list(p) + [None] * 3)[:3]))
-                     for name, p in points.items()]
-            out.append("<h3>Points on the vessel</h3>"
-                       + _table(("point", ("x (m)", "num"), ("y (m)", "num"), ("z (m)", "num")), prows, css="narrow"))
-        seas = c.sea
-        if seas:
-            srows = [(_td(str(i), "num"), _td(_unit(s.hs_m, " m", ".2f"), "num"),
-                      _td(_unit(s.tp_s, " s", ".1f"), "num"), _td(_unit(s.from_deg, "°", ".0f"), "num"),
-                      _td(_unit(s.gamma, "", "g"), "num"), _td(_unit(s.spreading_s, "", "g"), "num"))
-                     for i, s in enumerate(seas, start=1)]
-            out.append("<h3>Sea at the start</h3>" + _table((("system", "num"), ("Hs", "num"), ("Tp", "num"),
-                                                               ("from", "num"), ("JONSWAP γ", "num"),
-                                                               ("spreading s", "num")), srows, css="narrow"))
-        return "\n".join(out) + "\n</section>"
+        seas = [[str(i), _unit(s.hs_m, " m", ".2f"), _unit(s.tp_s, " s", ".1f"), _unit(s.from_deg, "°", ".0f"),
+                 _unit(s.gamma, "", "g"), _unit(s.spreading_s, "", "g")] for i, s in enumerate(c.sea or [], start=1)]
+        return {"rows": rows, "seas": seas,
+                "points": [{"name": name, "xyz": [_plain(x) for x in (list(p) + [None] * 3)[:3]]}
+                           for name, p in (points or {}).items()]}
 
 
-def _e(text: object) -> str:
-    return html.escape(str(text))
+def _fact(name: str, value: str, detail: str | list[str] = "", level: str = "") -> dict:
+    """A fact of the header: its name, value, lines of detail and colour class ('' for none)."""
+    lines = [detail] if isinstance(detail, str) else detail
+    return {"name": name, "value": value, "details": [line for line in lines if line], "level": level}
+
+
+def _row(name: str, text: str | None = None, file: dict | None = None, check: str | None = None) -> dict:
+    """A row of the conditions: its ``text`` or ``file`` (:func:`_file`); ``check``: a session log's "verified",
+    "unverified" or None."""
+    return {"name": name, "text": text, "file": file, "check": check}
 
 
 def _value_limit(value: float | None, limit: float | None, unit: str | None) -> tuple[str, str]:
@@ -516,10 +439,9 @@ def _unit(value: float | None, unit: str, fmt: str) -> str:
     return "—" if value is None else f"{value:{fmt}}{unit}"
 
 
-def _badge(verdict: str, extra: str = "") -> str:
-    """``verdict`` (an overall or an objective's verdict) on its colour: green, amber, red, grey."""
-    kind = BADGES.get(verdict, "none")
-    return f"<span class='badge {kind}{' ' + extra if extra else ''}'>{_e(verdict)}</span>"
+def _badge(verdict: str) -> dict:
+    """``verdict`` (an overall or an objective's verdict) and its colour class: green, amber, red, grey."""
+    return {"word": verdict, "kind": BADGES.get(verdict, "none")}
 
 
 def _ordinal(percentile: float) -> str:
@@ -529,38 +451,16 @@ def _ordinal(percentile: float) -> str:
     return f"{n}{suffix}"
 
 
-def _level_badge(reading: Level | None) -> str:
-    """A criterion's reading (:attr:`~marinesim.session.exercise.CriterionResult.reading`) on its colour, in words
-    (:data:`SHOWN`)."""
-    return f"<span class='badge {LEVEL_BADGES[reading]}'>{_e(SHOWN[reading])}</span>"
+def _level_badge(reading: Level | None) -> dict:
+    """A criterion's reading (:attr:`~marinesim.session.exercise.CriterionResult.reading`) in words
+    (:data:`SHOWN`) and its colour class."""
+    return {"word": SHOWN[reading], "kind": LEVEL_BADGES[reading]}
 
 
-def _td(inner: str, css: str = "") -> tuple[str, str]:
-    return inner, css
+def _file(path: str, digest: str | None) -> dict:
+    return {"path": path, "digest": digest}
 
 
-def _table(header: tuple, rows: list[tuple], head: bool = True, css: str = "") -> str:
-    """A table; a header cell is a name or (name, class), a row's cells are (html, class) pairs, and a row may end
-    with its own class."""
-    out = [f"<table class='{css}'>" if css else "<table>"]
-    if head:
-        cells = [(h, "") if isinstance(h, str) else h for h in header]
-        out.append("<tr>" + "".join(f"<th class='{c}'>{n}</th>" if c else f"<th>{n}</th>" for n, c in cells)
-                   + "</tr>")
-    for row in rows:
-        row_css = row[-1] if isinstance(row[-1], str) else ""
-        cells = row[:-1] if isinstance(row[-1], str) else row
-        out.append((f"<tr class='{row_css}'>" if row_css else "<tr>")
-                   + "".join(f"<td class='{c}'>{inner}</td>" if c else f"<td>{inner}</td>" for inner, c in cells)
-                   + "</tr>")
-    out.append("</table>")
-    return "<div class='wide'>" + "\n".join(out) + "</div>"
-
-
-def _file(path: str, digest: str | None) -> str:
-    return f"<code>{_e(path)}</code>" + (f"<br><span class='hash'>sha256 {_e(digest)}</span>" if digest else "")
-
-
-def _img(png: bytes, alt: str) -> str:
-    return (f"<img class='plot' alt='{_e(alt)}' width='1000' "
-            f"src='data:image/png;base64,{base64.b64encode(png).decode('ascii')}'>")
+def _img(png: bytes, alt: str) -> dict:
+    """A plot: its ``alt`` text and the PNG as a data: URI (``src``)."""
+    return {"alt": alt, "src": f"data:image/png;base64,{base64.b64encode(png).decode('ascii')}"}
