@@ -43,7 +43,7 @@ def test_an_exercise_runs_through_assess_and_report(path, tmp_path, capsys):
     assert result["duration_s"] == 240.0 and len(result["criteria"]) == len(scenario.criteria)
     assert main(["report", str(path), "--out", str(tmp_path / "r.html"), "--duration", "240", "--quiet"]) == 0
     page = (tmp_path / "r.html").read_text()
-    assert html.escape(scenario.briefing.objectives[0].text) in page and "<img class='plot'" in page
+    assert scenario.briefing.objectives[0].text in html.unescape(page) and "<img class='plot'" in page
 
 
 SHIPPED = sorted((ROOT / "configs").glob("*.toml")) + TRAINING
