@@ -266,8 +266,8 @@
 
     buildCriteria(crit, same);
     buildEvents(Array.isArray(sc.events) ? sc.events : []);
-    buildFaults(Array.isArray(sc.faults) ? sc.faults : []);
-    buildDriven(Array.isArray(sc.driven) ? sc.driven : []);
+    fillChoices("fault-select", "faults-box", Array.isArray(sc.faults) ? sc.faults : []);
+    fillChoices("drive-ship", "drive-box", Array.isArray(sc.driven) ? sc.driven : []);
 
     model.track = [];
     model.lastTrackT = -Infinity;
@@ -724,28 +724,17 @@
     }
   }
 
-  // ---------------------------------------------------------------- faults
-  function buildFaults(faults) {
-    const sel = $("fault-select");
-    sel.replaceChildren();
-    for (const f of faults) {
-      const o = el("option", "", f);
-      o.value = String(f);
-      sel.appendChild(o);
-    }
-    $("faults-box").hidden = faults.length === 0;
-  }
-
-  // ---------------------------------------------------------------- other ships the instructor drives
-  function buildDriven(names) {
-    const sel = $("drive-ship");
+  // ---------------------------------------------------------------- faults, and the other ships the instructor drives
+  /** The options of select ``selectId`` set to ``names``; the box ``boxId`` shown only when there are some. */
+  function fillChoices(selectId, boxId, names) {
+    const sel = $(selectId);
     sel.replaceChildren();
     for (const name of names) {
       const o = el("option", "", name);
       o.value = String(name);
       sel.appendChild(o);
     }
-    $("drive-box").hidden = names.length === 0;
+    $(boxId).hidden = names.length === 0;
   }
 
   function orderShip() {
