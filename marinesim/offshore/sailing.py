@@ -22,6 +22,7 @@ from dataclasses import replace
 
 import numpy as np
 
+from marinesim.angles import compass_to_math, math_to_compass
 from marinesim.manoeuvring.ship import STEP_S, Ship
 from marinesim.manoeuvring.voyage import Voyage
 from marinesim.offshore.route import Route
@@ -72,7 +73,7 @@ class Sailed:
 
     def _new_voyage(self) -> None:
         """Her voyage from the start under the orders kept; the route steers her on from the last of its orders."""
-        start, orders = self.ship.start(self.speed, _compass_rad(self._legs[0].heading))
+        start, orders = self.ship.start(self.speed, math.radians(math_to_compass(self._legs[0].heading)))
         x0, y0 = self.route.pieces[0].start
         self.voyage = Voyage(self.ship, replace(start, north=y0, east=x0), orders, STEP_S)
         for t, request, _ in self._requests:
@@ -80,7 +81,7 @@ class Sailed:
         route = [(t, request, by) for t, request, by in self._requests if by != "instructor"]
         self._next = sum(1 for *_, by in route if by == "wheel-over")
         """The index of the leg she is on (of the next wheel-over)."""
-        self._course = self._legs[0].heading if not route else _math_rad(route[-1][1]["course_deg"])
+        self._course = self._legs[0].heading if not route else compass_to_math(route[-1][1]["course_deg"])
         """The course (math angle, rad) last given by the route."""
         self._looked = route[-1][0] if route else 0.0
         """How far (s) the route has steered her."""
@@ -130,7 +131,7 @@ class Sailed:
                 continue
             t = float(times[first])
             course = self._legs[self._next + 1].heading if kind == "wheel-over" else float(courses[first])
-            request = {"course_deg": math.degrees(_compass_rad(course))}
+            request = {"course_deg": math_to_compass(course)}
             self.voyage.order(t, **request)
             self._requests.append((t, request, kind))
             self._course, self._looked = course, t
@@ -168,16 +169,6 @@ class Sailed:
             return None
         _, x0, y0, heading, speed = key
         return Track(heading, speed, x0, y0)
-
-
-def _compass_rad(heading: float) -> float:
-    """A math angle (rad) as a compass heading (rad, clockwise from north, 0..2 pi)."""
-    return (0.5 * math.pi - heading) % math.tau
-
-
-def _math_rad(course_deg: float) -> float:
-    """A compass course (deg) as a math angle (rad)."""
-    return 0.5 * math.pi - math.radians(course_deg)
 
 
 def _left_on_leg(leg, after, east: np.ndarray, north: np.ndarray) -> np.ndarray:
