@@ -7,6 +7,7 @@ Test files import them with ``from conftest import ...``."""
 from __future__ import annotations
 
 import contextlib
+import os
 import signal
 import subprocess
 import sys
@@ -21,6 +22,13 @@ import pytest
 from marinesim.angles import wave_beta_from_compass
 from marinesim.errors import MarinesimError
 from marinesim.sea import Cos2s, Jonswap, SeaState, WaveSystem
+
+# One BLAS thread a process: pytest-xdist runs one worker a core, and BLAS threads beyond the cores spin against
+# each other (a 28-step block product of 17,800 wave components took 6 times as long with two threads a worker on
+# the 2-core VM). A plugin has loaded numpy in this process already; the workers and subprocesses, started after
+# this line, inherit the variable before they load it. A value the caller set is kept.
+for _variable in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
+    os.environ.setdefault(_variable, "1")
 
 ROOT = Path(__file__).resolve().parents[1]
 """The checkout: its rao/, hulls/, configs/ and shaders/ are the files the tests read."""
@@ -218,12 +226,17 @@ __all__ = ["DEFAULT", "RENDER_SIZE", "ROOT", "SEA_SCENARIO", "VESSEL_SCENARIO", 
            "offscreen", "raw_wamit", "synthetic_table", "write"]
 
 
+def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+    """The slow tests run first, in their order: under pytest-xdist the long runs then go on beside the many short
+    tests, where last (the twenty-seed exercises sort late) they kept one worker busy for half an hour after the
+    others had finished."""
+    items.sort(key=lambda item: item.get_closest_marker("slow") is None)
+
+
 @pytest.fixture(scope="session", autouse=True)
 def wake_cache(tmp_path_factory):
     """Wakes computed by the tests are cached in a temporary folder, and session logs are signed with a key in
     another: never the user's cache or configuration (subprocesses inherit both)."""
-    import os
-
     folders = {"MARINESIM_CACHE_DIR": tmp_path_factory.mktemp("wake-cache"),
                "MARINESIM_CONFIG_DIR": tmp_path_factory.mktemp("config")}
     previous = {name: os.environ.get(name) for name in folders}

@@ -134,7 +134,10 @@ class Leg:
         return out
 
     def weight(self, t: np.ndarray) -> np.ndarray:
-        """The weight of ``after`` at ``t`` (s)."""
+        """The weight of ``after`` at ``t`` (s): an array of ``t``'s shape, or a float for a float ``t`` (a stepped
+        vessel's weather asks once a stage)."""
+        if isinstance(t, float):
+            return float(smoothstep(min(max((t - self.start) / self.ramp_s, 0.0), 1.0))) if self.ramp_s > 0 else 1.0
         s = np.clip((np.asarray(t, float) - self.start) / self.ramp_s, 0.0, 1.0) if self.ramp_s > 0 else 1.0
         return np.broadcast_to(smoothstep(s), np.shape(t)).astype(float)
 
@@ -432,7 +435,7 @@ class Simulation:
         key = (k0, n, self.version)
         if self._last_motion is None or self._last_motion[0] != key:
             times = (k0 + np.arange(n)) * lifting.GRID_S
-            self._last_motion = key, self._linear(times)[:, :18]
+            self._last_motion = key, self._linear(times, lifting.GRID_S)[:, :18]
         return self._last_motion[1]
 
     def other_poses(self, t: float | None = None) -> list[Pose]:

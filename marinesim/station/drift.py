@@ -39,6 +39,9 @@ FORCE_STEP = 0.1
 """Time grid (s) :meth:`SlowDrift.force` interpolates between."""
 FORCE_WINDOW = 256
 """Most grid times summed at once, per heading, by :meth:`SlowDrift.force` (25.6 s of loads)."""
+LAST_KEPT = 4
+"""How many of the newest loads :meth:`SlowDrift.force` keeps by time and heading step: a Runge-Kutta step asks
+twice at its middle, and its end is the next step's start."""
 _BLOCK = 16
 
 
@@ -137,6 +140,7 @@ class SlowDrift:
         self.kept_share = require_within("kept_share", kept_share, 0.0, 1.0)
         self._power = np.abs(self.amplitude) ** 2
         self._cache: OrderedDict[int, _Heading] = OrderedDict()
+        self._last: dict[tuple[float, int], np.ndarray] = {}  # (t, heading step) -> the load, the newest few
 
     @classmethod
     def from_components(cls, components: Components, table: DriftTable, x: float = 0.0, y: float = 0.0,
@@ -153,10 +157,14 @@ class SlowDrift:
         Interpolated (cubic Lagrange, four points) on the grid ``t = k FORCE_STEP``, whose values are summed
         exactly in windows (up to :data:`FORCE_WINDOW` grid times, per heading) as the calls move along: exact at
         the grid times, and within about ``0.023 (nu FORCE_STEP)^4`` of the amplitude of a difference frequency
-        ``nu`` between them.
+        ``nu`` between them. The newest :data:`LAST_KEPT` loads are kept (read-only), as asked again.
         """
+        key = (require_finite("t", t), self._key(heading))
+        found = self._last.get(key)
+        if found is not None:
+            return found
         h = self._prepared(heading)
-        x = require_finite("t", t) / FORCE_STEP
+        x = t / FORCE_STEP
         first = math.floor(x) - 1
         s = x - first - 1.0
         offset = first - h.start
@@ -167,7 +175,12 @@ class SlowDrift:
             offset = 0
         a, b, c = s + 1.0, s - 1.0, s - 2.0
         v = h.window[offset:offset + 4]
-        return (-s * b * c * v[0] + 3.0 * a * b * c * v[1] - 3.0 * a * s * c * v[2] + a * s * b * v[3]) / 6.0
+        load = (-s * b * c * v[0] + 3.0 * a * b * c * v[1] - 3.0 * a * s * c * v[2] + a * s * b * v[3]) / 6.0
+        load.flags.writeable = False
+        if len(self._last) >= LAST_KEPT:
+            self._last.pop(next(iter(self._last)))
+        self._last[key] = load
+        return load
 
     def force_series(self, times: np.ndarray, heading: float) -> np.ndarray:
         """The load (n_t, 3) at each of ``times`` (n_t,) s on a constant ``heading`` (rad), summed exactly."""
@@ -177,9 +190,13 @@ class SlowDrift:
         """The mean load (3,) ``sum |a_j|^2 D_j`` (N, N, N m) on ``heading`` (rad, rounded as :meth:`force`)."""
         return self._prepared(heading).mean.copy()
 
+    @staticmethod
+    def _key(heading: float) -> int:
+        """``heading`` (rad) as a whole number of :data:`HEADING_STEP` round the circle."""
+        return int(round(require_finite("heading", heading) / HEADING_STEP)) % round(2.0 * math.pi / HEADING_STEP)
+
     def _prepared(self, heading: float) -> _Heading:
-        steps = round(2.0 * math.pi / HEADING_STEP)
-        key = int(round(require_finite("heading", heading) / HEADING_STEP)) % steps
+        key = self._key(heading)
         found = self._cache.get(key)
         if found is not None:
             self._cache.move_to_end(key)

@@ -7,11 +7,11 @@ any direction (Fx and Fy, its resultant no more than its rating). The configurat
 virtual forces ``f`` (N) to (X, Y, N).
 
 Allocation (Fossen 2021, ch. 11.3): the least-norm ``f = B^T (B B^T)^-1 tau`` when it is within every thruster's
-limits; otherwise the bounded least squares over the limits (:func:`scipy.optimize.lsq_linear`), the yaw
-moment weighted by one over the vessel's length so that a metre of force and a ship length of moment count alike,
-and a small penalty on ``f`` keeping the answer unique. An azimuth's box is then pulled in to its circle. A lost
-thruster has both bounds zero; a thruster stuck at full thrust (a drive-off) is held there and the others answer
-the rest.
+limits; otherwise the bounded least squares over the limits (:func:`bounded_least_squares`: the last cycle's
+bounds tried first, else :func:`scipy.optimize.lsq_linear`'s BVLS), the yaw moment weighted by one over the
+vessel's length so that a metre of force and a ship length of moment count alike, and a small penalty on ``f``
+keeping the answer unique. An azimuth's box is then pulled in to its circle. A lost thruster has both bounds zero;
+a thruster stuck at full thrust (a drive-off) is held there and the others answer the rest.
 """
 
 from __future__ import annotations
@@ -58,6 +58,7 @@ class Thrusters:
     b: np.ndarray = field(init=False, repr=False, compare=False)
     azimuths: bool = field(init=False, repr=False, compare=False)
     _least: dict = field(init=False, repr=False, compare=False)
+    _bounded: dict = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         if not self.units:
@@ -73,6 +74,7 @@ class Thrusters:
         object.__setattr__(self, "b", np.array(columns, dtype=float).T)
         object.__setattr__(self, "azimuths", any(t.kind == "azimuth" for t in self.units))
         object.__setattr__(self, "_least", {})
+        object.__setattr__(self, "_bounded", {})  # per set of free forces: the last bounded answer's bounds held
 
     @property
     def width(self) -> int:
@@ -139,8 +141,9 @@ class Thrusters:
         top = max(float(np.max(hi[free])), 1.0)
         a = np.vstack([b * scale[:, None] / top, math.sqrt(PENALTY) * np.eye(b.shape[1]) / top])
         target = np.concatenate([rest * scale / top, np.zeros(b.shape[1])])
-        f[free] = lsq_linear(a, target, bounds=(lo[free], np.maximum(hi[free], lo[free] + 1e-12)),
-                             method="bvls").x
+        key = tuple(free)
+        f[free], self._bounded[key] = bounded_least_squares(a, target, lo[free], np.maximum(hi[free], lo[free] + 1e-12),
+                                                            self._bounded.get(key))
         return self._onto_circles(f)
 
     def _least_norm(self, free: tuple[bool, ...]) -> np.ndarray:
@@ -187,3 +190,40 @@ class Thrusters:
         miss = (self.b @ f - np.asarray(tau, float)) * np.array([1.0, 1.0, 1.0 / self.length])
         top = max(t.max_thrust for t in self.units)
         return bool(np.all(np.abs(miss) <= tolerance * top))
+
+
+def bounded_least_squares(a: np.ndarray, target: np.ndarray, lower: np.ndarray, upper: np.ndarray,
+                          hint: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """``x`` minimising ``|a x - target|^2`` over ``lower <= x <= upper`` (``a`` (k, m) of rank m: one answer), and
+    which bounds it holds ((m,): -1 at ``lower``, 1 at ``upper``, 0 between).
+
+    The bounds ``hint`` holds (the last answer's: a DP's demand moves little from one cycle to the next) are tried
+    first: the free values solved with them held answer when they meet the optimality conditions (within their
+    bounds; the gradient ``a^T (a x - target)`` pushing each held value outwards). Else scipy's BVLS finds the
+    bounds, and its free values are solved in the same way, so that the answer's bits follow from its bounds
+    alone, not from whether the hint held."""
+    if hint is not None:
+        x = _with_bounds_held(a, target, lower, upper, hint)
+        if x is not None:
+            return x, hint
+    x = lsq_linear(a, target, bounds=(lower, upper), method="bvls").x
+    held = np.where(x <= lower, -1, np.where(x >= upper, 1, 0))
+    solved = _with_bounds_held(a, target, lower, upper, held)
+    return (x if solved is None else solved), held
+
+
+def _with_bounds_held(a: np.ndarray, target: np.ndarray, lower: np.ndarray, upper: np.ndarray,
+                      held: np.ndarray) -> np.ndarray | None:
+    """The least squares answer with the bounds ``held`` (as :func:`bounded_least_squares` gives them) and the other
+    values free; None where it breaks a bound or a held value would rather move inwards."""
+    x = np.where(held < 0, lower, upper)
+    free = held == 0
+    if free.any():
+        x[free] = np.linalg.lstsq(a[:, free], target - a[:, ~free] @ x[~free], rcond=None)[0]
+        if np.any(x[free] <= lower[free]) or np.any(x[free] >= upper[free]):
+            return None
+    gradient = a.T @ (a @ x - target)
+    tolerance = 1e-9 * float(np.abs(a.T @ target).max() + np.abs(a.T @ (a @ x)).max())
+    if np.any(gradient[held < 0] < -tolerance) or np.any(gradient[held > 0] > tolerance):
+        return None
+    return x

@@ -30,6 +30,7 @@ import numpy as np
 from marinesim.errors import ParameterError, require_finite, require_positive
 from marinesim.pose import RotationKinematics
 from marinesim.sea.ocean import Components
+from marinesim.sea.phasors import phasor_table
 from marinesim.vessel.rao import DOFS, RaoTable
 
 OUTSIDE_HEADINGS_SHARE = 0.01
@@ -38,7 +39,8 @@ take the nearest covered heading's RAO); more is refused."""
 BLOCK = 512
 """Time steps per matrix product."""
 CHUNK = 1024
-"""Components per matrix product: their phasor table (BLOCK x 2 CHUNK x 8 bytes = 8 MiB) stays in cache."""
+"""Components per matrix product: their phasor table (BLOCK x 2 CHUNK x 8 bytes = 8 MiB) stays in cache (a run of
+fewer steps than BLOCK takes as many more components as its table has fewer rows)."""
 BLOCKS_PER_PASS = 16
 """Blocks computed per pass over the component chunks (the rows held in memory at once)."""
 
@@ -155,19 +157,20 @@ class Response:
     def linear_steps(self, start: float, dt: float, steps: int) -> Iterator[tuple[np.ndarray, np.ndarray]]:
         """``(times, linear outputs)`` in blocks for ``start + dt * arange(steps)``.
 
-        One phasor table ``exp(i w_e j dt)`` (j < BLOCK) serves every block, the block's start time
-        folded into the coefficients. The product is memory-bound, so components go in chunks
+        One phasor table ``exp(i w_e j dt)`` (j < BLOCK; :func:`~marinesim.sea.phasors.phasor_table`) serves every
+        block, the block's start time folded into the coefficients. The product is memory-bound, so components go in chunks
         whose table stays in cache while a run of blocks reuses it.
         """
         dt = require_positive("time step", dt)
         start = require_finite("start time", start)
         steps = int(steps)
         block = min(BLOCK, max(steps, 1))
-        chunks = [slice(lo, lo + CHUNK) for lo in range(0, self.omega_e.size, CHUNK)]
+        size = CHUNK * (BLOCK // block)  # a short run's table, as few rows, holds as many more components
+        chunks = [slice(lo, lo + size) for lo in range(0, self.omega_e.size, size)]
         tables = []
         for chunk in chunks:
-            phase = np.outer(np.arange(block) * dt, self.omega_e[chunk])
-            tables.append(np.concatenate([np.cos(phase), np.sin(phase)], axis=1))   # (block, 2 chunk)
+            phasors = phasor_table(self.omega_e[chunk], dt, block)
+            tables.append(np.concatenate([phasors.real, phasors.imag], axis=1))   # (block, 2 chunk)
         span = block * BLOCKS_PER_PASS
         for first in range(0, steps, span):
             count = min(span, steps - first)

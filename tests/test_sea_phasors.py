@@ -1,0 +1,42 @@
+"""The phasor tables behind every sum of wave components in time: ``exp(i w j dt)`` built as products of a coarse
+and a fine table is the direct exponential to rounding, and the vessel response summed block by block from them is
+the response summed time by time. What would be wrong: a row of the table out of place (a motion shifted in time
+by a step, an error of ``w dt`` of its amplitude, 0.1 at 1 rad/s and 0.1 s), or a block's start time lost."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from conftest import ROOT
+from marinesim.scenario import load_scenario
+from marinesim.sea.phasors import phasor_table
+from marinesim.session.timeline import Simulation
+from marinesim.vessel.response import Response, Track
+
+
+@pytest.mark.parametrize("rows", [1, 2, 3, 16, 17, 28, 97, 512, 600])
+def test_a_table_is_the_direct_exponential(rows):
+    omega = np.linspace(0.05, 4.0, 301)
+    dt = 0.1
+    table = phasor_table(omega, dt, rows)
+    direct = np.exp(1j * np.outer(np.arange(rows) * dt, omega))
+    assert table.shape == (rows, omega.size)
+    # each entry's phase w j dt (up to 240 rad) is itself rounded to about 5e-14 rad
+    assert np.abs(table - direct).max() < 1e-13
+
+
+def test_the_block_product_is_the_response_time_by_time():
+    scenario = load_scenario(ROOT / "configs" / "tanker_dp.toml")
+    with Simulation(scenario, wake=False) as simulation:
+        components = simulation.components(0)
+    response = Response(scenario.vessel.rao, components, Track(0.3, 0.0), scenario.vessel.points, strict=False)
+    start, dt, steps = 1000.05, 0.1, 1300  # blocks of 512 and a part block, far from t = 0
+    blocks = np.concatenate([out for _, out in response.linear_steps(start, dt, steps)])
+    times = start + dt * np.arange(steps)
+    direct = response.linear(times)
+    scale = np.abs(direct).max(axis=0)
+    assert blocks.shape == direct.shape
+    assert np.all(np.abs(blocks - direct) <= 1e-10 * scale + 1e-15)
+    shifted = response.linear(times + dt)
+    assert np.abs(shifted - direct).max() > 1e-3 * scale.max(), "a step's shift would show"
