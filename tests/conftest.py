@@ -226,11 +226,19 @@ __all__ = ["DEFAULT", "RENDER_SIZE", "ROOT", "SEA_SCENARIO", "VESSEL_SCENARIO", 
            "offscreen", "raw_wamit", "synthetic_table", "write"]
 
 
+LONGEST_FIRST = ("test_scenario_training_exercises.py",)
+"""Files whose slow tests take longest (the shipped exercises over twenty seeds, a quarter of an hour each on the
+2-core VM): they go first of all."""
+
+
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
-    """The slow tests run first, in their order: under pytest-xdist the long runs then go on beside the many short
-    tests, where last (the twenty-seed exercises sort late) they kept one worker busy for half an hour after the
-    others had finished."""
-    items.sort(key=lambda item: item.get_closest_marker("slow") is None)
+    """The files holding slow tests run first (:data:`LONGEST_FIRST` before the others), each file's tests together
+    and in their order, so that module fixtures are made once. With pytest-xdist's work stealing (pyproject's
+    ``--dist worksteal``) the long runs then go on beside the short tests, the other workers taking short ones from
+    the end of the queue; last (the exercises sort late) they kept one worker busy for half an hour after the others
+    had finished."""
+    slow = {item.path for item in items if item.get_closest_marker("slow")}
+    items.sort(key=lambda item: (item.path not in slow, item.path.name not in LONGEST_FIRST))
 
 
 @pytest.fixture(scope="session", autouse=True)

@@ -1,4 +1,5 @@
-"""Tables of phasors ``exp(i w t)`` on a time grid, the product behind every sum of wave components in time.
+"""Tables of phasors ``exp(i w t)`` on a time grid: the vessel response's block sums of wave components in time
+(:meth:`~marinesim.vessel.response.Response.linear_steps`) are products with them.
 
 A component's phasor at ``t = j dt`` is the product of one at a coarse time ``g q dt`` and one at a fine offset
 ``r dt`` (``j = g q + r``, ``r < q``): ``exp(i w j dt) = exp(i w g q dt) exp(i w r dt)``. With ``q`` about the square

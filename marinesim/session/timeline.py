@@ -70,6 +70,12 @@ never "when the worker is done": the same changes give the same timeline whateve
 WAKE_STEP_KN = 1.0
 """Kelvin wakes are computed at the scenario's speeds and at whole knots between: a ship changing speed shows the
 two nearest, blended by her speed."""
+MOTION_BLOCK = 256
+"""Own-ship's motions on the crane's and helicopter's grid (:data:`.lifting.GRID_S`) are computed in blocks of this
+many grid times (64 s) ..."""
+MOTION_BLOCKS_KEPT = 64
+"""... the newest this many kept (68 minutes of motions, 2.4 MB): the helicopter's record asks for its whole run
+several times over."""
 RESPONSES_KEPT = 3
 """Responses to straight runs held at once (a few MB each: the run she is on, the one before, one more)."""
 WAKE_GRID = WakeGrid()
@@ -195,7 +201,7 @@ class Simulation:
         self.bodies = [others.Body(other, self.components) for other in scenario.others]
         """The other vessels and structures (:mod:`marinesim.session.others`)."""
         self._last_others: tuple[float, int, list[Pose]] = (math.nan, 0, [])
-        self._last_motion: tuple[tuple[int, int, int], np.ndarray] | None = None
+        self._motion_blocks: dict[tuple[int, int], np.ndarray] = {}
         self.lift: Lift | None = None
         """Own-ship's crane and its load (:mod:`marinesim.session.lifting`), with a ``[crane]``."""
         if scenario.lifting is not None:
@@ -430,13 +436,24 @@ class Simulation:
         return pose
 
     def _motion_grid(self, k0: int, n: int) -> np.ndarray:
-        """Own-ship's linear outputs (n, 18) at ``(k0 + arange(n)) * lifting.GRID_S``, the
-        newest kept: the crane's tip, its landing deck and the helicopter's deck ask for the same stretch."""
-        key = (k0, n, self.version)
-        if self._last_motion is None or self._last_motion[0] != key:
-            times = (k0 + np.arange(n)) * lifting.GRID_S
-            self._last_motion = key, self._linear(times, lifting.GRID_S)[:, :18]
-        return self._last_motion[1]
+        """Own-ship's linear outputs (n, 18) at ``(k0 + arange(n)) * lifting.GRID_S``, from blocks of
+        :data:`MOTION_BLOCK` grid times counted from 0 (the block product's bits then do not depend on which stretch
+        is asked), the newest :data:`MOTION_BLOCKS_KEPT` kept: the crane's tip, its landing deck and the helicopter's
+        deck ask for the same stretch."""
+        first, last = k0 // MOTION_BLOCK, (k0 + n - 1) // MOTION_BLOCK
+        grid = np.concatenate([self._motion_block(block) for block in range(first, last + 1)])
+        return grid[k0 - first * MOTION_BLOCK:][:n]
+
+    def _motion_block(self, block: int) -> np.ndarray:
+        key = (block, self.version)
+        found = self._motion_blocks.get(key)
+        if found is None:
+            times = (block * MOTION_BLOCK + np.arange(MOTION_BLOCK)) * lifting.GRID_S
+            found = self._linear(times, lifting.GRID_S)[:, :18]
+            if len(self._motion_blocks) >= MOTION_BLOCKS_KEPT:
+                self._motion_blocks.pop(next(iter(self._motion_blocks)))
+            self._motion_blocks[key] = found
+        return found
 
     def other_poses(self, t: float | None = None) -> list[Pose]:
         """Each other body's track point, heading and 6-DOF motion at ``t`` (default: now), as :attr:`bodies`."""

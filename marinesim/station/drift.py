@@ -164,7 +164,7 @@ class SlowDrift:
         if found is not None:
             return found
         h = self._prepared(heading)
-        x = t / FORCE_STEP
+        x = key[0] / FORCE_STEP
         first = math.floor(x) - 1
         s = x - first - 1.0
         offset = first - h.start

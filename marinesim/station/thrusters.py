@@ -146,6 +146,11 @@ class Thrusters:
                                                             self._bounded.get(key))
         return self._onto_circles(f)
 
+    def forget(self) -> None:
+        """Forget the bounds the last saturated answers held: a new run's first answers owe nothing to another
+        run's."""
+        self._bounded.clear()
+
     def _least_norm(self, free: tuple[bool, ...]) -> np.ndarray:
         """``B^T (B B^T)^-1`` of the ``free`` virtual forces' columns ((k, 3)); NaN where they cannot give every
         (X, Y, N) (rank below 3: the bounded problem decides). Kept per set of free forces."""
@@ -199,17 +204,18 @@ def bounded_least_squares(a: np.ndarray, target: np.ndarray, lower: np.ndarray, 
 
     The bounds ``hint`` holds (the last answer's: a DP's demand moves little from one cycle to the next) are tried
     first: the free values solved with them held answer when they meet the optimality conditions (within their
-    bounds; the gradient ``a^T (a x - target)`` pushing each held value outwards). Else scipy's BVLS finds the
-    bounds, and its free values are solved in the same way, so that the answer's bits follow from its bounds
-    alone, not from whether the hint held."""
+    bounds; the gradient ``g = a^T (a x - target)`` at least 0 at a held lower bound and at most 0 at an upper
+    one, so that moving any held value inwards would not help). Else scipy's BVLS finds the bounds (its active
+    set), and its free values are solved in the same way, so that the answer's bits follow from its bounds alone,
+    not from whether the hint held."""
     if hint is not None:
         x = _with_bounds_held(a, target, lower, upper, hint)
         if x is not None:
             return x, hint
-    x = lsq_linear(a, target, bounds=(lower, upper), method="bvls").x
-    held = np.where(x <= lower, -1, np.where(x >= upper, 1, 0))
+    result = lsq_linear(a, target, bounds=(lower, upper), method="bvls")
+    held = result.active_mask.astype(int)
     solved = _with_bounds_held(a, target, lower, upper, held)
-    return (x if solved is None else solved), held
+    return (np.clip(result.x, lower, upper) if solved is None else solved), held
 
 
 def _with_bounds_held(a: np.ndarray, target: np.ndarray, lower: np.ndarray, upper: np.ndarray,

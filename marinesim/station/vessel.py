@@ -158,6 +158,7 @@ class Station:
         extra = np.zeros(len(EXTRA) + (self.thrusters.width if self.thrusters is not None else 0))
         extra[EXTRA.index("eta_psi")] = extra[EXTRA.index("ref_psi")] = psi
         if self.dp is not None:
+            self.thrusters.forget()
             env = self.environment
             current = np.asarray(self.d, float) @ _in_body(env.current(0.0), psi)
             load = env.loads(0.0, 0.0, 0.0, psi, 0.0, 0.0, 0.0) + current

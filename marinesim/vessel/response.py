@@ -39,8 +39,9 @@ take the nearest covered heading's RAO); more is refused."""
 BLOCK = 512
 """Time steps per matrix product."""
 CHUNK = 1024
-"""Components per matrix product: their phasor table (BLOCK x 2 CHUNK x 8 bytes = 8 MiB) stays in cache (a run of
-fewer steps than BLOCK takes as many more components as its table has fewer rows)."""
+"""Components per matrix product: their phasor table (BLOCK x 2 CHUNK x 8 bytes = 8 MiB) stays in cache. A run of
+fewer steps than BLOCK takes as many more components as its table has fewer rows, up to WIDEST times CHUNK."""
+WIDEST = 32
 BLOCKS_PER_PASS = 16
 """Blocks computed per pass over the component chunks (the rows held in memory at once)."""
 
@@ -157,15 +158,18 @@ class Response:
     def linear_steps(self, start: float, dt: float, steps: int) -> Iterator[tuple[np.ndarray, np.ndarray]]:
         """``(times, linear outputs)`` in blocks for ``start + dt * arange(steps)``.
 
-        One phasor table ``exp(i w_e j dt)`` (j < BLOCK; :func:`~marinesim.sea.phasors.phasor_table`) serves every
-        block, the block's start time folded into the coefficients. The product is memory-bound, so components go in chunks
+        One phasor table ``exp(i w_e j dt)`` (j below the block's length, :data:`BLOCK` or the run's steps;
+        :func:`~marinesim.sea.phasors.phasor_table`) serves every block, the block's start time folded into the
+        coefficients. The product is memory-bound, so components go in chunks
         whose table stays in cache while a run of blocks reuses it.
         """
         dt = require_positive("time step", dt)
         start = require_finite("start time", start)
         steps = int(steps)
         block = min(BLOCK, max(steps, 1))
-        size = CHUNK * (BLOCK // block)  # a short run's table, as few rows, holds as many more components
+        if steps <= 0:
+            return
+        size = CHUNK * min(BLOCK // block, WIDEST)  # a short run's table, as few rows, takes more components
         chunks = [slice(lo, lo + size) for lo in range(0, self.omega_e.size, size)]
         tables = []
         for chunk in chunks:
