@@ -233,10 +233,9 @@ LONGEST_FIRST = ("test_scenario_training_exercises.py",)
 
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
     """The files holding slow tests run first (:data:`LONGEST_FIRST` before the others), each file's tests together
-    and in their order, so that module fixtures are made once. With pytest-xdist's work stealing (pyproject's
-    ``--dist worksteal``) the long runs then go on beside the short tests, the other workers taking short ones from
-    the end of the queue; last (the exercises sort late) they kept one worker busy for half an hour after the others
-    had finished."""
+    and in their order. pytest-xdist hands tests out one at a time (pyproject's ``--maxschedchunk=1``), so the long
+    runs go side by side on the workers; last (the exercises sort late) they kept one worker busy for half an hour
+    after the others had finished."""
     slow = {item.path for item in items if item.get_closest_marker("slow")}
     items.sort(key=lambda item: (item.path not in slow, item.path.name not in LONGEST_FIRST))
 
