@@ -3,6 +3,7 @@ their conditions, and the criteria the viewer shows at t are the ones ``assess``
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -12,7 +13,8 @@ from conftest import ROOT, VESSEL_SCENARIO, offscreen, write
 from marinesim.constants import KNOT
 from marinesim.criteria.monitor import Level
 from marinesim.errors import ParameterError
-from marinesim.scenario import load_scenario
+from marinesim.manoeuvring.voyage import CHUNK_STEPS
+from marinesim.scenario import load_scenario, with_run
 from marinesim.session.exercise import Exercise
 from marinesim.session.timeline import Simulation
 
@@ -243,3 +245,38 @@ def test_fog_rolls_in_when_its_event_happens_and_the_instructor_clears_it(tmp_pa
         with pytest.raises(ParameterError, match="hours"):
             exercise.act("weather", hours=hours)
     simulation.close()
+
+
+def test_a_vessel_on_dp_is_stepped_once_past_a_scripted_change():
+    """``assess`` computes the record ahead of the clock, but not into the next scripted change: the change would
+    throw away what lay beyond it, and a vessel keeping station would be stepped over that stretch again.
+    configs/supply_dp.toml with its thruster trip moved to 30 s, run for a minute: the 0.1 s steps taken twice are
+    at most the few the voyage takes ahead of the clock (:data:`CHUNK_STEPS`), and none beyond those past the end. What would be wrong: the DP stepped twice over
+    the half minute after the trip (in the shipped exercises, minutes of the run stepped twice)."""
+    scenario = load_scenario(ROOT / "configs" / "supply_dp.toml")
+    trip = next(event for event in scenario.events if event.fault is not None)
+    scenario = with_run(dataclasses.replace(scenario, events=(dataclasses.replace(trip, at_s=30.0),)), 60.0)
+    simulation = Simulation(scenario, wake=False)
+    stepped = []
+
+    class Counted:
+        """Her station keeping as it is, each step's number noted."""
+
+        def __init__(self, ship) -> None:
+            self.ship = ship
+
+        def __getattr__(self, name: str):
+            return getattr(self.ship, name)
+
+        def step(self, s, orders, h, t=0.0):
+            stepped.append(round(t / h))
+            return self.ship.step(s, orders, h, t)
+
+    simulation.voyage.ship = Counted(simulation.voyage.ship)
+    exercise = Exercise(simulation)
+    exercise.run()
+    simulation.close()
+    assert [e.index for e in exercise.happened] == [0], "the trip happened"
+    again = len(stepped) - len(set(stepped))
+    assert again <= CHUNK_STEPS, f"{again} steps taken twice (the voyage steps {CHUNK_STEPS} ahead of the clock)"
+    assert max(stepped) <= 600 + CHUNK_STEPS

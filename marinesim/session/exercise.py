@@ -363,14 +363,24 @@ class Exercise:
 
     def _record(self, first: int, last: int, ahead_to: int) -> dict[str, np.ndarray]:
         """Rows ``first..last`` of the record: from what was computed ahead while the timeline has not
-        changed since, else computed now with up to :data:`AHEAD` rows (not beyond ``ahead_to``) ahead."""
+        changed since, else computed now with up to :data:`AHEAD` rows (not beyond ``ahead_to``, nor into the next
+        scripted change) ahead."""
         ahead = self._ahead
         if ahead is None or ahead[1] != self.sim.version or not ahead[0] <= first <= last < ahead[0] + ahead[2]:
-            count = max(last, min(ahead_to, first + AHEAD - 1)) - first + 1
+            count = max(last, min(ahead_to, first + AHEAD - 1, self._before_next_change())) - first + 1
             self._ahead = ahead = (first, self.sim.version, count,
                                    self.sim.frame_steps(first * self.dt, self.dt, count))
         lo, hi = first - ahead[0], last + 1 - ahead[0]
         return {name: column[lo:hi] for name, column in ahead[3].items()}
+
+    def _before_next_change(self) -> int | float:
+        """The last row before the next timed event that changes the timeline (its sea, orders or weather), or
+        infinity: the change drops the record beyond it, and a vessel keeping station is stepped again from there."""
+        for index in self._timed[self._announced:]:
+            event = self.events[index]
+            if event.changes or event.weather:
+                return math.ceil(event.at_s / self.dt - 1e-9) - 1
+        return math.inf
 
     def _last_row(self, t: float) -> int:
         return last_row(t, self.dt) if self.sim.vessel is not None else -1

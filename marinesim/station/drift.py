@@ -78,13 +78,15 @@ def mean_drift(table: DriftTable, spectrum_omega: np.ndarray,
 class _Heading:
     """The sums of one heading: kept frequencies (m,) rad/s, coefficients (m, 6) per sign group, the mean of the
     components left out (3,), the full mean (3,), and the window of loads (W, 3) on the time grid from index
-    ``start`` (times ``(start + i) FORCE_STEP``)."""
+    ``start`` (times ``(start + i) FORCE_STEP``). ``block`` gives the phasors ``exp(i w j FORCE_STEP)``, j <
+    :data:`_BLOCK`, of the kept frequencies, (_BLOCK, m), when first asked."""
 
-    def __init__(self, omega: np.ndarray, coefficients: np.ndarray, constant: np.ndarray, mean: np.ndarray) -> None:
+    def __init__(self, omega: np.ndarray, coefficients: np.ndarray, constant: np.ndarray, mean: np.ndarray,
+                 block: Callable[[], np.ndarray]) -> None:
         self.omega, self.coefficients, self.constant, self.mean = omega, coefficients, constant, mean
         self.start = 0
         self.window = np.empty((0, 3))
-        self._block: np.ndarray | None = None  # (BLOCK, m): exp(i w j FORCE_STEP), j < BLOCK
+        self._block = block
 
     def series(self, times: np.ndarray, chunk: int = 512) -> np.ndarray:
         """The loads (n_t, 3) at ``times`` (n_t,) s, summed exactly."""
@@ -98,13 +100,12 @@ class _Heading:
     def fill(self, start: int, length: int) -> None:
         """Sum the window of ``length`` (a multiple of ``_BLOCK``) grid times from index ``start``: the phases
         ``exp(i w t)`` advance block by block by multiplication (one exponential per component and window)."""
-        if self._block is None:
-            self._block = np.exp(1j * np.outer(np.arange(_BLOCK) * FORCE_STEP, self.omega))
+        block = self._block()
         jump = np.exp(1j * self.omega * (_BLOCK * FORCE_STEP))
         phase = np.exp(1j * self.omega * (start * FORCE_STEP))
         sums = np.empty((length, 6), dtype=complex)
         for lo in range(0, length, _BLOCK):
-            sums[lo:lo + _BLOCK] = (self._block * phase) @ self.coefficients
+            sums[lo:lo + _BLOCK] = (block * phase) @ self.coefficients
             phase = phase * jump
         self.start = start
         self.window = (sums.real**2 + sums.imag**2) @ _GROUPS + self.constant
@@ -139,6 +140,9 @@ class SlowDrift:
         self.table = table
         self.kept_share = require_within("kept_share", kept_share, 0.0, 1.0)
         self._power = np.abs(self.amplitude) ** 2
+        self._frequencies, self._of_frequency = np.unique(self.omega, return_inverse=True)
+        """The distinct frequencies (u,) rad/s, and each component's among them (n,)."""
+        self._phasors: np.ndarray | None = None  # (_BLOCK, u): exp(i w j FORCE_STEP) of the distinct frequencies
         self._cache: OrderedDict[int, _Heading] = OrderedDict()
         self._last: dict[tuple[float, int], np.ndarray] = {}  # (t, heading step) -> the load, the newest few
 
@@ -227,10 +231,19 @@ class SlowDrift:
         columns[:, 0::2] = a * np.where(positive, root, 0.0)
         columns[:, 1::2] = a * np.where(positive, 0.0, root)
         # components of one frequency beat at zero difference frequency: added into one, exactly
-        omega, inverse = np.unique(self.omega[keep], return_inverse=True)
-        coefficients = np.zeros((omega.size, 6), dtype=complex)
-        np.add.at(coefficients, inverse.ravel(), columns)
-        return _Heading(omega, coefficients, constant, mean)
+        of_frequency = self._of_frequency[keep]
+        present = np.flatnonzero(np.bincount(of_frequency, minlength=self._frequencies.size))
+        coefficients = np.empty((present.size, 6), dtype=complex)
+        for j in range(6):
+            coefficients[:, j].real = np.bincount(of_frequency, columns[:, j].real, self._frequencies.size)[present]
+            coefficients[:, j].imag = np.bincount(of_frequency, columns[:, j].imag, self._frequencies.size)[present]
+        return _Heading(self._frequencies[present], coefficients, constant, mean, lambda: self._block()[:, present])
+
+    def _block(self) -> np.ndarray:
+        """``exp(i w j FORCE_STEP)`` of the distinct frequencies, j < :data:`_BLOCK`, (_BLOCK, u): computed once."""
+        if self._phasors is None:
+            self._phasors = np.exp(1j * np.outer(np.arange(_BLOCK) * FORCE_STEP, self._frequencies))
+        return self._phasors
 
 
 _GROUPS = np.kron(np.eye(3), [[1.0], [-1.0]])

@@ -197,18 +197,18 @@ class Moorings:
         if twice:
             raise ParameterError(f"line {twice[0]}: two lines of that name (line names must be unique)")
         self.names = tuple(names)
-        self._anchor = np.array([line.anchor for line in self.lines])  # (n, 2) north, east
-        self._fairlead = np.array([line.fairlead[:2] for line in self.lines])  # (n, 2) x, y
+        self._ends_at = tuple((float(line.anchor[0]), float(line.anchor[1]), float(line.fairlead[0]),
+                               float(line.fairlead[1])) for line in self.lines)
+        """Each line's far end (north m, east m) and fairlead (x m, y m), as plain floats."""
         self.mbl = np.array([line.type.mbl_n for line in self.lines])
         """Each line's minimum breaking load (N), (n_lines,)."""
         self.mbl.flags.writeable = False
-        spans = self._spans(0.0, 0.0, self.heading)[2]
-        tables = [(self._check_hawser if line.hawser else self._check_and_tabulate)(line, float(span))
+        spans = [span for *_, span in self._spans(0.0, 0.0, self.heading)]
+        tables = [(self._check_hawser if line.hawser else self._check_and_tabulate)(line, span)
                   for line, span in zip(self.lines, spans)]
         self._tabulate(tables, [line.hawser for line in self.lines])
-        self._floor = np.array([[0.0, -np.inf if line.hawser else 0.0] for line in self.lines])  # (n, 2) H, V
         self.failed: frozenset[str] = frozenset()
-        self._intact = np.ones(len(self.lines))
+        self._intact = (1.0,) * len(self.lines)
         self._variants: dict[frozenset[str], Moorings] = {}
         if failed:
             self._fail(frozenset(failed))
@@ -304,28 +304,26 @@ class Moorings:
         return spans, hv
 
     def _tabulate(self, tables: list[tuple[np.ndarray, np.ndarray]], hold_slack: Sequence[bool]) -> None:
-        """Cubic coefficients of every line's (H, V) against span, padded to one shape: (n, 4, segments, 2); the
-        lines of ``hold_slack`` (hawsers) held at their slack end's values below their table."""
-        n, most = len(tables), max(len(spans) for spans, _ in tables) - 1
-        self._lo = np.array([spans[0] for spans, _ in tables])
-        self._hi = np.array([spans[-1] for spans, _ in tables])
-        self._step = np.array([spans[1] - spans[0] for spans, _ in tables])
-        self._segments = np.array([len(spans) - 1 for spans, _ in tables])
-        self._coef = np.zeros((n, 4, most, 2))
-        self._ends = np.zeros((n, 2, 2, 2))  # line, (low, high), (value, slope), (H, V)
-        for i, (spans, hv) in enumerate(tables):
+        """Each line's cubic pieces of (H, V) against span, as plain floats (a step asks for a handful of lines,
+        where numpy's cost per call would be most of the time): (first span m, last span m, step m, last piece,
+        the pieces' coefficients (H3, V3, H2, V2, H1, V1, H0, V0) by piece, the ends' (H, V, dH/ds, dV/ds) at the
+        first and last span, the least V (N): 0, or none for a hawser); the lines of ``hold_slack`` (hawsers)
+        held at their slack end's values below their table."""
+        self._tables = []
+        for (spans, hv), hawser in zip(tables, hold_slack):
             spline = CubicSpline(spans, hv)
-            self._coef[i, :, : len(spans) - 1] = spline.c
             slope = spline.derivative()
-            self._ends[i, 0] = spline(spans[0]), slope(spans[0])
-            self._ends[i, 1] = spline(spans[-1]), slope(spans[-1])
-            if hold_slack[i]:
-                self._ends[i, 0, 1] = 0.0
+            pieces = tuple(tuple(row) for row in spline.c.transpose(1, 0, 2).reshape(len(spans) - 1, 8).tolist())
+            low = (*spline(spans[0]), *slope(spans[0]))
+            high = (*spline(spans[-1]), *slope(spans[-1]))
+            ends = (*low[:2], *((0.0, 0.0) if hawser else low[2:]), *high)
+            self._tables.append((float(spans[0]), float(spans[-1]), float(spans[1] - spans[0]), len(spans) - 2,
+                                 pieces, tuple(float(e) for e in ends), -math.inf if hawser else 0.0))
 
     @property
     def span_range(self) -> np.ndarray:
         """Each line's tabulated horizontal span (m), (n_lines, 2): beyond it the tension is extrapolated."""
-        return np.stack([self._lo, self._hi], axis=1)
+        return np.array([table[:2] for table in self._tables])
 
     # -- failures -----------------------------------------------------------------------------------------------
 
@@ -351,7 +349,7 @@ class Moorings:
         if unknown:
             raise ParameterError(f"line {unknown[0]}: no such mooring line (lines: {', '.join(self.names)})")
         self.failed = failed
-        self._intact = np.array([0.0 if name in failed else 1.0 for name in self.names])
+        self._intact = tuple(0.0 if name in failed else 1.0 for name in self.names)
 
     def _pretensions(self) -> np.ndarray:
         tensions = self.tensions(0.0, 0.0, self.heading)
@@ -360,43 +358,48 @@ class Moorings:
 
     # -- loads --------------------------------------------------------------------------------------------------
 
-    def _spans(self, north: float, east: float, psi: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """From each fairlead to its anchor (or fixed point): north and east (m) and the horizontal span (m), each
-        (n_lines,)."""
+    def _spans(self, north: float, east: float, psi: float) -> list[tuple[float, float, float]]:
+        """From each fairlead to its anchor (or fixed point): north and east (m) and the horizontal span (m), one
+        tuple per line."""
         c, s = math.cos(psi), math.sin(psi)
-        x, y = self._fairlead[:, 0], self._fairlead[:, 1]
-        d_north = self._anchor[:, 0] - (north + x * c - y * s)
-        d_east = self._anchor[:, 1] - (east + x * s + y * c)
-        return d_north, d_east, np.hypot(d_north, d_east)
+        out = []
+        for anchor_north, anchor_east, x, y in self._ends_at:
+            d_north = anchor_north - (north + x * c - y * s)
+            d_east = anchor_east - (east + x * s + y * c)
+            out.append((d_north, d_east, math.hypot(d_north, d_east)))
+        return out
 
-    def _hv(self, span: np.ndarray) -> np.ndarray:
-        """Horizontal tension and vertical pull down (N) at every line's fairlead at horizontal ``span`` (m, (n,)):
-        (n, 2); ``H`` >= 0, ``V`` >= 0 but for a hawser."""
-        rows = np.arange(len(span))
-        index = np.clip(np.floor((span - self._lo) / self._step).astype(int), 0, self._segments - 1)
-        t = (span - (self._lo + index * self._step))[:, None]
-        c = self._coef[rows, :, index]  # (n, 4, 2)
-        inside = ((c[:, 0] * t + c[:, 1]) * t + c[:, 2]) * t + c[:, 3]
-        below = self._ends[:, 0, 0] + self._ends[:, 0, 1] * (span - self._lo)[:, None]
-        above = self._ends[:, 1, 0] + self._ends[:, 1, 1] * (span - self._hi)[:, None]
-        hv = np.where((span < self._lo)[:, None], below, np.where((span > self._hi)[:, None], above, inside))
-        return np.maximum(hv, self._floor) * self._intact[:, None]
+    def _hv(self, i: int, span: float) -> tuple[float, float]:
+        """Line ``i``'s horizontal tension and vertical pull down (N) at its fairlead at horizontal ``span`` (m):
+        ``H`` >= 0, ``V`` >= 0 but for a hawser; both 0 for a parted line."""
+        lo, hi, step, last, pieces, ends, least = self._tables[i]
+        if span < lo:
+            h, v = ends[0] + ends[2] * (span - lo), ends[1] + ends[3] * (span - lo)
+        elif span > hi:
+            h, v = ends[4] + ends[6] * (span - hi), ends[5] + ends[7] * (span - hi)
+        else:
+            k = min(max(math.floor((span - lo) / step), 0), last)
+            t = span - (lo + k * step)
+            h3, v3, h2, v2, h1, v1, h0, v0 = pieces[k]
+            h, v = ((h3 * t + h2) * t + h1) * t + h0, ((v3 * t + v2) * t + v1) * t + v0
+        intact = self._intact[i]
+        return max(h, 0.0) * intact, max(v, least) * intact
 
     def force(self, north: float, east: float, psi: float) -> np.ndarray:
         """The intact lines' pull on the vessel at (``north``, ``east``, ``psi``): (X N forward, Y N to starboard,
         N N m bow to starboard) in body axes about her origin, (3,)."""
-        d_north, d_east, span = self._spans(north, east, psi)
-        h = self._hv(span)[:, 0] / np.maximum(span, 1e-9)
-        f_north, f_east = h * d_north, h * d_east
         c, s = math.cos(psi), math.sin(psi)
-        x_force, y_force = f_north * c + f_east * s, -f_north * s + f_east * c
-        moment = self._fairlead[:, 0] * y_force - self._fairlead[:, 1] * x_force
-        return np.array([x_force.sum(), y_force.sum(), moment.sum()])
+        x_sum = y_sum = moment = 0.0
+        for i, ((d_north, d_east, span), (*_, x, y)) in enumerate(zip(self._spans(north, east, psi), self._ends_at)):
+            h = self._hv(i, span)[0] / max(span, 1e-9)
+            f_north, f_east = h * d_north, h * d_east
+            x_force, y_force = f_north * c + f_east * s, -f_north * s + f_east * c
+            x_sum, y_sum, moment = x_sum + x_force, y_sum + y_force, moment + (x * y_force - y * x_force)
+        return np.array([x_sum, y_sum, moment])
 
     def tensions(self, north: float, east: float, psi: float) -> np.ndarray:
         """Each line's tension at its fairlead, ``hypot(H, V)`` (N), (n_lines,); 0 for a parted line."""
-        hv = self._hv(self._spans(north, east, psi)[2])
-        return np.hypot(hv[:, 0], hv[:, 1])
+        return np.array([math.hypot(*self._hv(i, span)) for i, (*_, span) in enumerate(self._spans(north, east, psi))])
 
     def stiffness(self, north: float = 0.0, east: float = 0.0, psi: float | None = None) -> np.ndarray:
         """The restoring stiffness ``K = -d(X, Y, N) / d(x, y, psi)`` (3, 3; N/m, N/rad, N m/m, N m/rad) at
