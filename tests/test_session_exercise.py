@@ -251,8 +251,9 @@ def test_a_vessel_on_dp_is_stepped_once_past_a_scripted_change():
     """``assess`` computes the record ahead of the clock, but not into the next scripted change: the change would
     throw away what lay beyond it, and a vessel keeping station would be stepped over that stretch again.
     configs/supply_dp.toml with its thruster trip moved to 30 s, run for a minute: the 0.1 s steps taken twice are
-    at most the few the voyage takes ahead of the clock (:data:`CHUNK_STEPS`), and none beyond those past the end. What would be wrong: the DP stepped twice over
-    the half minute after the trip (in the shipped exercises, minutes of the run stepped twice)."""
+    at most the few the voyage takes ahead of the clock (:data:`CHUNK_STEPS`), and none beyond those past the end.
+    What would be wrong: the DP stepped twice over the half minute after the trip (in the shipped exercises, minutes
+    of the run stepped twice)."""
     scenario = load_scenario(ROOT / "configs" / "supply_dp.toml")
     trip = next(event for event in scenario.events if event.fault is not None)
     scenario = with_run(dataclasses.replace(scenario, events=(dataclasses.replace(trip, at_s=30.0),)), 60.0)
