@@ -143,6 +143,8 @@ class SlowDrift:
         self._frequencies, self._of_frequency = np.unique(self.omega, return_inverse=True)
         """The distinct frequencies (u,) rad/s, and each component's among them (n,)."""
         self._phasors: np.ndarray | None = None  # (_BLOCK, u): exp(i w j FORCE_STEP) of the distinct frequencies
+        self._by_heading = table.at_frequencies(self.omega)
+        """Each component's coefficients on every table heading, (n, n_b, 3)."""
         self._cache: OrderedDict[int, _Heading] = OrderedDict()
         self._last: dict[tuple[float, int], np.ndarray] = {}  # (t, heading step) -> the load, the newest few
 
@@ -212,7 +214,7 @@ class SlowDrift:
         return prepared
 
     def _prepare(self, heading: float) -> _Heading:
-        d = self.table(self.omega, self.direction - heading)  # (n, 3)
+        d = self.table.at_headings(self._by_heading, self.direction - heading)  # (n, 3)
         contribution = self._power[:, None] * d               # |a_j|^2 D_j
         mean = contribution.sum(axis=0)
         keep = np.zeros(self.omega.size, dtype=bool)

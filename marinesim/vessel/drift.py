@@ -52,32 +52,37 @@ class DriftTable:
         """``D`` at wave frequencies ``omega`` (rad/s) and relative headings ``beta`` (rad), broadcast together:
         shape ``broadcast(omega, beta).shape + (3,)``, i.e. (n, 3) for (n,) inputs.
 
-        Bilinear in frequency and in heading (periodic over 2 pi). Above the highest frequency the last row is
-        kept (constant); below the lowest the first row falls as ``(omega / omega_0)^4``
-        (:data:`LONG_WAVE_POWER`), and ``omega <= 0`` gives zero.
+        Bilinear in frequency and in heading (periodic over 2 pi): :meth:`at_frequencies`, then
+        :meth:`at_headings`. Above the highest frequency the last row is kept (constant); below the lowest the first
+        row falls as ``(omega / omega_0)^4`` (:data:`LONG_WAVE_POWER`), and ``omega <= 0`` gives zero.
         """
         w, b = np.broadcast_arrays(np.asarray(omega, dtype=float), np.asarray(beta, dtype=float))
-        shape = w.shape
-        w, b = w.ravel(), b.ravel()
-        # heading: wrap into [beta_0, beta_0 + 2 pi) and interpolate on the table closed round the circle
-        ring = np.append(self.beta, self.beta[0] + 2.0 * math.pi)
-        q = self.beta[0] + np.mod(b - self.beta[0], 2.0 * math.pi)
-        j = np.clip(np.searchsorted(ring, q, side="right") - 1, 0, self.beta.size - 1)
-        tb = ((q - ring[j]) / (ring[j + 1] - ring[j]))[:, None]
-        j1 = np.where(j + 1 == self.beta.size, 0, j + 1)
-        # frequency: clamp into the table; the long-wave factor applies below it
+        return self.at_headings(self.at_frequencies(w.ravel()), b.ravel()).reshape(w.shape + (3,))
+
+    def at_frequencies(self, omega: np.ndarray) -> np.ndarray:
+        """The frequency half of the lookup: ``D`` at each of ``omega`` (n,) rad/s on every table heading,
+        (n, n_b, 3), linear between the table's frequencies (the long-wave factor below them)."""
+        w = np.asarray(omega, dtype=float).ravel()
         n_w = self.omega.size
         wc = np.clip(w, self.omega[0], self.omega[-1])
         i = np.clip(np.searchsorted(self.omega, wc, side="right") - 1, 0, max(n_w - 2, 0))
         i1 = np.minimum(i + 1, n_w - 1)
         span = self.omega[i1] - self.omega[i]
-        tw = np.divide(wc - self.omega[i], span, out=np.zeros_like(wc), where=span > 0)[:, None]
-        c = self.coefficients
-        low = (1.0 - tb) * c[i, j] + tb * c[i, j1]
-        high = (1.0 - tb) * c[i1, j] + tb * c[i1, j1]
-        out = (1.0 - tw) * low + tw * high
+        tw = np.divide(wc - self.omega[i], span, out=np.zeros_like(wc), where=span > 0)[:, None, None]
         factor = np.where(w >= self.omega[0], 1.0, np.clip(w / self.omega[0], 0.0, None) ** LONG_WAVE_POWER)
-        return (out * factor[:, None]).reshape(shape + (3,))
+        return ((1.0 - tw) * self.coefficients[i] + tw * self.coefficients[i1]) * factor[:, None, None]
+
+    def at_headings(self, by_heading: np.ndarray, beta: np.ndarray) -> np.ndarray:
+        """The heading half: ``D`` (n, 3) from :meth:`at_frequencies`' (n, n_b, 3) at relative headings ``beta``
+        (n,) rad, linear between the table's headings round the circle."""
+        b = np.asarray(beta, dtype=float).ravel()
+        ring = np.append(self.beta, self.beta[0] + 2.0 * math.pi)
+        q = self.beta[0] + np.mod(b - self.beta[0], 2.0 * math.pi)
+        j = np.clip(np.searchsorted(ring, q, side="right") - 1, 0, self.beta.size - 1)
+        tb = ((q - ring[j]) / (ring[j + 1] - ring[j]))[:, None]
+        j1 = np.where(j + 1 == self.beta.size, 0, j + 1)
+        rows = np.arange(b.size)
+        return (1.0 - tb) * by_heading[rows, j] + tb * by_heading[rows, j1]
 
 
 def make_drift_table(omega: np.ndarray, beta: np.ndarray, coefficients: np.ndarray, *, source: str = "",
