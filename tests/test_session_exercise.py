@@ -11,11 +11,11 @@ import pytest
 
 from conftest import ROOT, VESSEL_SCENARIO, offscreen, write
 from marinesim.constants import KNOT
-from marinesim.criteria.monitor import Level
+from marinesim.criteria.monitor import Level, parse_condition
 from marinesim.errors import ParameterError
 from marinesim.manoeuvring.voyage import CHUNK_STEPS
 from marinesim.scenario import load_scenario, with_run
-from marinesim.session.exercise import Exercise
+from marinesim.session.exercise import AHEAD_ON_CONDITION_S, Exercise
 from marinesim.session.timeline import Simulation
 
 RAMP = """
@@ -247,16 +247,21 @@ def test_fog_rolls_in_when_its_event_happens_and_the_instructor_clears_it(tmp_pa
     simulation.close()
 
 
-def test_a_vessel_on_dp_is_stepped_once_past_a_scripted_change():
-    """``assess`` computes the record ahead of the clock, but not into the next scripted change: the change would
-    throw away what lay beyond it, and a vessel keeping station would be stepped over that stretch again.
-    configs/supply_dp.toml with its thruster trip moved to 30 s, run for a minute: the 0.1 s steps taken twice are
-    at most the few the voyage takes ahead of the clock (:data:`CHUNK_STEPS`), and none beyond those past the end.
-    What would be wrong: the DP stepped twice over the half minute after the trip (in the shipped exercises, minutes
-    of the run stepped twice)."""
+@pytest.mark.parametrize("change", ["timed", "on condition"])
+def test_a_vessel_on_dp_is_stepped_once_past_a_scripted_change(change):
+    """``assess`` computes the record ahead of the clock, but not into the next scripted change (nor more than
+    :data:`AHEAD_ON_CONDITION_S` on while a change waits on its condition): the change throws away what lay beyond
+    it, and a vessel keeping station is stepped over that stretch again. configs/supply_dp.toml for three minutes,
+    its thruster trip moved to 30 s, or a set point moved 5 m north when her offset first passes 0.01 m (a few
+    seconds in): the 0.1 s steps taken twice are at most the few the voyage takes ahead of the clock
+    (:data:`CHUNK_STEPS`) and the condition's horizon, and none beyond those past the end. What would be wrong: the
+    DP stepped twice over the rest of the run after the change (in the shipped exercises, minutes of it)."""
     scenario = load_scenario(ROOT / "configs" / "supply_dp.toml")
     trip = next(event for event in scenario.events if event.fault is not None)
-    scenario = with_run(dataclasses.replace(scenario, events=(dataclasses.replace(trip, at_s=30.0),)), 60.0)
+    event = (dataclasses.replace(trip, at_s=30.0) if change == "timed" else
+             dataclasses.replace(trip, at_s=None, condition=parse_condition("offset_max_m > 0.01"), fault=None,
+                                 set_north_m=5.0))
+    scenario = with_run(dataclasses.replace(scenario, events=(event,)), 180.0)
     simulation = Simulation(scenario, wake=False)
     stepped = []
 
@@ -277,7 +282,8 @@ def test_a_vessel_on_dp_is_stepped_once_past_a_scripted_change():
     exercise = Exercise(simulation)
     exercise.run()
     simulation.close()
-    assert [e.index for e in exercise.happened] == [0], "the trip happened"
+    assert [e.index for e in exercise.happened] == [0], "the change happened"
+    horizon = 0 if change == "timed" else round(AHEAD_ON_CONDITION_S / 0.1)
     again = len(stepped) - len(set(stepped))
-    assert again <= CHUNK_STEPS, f"{again} steps taken twice (the voyage steps {CHUNK_STEPS} ahead of the clock)"
-    assert max(stepped) <= 600 + CHUNK_STEPS
+    assert again <= CHUNK_STEPS + horizon, f"{again} steps taken twice (the voyage steps {CHUNK_STEPS} ahead)"
+    assert max(stepped) <= 1800 + CHUNK_STEPS

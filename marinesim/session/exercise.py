@@ -51,6 +51,9 @@ BLOCK = 512
 AHEAD = 8192
 """Rows of the record computed at once by ``assess``, the export and the headless run (the viewer
 computes only the rows up to its clock, a few a frame)."""
+AHEAD_ON_CONDITION_S = 60.0
+"""While an event that changes the run waits on its condition, the record is computed at most this far ahead (s):
+what lies beyond the moment it holds is computed again."""
 
 
 @dataclass(frozen=True)
@@ -367,20 +370,24 @@ class Exercise:
         scripted change) ahead."""
         ahead = self._ahead
         if ahead is None or ahead[1] != self.sim.version or not ahead[0] <= first <= last < ahead[0] + ahead[2]:
-            count = max(last, min(ahead_to, first + AHEAD - 1, self._before_next_change())) - first + 1
+            count = max(last, min(ahead_to, first + AHEAD - 1, self._before_next_change(first))) - first + 1
             self._ahead = ahead = (first, self.sim.version, count,
                                    self.sim.frame_steps(first * self.dt, self.dt, count))
         lo, hi = first - ahead[0], last + 1 - ahead[0]
         return {name: column[lo:hi] for name, column in ahead[3].items()}
 
-    def _before_next_change(self) -> int | float:
-        """The last row before the next timed event that changes the timeline (its sea, orders or weather), or
-        infinity: the change drops the record beyond it, and a vessel keeping station is stepped again from there."""
+    def _before_next_change(self, first: int) -> int | float:
+        """The last row from ``first`` the record may be computed ahead to: before the next timed event that changes
+        the timeline (its sea, orders or weather), and no more than :data:`AHEAD_ON_CONDITION_S` on while such an
+        event waits on its condition (infinity: no limit). A change drops the record beyond it, and a vessel
+        keeping station is stepped again from there."""
+        changes = [i for i in self._conditional if self.events[i].changes or self.events[i].weather]
+        limit = first + math.ceil(AHEAD_ON_CONDITION_S / self.dt) - 1 if changes else math.inf
         for index in self._timed[self._announced:]:
             event = self.events[index]
             if event.changes or event.weather:
-                return math.ceil(event.at_s / self.dt - 1e-9) - 1
-        return math.inf
+                return min(limit, math.ceil(event.at_s / self.dt - 1e-9) - 1)
+        return limit
 
     def _last_row(self, t: float) -> int:
         return last_row(t, self.dt) if self.sim.vessel is not None else -1
