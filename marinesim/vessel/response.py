@@ -111,7 +111,8 @@ class Response:
         iw = 1j * self.omega_e[:, None]
         columns = [motion, iw * motion, iw ** 2 * motion, at_origin[:, None]]
         columns += [self.elevation_coefficients(p)[:, None] for p in self.points.values()]
-        self._coefficients = np.concatenate(columns, axis=1)               # (n, 19 + points)
+        coefficients = np.concatenate(columns, axis=1)                     # (n, 19 + points)
+        self._real, self._imag = np.ascontiguousarray(coefficients.real), np.ascontiguousarray(coefficients.imag)
 
     def elevation_coefficients(self, p: np.ndarray) -> np.ndarray:
         """The incident waves at the mean position of body point ``p`` (3,) (m): complex (n,), the elevation being
@@ -148,11 +149,10 @@ class Response:
         """Real linear outputs at arbitrary ``times`` (s): (T, 19 + points) = 6 DOF displacement,
         velocity, acceleration (m, rad), elevation at the reference point and at each point."""
         times = np.asarray(times, dtype=float).ravel()
-        out = np.empty((times.size, self._coefficients.shape[1]))
+        out = np.empty((times.size, self._real.shape[1]))
         for lo in range(0, times.size, BLOCK):
             phase = np.outer(times[lo:lo + BLOCK], self.omega_e)
-            out[lo:lo + BLOCK] = (np.cos(phase) @ self._coefficients.real
-                                  - np.sin(phase) @ self._coefficients.imag)
+            out[lo:lo + BLOCK] = np.cos(phase) @ self._real - np.sin(phase) @ self._imag
         return out
 
     def linear_steps(self, start: float, dt: float, steps: int) -> Iterator[tuple[np.ndarray, np.ndarray]]:
@@ -160,8 +160,9 @@ class Response:
 
         One phasor table ``exp(i w_e j dt)`` (j below the block's length, :data:`BLOCK` or the run's steps;
         :func:`~marinesim.sea.phasors.phasor_table`) serves every block, the block's start time folded into the
-        coefficients. The product is memory-bound, so components go in chunks
-        whose table stays in cache while a run of blocks reuses it.
+        coefficients, or into the table where it has fewer rows than there are outputs (a few steps of the viewer's
+        frame). The product is memory-bound, so components go in chunks whose table stays in cache while a run of
+        blocks reuses it.
         """
         dt = require_positive("time step", dt)
         start = require_finite("start time", start)
@@ -171,20 +172,26 @@ class Response:
             return
         size = CHUNK * min(BLOCK // block, WIDEST)  # a short run's table, as few rows, takes more components
         chunks = [slice(lo, lo + size) for lo in range(0, self.omega_e.size, size)]
+        few = block < self._real.shape[1]
         tables = []
         for chunk in chunks:
             phasors = phasor_table(self.omega_e[chunk], dt, block)
-            tables.append(np.concatenate([phasors.real, phasors.imag], axis=1))   # (block, 2 chunk)
+            tables.append(phasors if few else np.concatenate([phasors.real, phasors.imag], axis=1))  # (block, 2 chunk) real
         span = block * BLOCKS_PER_PASS
         for first in range(0, steps, span):
             count = min(span, steps - first)
-            out = np.zeros((count, self._coefficients.shape[1]))
+            out = np.zeros((count, self._real.shape[1]))
             for chunk, table in zip(chunks, tables):
-                coefficients, omega_e = self._coefficients[chunk], self.omega_e[chunk]
+                real, imag, omega_e = self._real[chunk], self._imag[chunk], self.omega_e[chunk]
                 for lo in range(0, count, block):
                     n = min(block, count - lo)
-                    shifted = coefficients * np.exp(1j * omega_e * (start + (first + lo) * dt))[:, None]
-                    out[lo:lo + n] += table[:n] @ np.concatenate([shifted.real, -shifted.imag], axis=0)
+                    turn = np.exp(1j * omega_e * (start + (first + lo) * dt))
+                    if few:
+                        turned = table[:n] * turn
+                        out[lo:lo + n] += turned.real @ real - turned.imag @ imag
+                    else:
+                        c, s = turn.real[:, None], turn.imag[:, None]
+                        out[lo:lo + n] += table[:n] @ np.concatenate([real * c - imag * s, -(real * s + imag * c)])
             for lo in range(0, count, block):
                 n = min(block, count - lo)
                 yield start + (first + lo + np.arange(n)) * dt, out[lo:lo + n]
