@@ -220,8 +220,6 @@ class Simulation:
 
     def components(self, index: int) -> Components:
         """Component set ``index`` (:meth:`Assembly.components` at its time): set 0 the scenario's sea."""
-        if index == 0:
-            return self.assembly.components()
         return self._sets.get(index, len(self._set_times) - 1)
 
     def advance(self, dt: float, step_solver: bool = True) -> None:
