@@ -26,12 +26,20 @@ def test_a_table_is_the_direct_exponential(rows):
     assert np.abs(table - direct).max() < 1e-13
 
 
-def test_the_block_product_is_the_response_time_by_time():
+@pytest.fixture(scope="module")
+def response() -> Response:
+    """The WAMIT tanker's response to configs/tanker_dp.toml's sea on a heading of 0.3 rad, at rest."""
     scenario = load_scenario(ROOT / "configs" / "tanker_dp.toml")
     with Simulation(scenario, wake=False) as simulation:
         components = simulation.components(0)
-    response = Response(scenario.vessel.rao, components, Track(0.3, 0.0), scenario.vessel.points, strict=False)
-    start, dt, steps = 1000.05, 0.1, 1300  # blocks of 512 and a part block, far from t = 0
+    return Response(scenario.vessel.rao, components, Track(0.3, 0.0), scenario.vessel.points, strict=False)
+
+
+@pytest.mark.parametrize("steps", [1, 3, 17, 1300])
+def test_the_block_product_is_the_response_time_by_time(response, steps):
+    """1300 steps: blocks of 512 and a part block; 1, 3 and 17: a table of fewer rows than outputs (the viewer's
+    frame), turned to the run's start instead of the coefficients."""
+    start, dt = 1000.05, 0.1  # far from t = 0
     blocks = np.concatenate([out for _, out in response.linear_steps(start, dt, steps)])
     times = start + dt * np.arange(steps)
     direct = response.linear(times)

@@ -13,6 +13,7 @@ from conftest import ROOT, VESSEL_SCENARIO, offscreen, write
 from marinesim.constants import KNOT
 from marinesim.criteria.monitor import Level, parse_condition
 from marinesim.errors import ParameterError
+from marinesim.manoeuvring.ship import STEP_S
 from marinesim.manoeuvring.voyage import CHUNK_STEPS
 from marinesim.scenario import load_scenario, with_run
 from marinesim.session.exercise import AHEAD_ON_CONDITION_S, Exercise
@@ -283,7 +284,7 @@ def test_a_vessel_on_dp_is_stepped_once_past_a_scripted_change(change):
     exercise.run()
     simulation.close()
     assert [e.index for e in exercise.happened] == [0], "the change happened"
-    horizon = 0 if change == "timed" else round(AHEAD_ON_CONDITION_S / 0.1)
+    horizon = 0 if change == "timed" else round(AHEAD_ON_CONDITION_S / STEP_S)
     again = len(stepped) - len(set(stepped))
     assert again <= CHUNK_STEPS + horizon, f"{again} steps taken twice (the voyage steps {CHUNK_STEPS} ahead)"
-    assert max(stepped) <= 1800 + CHUNK_STEPS
+    assert max(stepped) <= round(180.0 / STEP_S) + CHUNK_STEPS

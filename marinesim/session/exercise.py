@@ -330,9 +330,9 @@ class Exercise:
     def _steps(self, target: float, rows: bool, step_solver: bool = True) -> Iterator[dict[str, np.ndarray]]:
         """Move the clock to ``target`` (s): record the rows up to it if the monitor needs them (and
         yield them, :data:`BLOCK` rows or more at a time, if ``rows``), stopping the clock at each
-        evaluation to evaluate and let events happen. With ``rows`` the record is computed
-        :data:`AHEAD` rows at a time (the response's fast path); a change of the timeline drops what
-        was computed ahead."""
+        evaluation to evaluate and let events happen. With ``rows`` the record is computed up to
+        :data:`AHEAD` rows at a time (the response's fast path; fewer before a scripted change); a change of
+        the timeline drops what was computed ahead."""
         last = self._last_row(target)
         recording = rows or self.monitor is not None
         out: list[dict[str, np.ndarray]] = []
@@ -382,7 +382,7 @@ class Exercise:
         event waits on its condition (infinity: no limit). A change drops the record beyond it, and a vessel
         keeping station is stepped again from there."""
         changes = [i for i in self._conditional if self.events[i].changes or self.events[i].weather]
-        limit = first + math.ceil(AHEAD_ON_CONDITION_S / self.dt) - 1 if changes else math.inf
+        limit = first + round(AHEAD_ON_CONDITION_S / self.dt) - 1 if changes else math.inf
         for index in self._timed[self._announced:]:
             event = self.events[index]
             if event.changes or event.weather:

@@ -75,18 +75,31 @@ def mean_drift(table: DriftTable, spectrum_omega: np.ndarray,
     return 2.0 * trapezoid(s[:, None] * values, fine, axis=0)
 
 
-class _Heading:
-    """The sums of one heading: kept frequencies (m,) rad/s, coefficients (m, 6) per sign group, the mean of the
-    components left out (3,), the full mean (3,), and the window of loads (W, 3) on the time grid from index
-    ``start`` (times ``(start + i) FORCE_STEP``). ``block`` gives the phasors ``exp(i w j FORCE_STEP)``, j <
-    :data:`_BLOCK`, of the kept frequencies, (_BLOCK, m), when first asked."""
+class _Phasors:
+    """``exp(i w j FORCE_STEP)``, j < :data:`_BLOCK`, of the distinct frequencies ``omega`` (u,) rad/s: (_BLOCK, u),
+    computed when first asked and shared by every heading's sums."""
 
-    def __init__(self, omega: np.ndarray, coefficients: np.ndarray, constant: np.ndarray, mean: np.ndarray,
-                 block: Callable[[], np.ndarray]) -> None:
-        self.omega, self.coefficients, self.constant, self.mean = omega, coefficients, constant, mean
+    def __init__(self, omega: np.ndarray) -> None:
+        self.omega = omega
+        self._table: np.ndarray | None = None
+
+    def table(self) -> np.ndarray:
+        if self._table is None:
+            self._table = np.exp(1j * np.outer(np.arange(_BLOCK) * FORCE_STEP, self.omega))
+        return self._table
+
+
+class _Heading:
+    """The sums of one heading: kept frequencies (m,) rad/s (``phasors``' columns ``present``), coefficients (m, 6)
+    per sign group, the mean of the components left out (3,), the full mean (3,), and the window of loads (W, 3) on
+    the time grid from index ``start`` (times ``(start + i) FORCE_STEP``)."""
+
+    def __init__(self, phasors: _Phasors, present: np.ndarray, coefficients: np.ndarray, constant: np.ndarray,
+                 mean: np.ndarray) -> None:
+        self.omega, self.coefficients, self.constant, self.mean = phasors.omega[present], coefficients, constant, mean
+        self._phasors, self._present = phasors, present
         self.start = 0
         self.window = np.empty((0, 3))
-        self._block = block
 
     def series(self, times: np.ndarray, chunk: int = 512) -> np.ndarray:
         """The loads (n_t, 3) at ``times`` (n_t,) s, summed exactly."""
@@ -100,7 +113,7 @@ class _Heading:
     def fill(self, start: int, length: int) -> None:
         """Sum the window of ``length`` (a multiple of ``_BLOCK``) grid times from index ``start``: the phases
         ``exp(i w t)`` advance block by block by multiplication (one exponential per component and window)."""
-        block = self._block()
+        block = self._phasors.table()[:, self._present]
         jump = np.exp(1j * self.omega * (_BLOCK * FORCE_STEP))
         phase = np.exp(1j * self.omega * (start * FORCE_STEP))
         sums = np.empty((length, 6), dtype=complex)
@@ -140,11 +153,11 @@ class SlowDrift:
         self.table = table
         self.kept_share = require_within("kept_share", kept_share, 0.0, 1.0)
         self._power = np.abs(self.amplitude) ** 2
-        self._frequencies, self._of_frequency = np.unique(self.omega, return_inverse=True)
-        """The distinct frequencies (u,) rad/s, and each component's among them (n,)."""
-        self._phasors: np.ndarray | None = None  # (_BLOCK, u): exp(i w j FORCE_STEP) of the distinct frequencies
-        self._by_heading = table.at_frequencies(self.omega)
-        """Each component's coefficients on every table heading, (n, n_b, 3)."""
+        frequencies, self._of_frequency = np.unique(self.omega, return_inverse=True)
+        """Each component's among the distinct frequencies (n,)."""
+        self._phasors = _Phasors(frequencies)
+        self._by_frequency = table.at_frequencies(frequencies)
+        """The drift coefficients of each distinct frequency on every table heading, (u, n_b, 3)."""
         self._cache: OrderedDict[int, _Heading] = OrderedDict()
         self._last: dict[tuple[float, int], np.ndarray] = {}  # (t, heading step) -> the load, the newest few
 
@@ -214,7 +227,7 @@ class SlowDrift:
         return prepared
 
     def _prepare(self, heading: float) -> _Heading:
-        d = self.table.at_headings(self._by_heading, self.direction - heading)  # (n, 3)
+        d = self.table.at_headings(self._by_frequency, self.direction - heading, self._of_frequency)  # (n, 3)
         contribution = self._power[:, None] * d               # |a_j|^2 D_j
         mean = contribution.sum(axis=0)
         keep = np.zeros(self.omega.size, dtype=bool)
@@ -234,18 +247,13 @@ class SlowDrift:
         columns[:, 1::2] = a * np.where(positive, 0.0, root)
         # components of one frequency beat at zero difference frequency: added into one, exactly
         of_frequency = self._of_frequency[keep]
-        present = np.flatnonzero(np.bincount(of_frequency, minlength=self._frequencies.size))
+        distinct = self._phasors.omega.size
+        present = np.flatnonzero(np.bincount(of_frequency, minlength=distinct))
         coefficients = np.empty((present.size, 6), dtype=complex)
         for j in range(6):
-            coefficients[:, j].real = np.bincount(of_frequency, columns[:, j].real, self._frequencies.size)[present]
-            coefficients[:, j].imag = np.bincount(of_frequency, columns[:, j].imag, self._frequencies.size)[present]
-        return _Heading(self._frequencies[present], coefficients, constant, mean, lambda: self._block()[:, present])
-
-    def _block(self) -> np.ndarray:
-        """``exp(i w j FORCE_STEP)`` of the distinct frequencies, j < :data:`_BLOCK`, (_BLOCK, u): computed once."""
-        if self._phasors is None:
-            self._phasors = np.exp(1j * np.outer(np.arange(_BLOCK) * FORCE_STEP, self._frequencies))
-        return self._phasors
+            coefficients[:, j].real = np.bincount(of_frequency, columns[:, j].real, distinct)[present]
+            coefficients[:, j].imag = np.bincount(of_frequency, columns[:, j].imag, distinct)[present]
+        return _Heading(self._phasors, present, coefficients, constant, mean)
 
 
 _GROUPS = np.kron(np.eye(3), [[1.0], [-1.0]])

@@ -373,6 +373,8 @@ class Moorings:
         """Line ``i``'s horizontal tension and vertical pull down (N) at its fairlead at horizontal ``span`` (m):
         ``H`` >= 0, ``V`` >= 0 but for a hawser; both 0 for a parted line."""
         lo, hi, step, last, pieces, ends, least = self._tables[i]
+        if math.isnan(span):
+            return math.nan, math.nan
         if span < lo:
             h, v = ends[0] + ends[2] * (span - lo), ends[1] + ends[3] * (span - lo)
         elif span > hi:

@@ -60,8 +60,9 @@ class DriftTable:
         return self.at_headings(self.at_frequencies(w.ravel()), b.ravel()).reshape(w.shape + (3,))
 
     def at_frequencies(self, omega: np.ndarray) -> np.ndarray:
-        """The frequency half of the lookup: ``D`` at each of ``omega`` (n,) rad/s on every table heading,
-        (n, n_b, 3), linear between the table's frequencies (the long-wave factor below them)."""
+        """The frequency half of the lookup: ``D`` (N/m^2, N/m^2, N m/m^2) at each of ``omega`` (n,) rad/s on
+        every table heading, (n, n_b, 3), linear between the table's frequencies (the long-wave factor below
+        them)."""
         w = np.asarray(omega, dtype=float).ravel()
         n_w = self.omega.size
         wc = np.clip(w, self.omega[0], self.omega[-1])
@@ -72,17 +73,21 @@ class DriftTable:
         factor = np.where(w >= self.omega[0], 1.0, np.clip(w / self.omega[0], 0.0, None) ** LONG_WAVE_POWER)
         return ((1.0 - tw) * self.coefficients[i] + tw * self.coefficients[i1]) * factor[:, None, None]
 
-    def at_headings(self, by_heading: np.ndarray, beta: np.ndarray) -> np.ndarray:
-        """The heading half: ``D`` (n, 3) from :meth:`at_frequencies`' (n, n_b, 3) at relative headings ``beta``
-        (n,) rad, linear between the table's headings round the circle."""
+    def at_headings(self, by_frequency: np.ndarray, beta: np.ndarray, rows: np.ndarray | None = None) -> np.ndarray:
+        """The heading half: ``D`` (n, 3) at relative headings ``beta`` (n,) rad, linear between the table's
+        headings round the circle, from :meth:`at_frequencies`' (m, n_b, 3): heading ``i`` on its row ``rows[i]``
+        (default: row ``i``)."""
         b = np.asarray(beta, dtype=float).ravel()
+        rows = np.arange(b.size) if rows is None else np.asarray(rows).ravel()
+        if rows.size != b.size or (rows.size and (rows.min() < 0 or rows.max() >= by_frequency.shape[0])):
+            raise ParameterError(f"at_headings: {b.size} headings need as many rows of the {by_frequency.shape[0]} "
+                                 f"frequencies' coefficients, got {rows.size}")
         ring = np.append(self.beta, self.beta[0] + 2.0 * math.pi)
         q = self.beta[0] + np.mod(b - self.beta[0], 2.0 * math.pi)
         j = np.clip(np.searchsorted(ring, q, side="right") - 1, 0, self.beta.size - 1)
         tb = ((q - ring[j]) / (ring[j + 1] - ring[j]))[:, None]
         j1 = np.where(j + 1 == self.beta.size, 0, j + 1)
-        rows = np.arange(b.size)
-        return (1.0 - tb) * by_heading[rows, j] + tb * by_heading[rows, j1]
+        return (1.0 - tb) * by_frequency[rows, j] + tb * by_frequency[rows, j1]
 
 
 def make_drift_table(omega: np.ndarray, beta: np.ndarray, coefficients: np.ndarray, *, source: str = "",

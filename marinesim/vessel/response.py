@@ -176,7 +176,8 @@ class Response:
         tables = []
         for chunk in chunks:
             phasors = phasor_table(self.omega_e[chunk], dt, block)
-            tables.append(phasors if few else np.concatenate([phasors.real, phasors.imag], axis=1))  # (block, 2 chunk) real
+            # (block, chunk) complex, or its real and imaginary parts side by side (block, 2 chunk)
+            tables.append(phasors if few else np.concatenate([phasors.real, phasors.imag], axis=1))
         span = block * BLOCKS_PER_PASS
         for first in range(0, steps, span):
             count = min(span, steps - first)
@@ -188,7 +189,8 @@ class Response:
                     turn = np.exp(1j * omega_e * (start + (first + lo) * dt))
                     if few:
                         turned = table[:n] * turn
-                        out[lo:lo + n] += turned.real @ real - turned.imag @ imag
+                        c, s = np.ascontiguousarray(turned.real), np.ascontiguousarray(turned.imag)  # for BLAS
+                        out[lo:lo + n] += c @ real - s @ imag
                     else:
                         c, s = turn.real[:, None], turn.imag[:, None]
                         out[lo:lo + n] += table[:n] @ np.concatenate([real * c - imag * s, -(real * s + imag * c)])
