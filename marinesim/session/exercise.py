@@ -291,6 +291,8 @@ class Exercise:
         self._asked = 0      # timed events asked of the timeline
         self._announced = 0  # timed events that have happened
         self._conditional = list(self._watching)
+        self._changing = {i for i, event in enumerate(self.events) if event.changes or event.weather}
+        """The events that change the timeline (its sea, orders or weather)."""
         self.row = 0
         """The next grid row to record."""
         self._ahead: tuple[int, int, int, dict[str, np.ndarray]] | None = None
@@ -381,12 +383,11 @@ class Exercise:
         the timeline (its sea, orders or weather), and no more than :data:`AHEAD_ON_CONDITION_S` on while such an
         event waits on its condition (infinity: no limit). A change drops the record beyond it, and a vessel
         keeping station is stepped again from there."""
-        changes = [i for i in self._conditional if self.events[i].changes or self.events[i].weather]
-        limit = first + round(AHEAD_ON_CONDITION_S / self.dt) - 1 if changes else math.inf
+        waiting = self._changing.intersection(self._conditional)
+        limit = first + round(AHEAD_ON_CONDITION_S / self.dt) - 1 if waiting else math.inf
         for index in self._timed[self._announced:]:
-            event = self.events[index]
-            if event.changes or event.weather:
-                return min(limit, math.ceil(event.at_s / self.dt - 1e-9) - 1)
+            if index in self._changing:
+                return min(limit, math.ceil(self.events[index].at_s / self.dt - 1e-9) - 1)
         return limit
 
     def _last_row(self, t: float) -> int:
