@@ -16,6 +16,7 @@ from marinesim.manoeuvring.voyage import Voyage
 from marinesim.scenario import load_scenario
 from marinesim.session.assembly import Assembly
 from marinesim.session.timeline import Simulation
+from marinesim.vessel.along import Knots
 from marinesim.vessel.response import motion_columns
 
 S175 = ROOT / "configs" / "training" / "heavy_weather_transit.toml"
@@ -74,6 +75,42 @@ def test_through_a_hard_over_turn_the_velocities_are_the_motions_derivatives(tra
     rate = _derivative(np.unwrap(np.radians(record["heading_deg"] + record["yaw_deg"])), 0.05)[2:-2]
     np.testing.assert_allclose(np.degrees(rate) * 60.0, record["rate_of_turn_deg_min"][2:-2], atol=1e-3)
     sim.close()
+
+
+def test_in_a_turn_the_motions_asked_one_time_at_a_time_are_those_asked_at_once(transit):
+    """Hard to starboard at 30 s: the motions over the next minute at 5 Hz, asked one time at a time (as frames ask,
+    each reading the transfer functions kept at the knots before it) and in one call from a fresh simulation, are
+    the same bits. What would be wrong: a knot's transfer functions kept under another heading or speed (her speed
+    falls in the turn), or a knot read from a different component set."""
+    records = []
+    for one_by_one in (True, False):
+        sim = Simulation(transit, wake=False)
+        sim.advance_to(30.0)
+        sim.order(rudder_deg=35.0)
+        times = 30.0 + 0.2 * np.arange(301)
+        if one_by_one:
+            rows = [sim.frame(np.array([t])) for t in times]
+            records.append({name: np.concatenate([row[name] for row in rows]) for name in rows[0]})
+        else:
+            records.append(sim.frame(times))
+        sim.close()
+    assert abs(records[1]["heading_deg"][-1] - records[1]["heading_deg"][0]) > 20.0, "she turns"
+    for name in motion_columns(transit.vessel.points):
+        np.testing.assert_array_equal(records[0][name], records[1][name], err_msg=name)
+
+
+def test_the_transfer_functions_kept_at_knots_are_those_of_their_own_heading_and_speed(transit):
+    """Knots asked in a turning, slowing order, with repeats, a heading met again at another speed and a speed at
+    another heading: each is the RAO table's transfer functions times the amplitudes at that heading and speed, as
+    computed afresh. What would be wrong: a kept knot served for another heading or speed."""
+    components = Assembly(transit).components()
+    knots = Knots(transit.vessel.rao, components)
+    wave_heading = np.arctan2(components.ky, components.kx)
+    asked = [(0.3, 5.0), (0.31, 5.0), (0.3, 4.0), (0.32, 4.0), (0.3, 5.0), (0.33, 3.0), (0.31, 4.0), (0.3, 4.0),
+             (0.34, 3.0), (0.35, 2.0), (0.3, 5.0)]
+    for psi, speed in asked:
+        fresh = transit.vessel.rao(components.omega, wave_heading - psi, speed) * components.amplitude[:, None]
+        np.testing.assert_array_equal(knots.motion(psi, speed), fresh, err_msg=f"{psi} rad, {speed} m/s")
 
 
 def test_a_course_order_during_a_long_sea_change_swings_the_bow_at_once(transit):

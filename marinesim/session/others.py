@@ -21,7 +21,7 @@ from marinesim.offshore.sailing import Sailed
 from marinesim.offshore.traffic import bearing_deg, cpa
 from marinesim.scenario.schema import OtherVessel
 from marinesim.sea.ocean import Components
-from marinesim.vessel.along import ShipPath, linear_along
+from marinesim.vessel.along import Knots, ShipPath, linear_along
 from marinesim.vessel.response import Response
 
 WIDTH = 19
@@ -66,7 +66,7 @@ class Body:
         for lo, hi, leg in route.runs(times):
             track = route.track(leg)
             if track is None:
-                out[lo:hi] = linear_along(other.rao, components, {}, route.path, times[lo:hi])
+                out[lo:hi] = linear_along(Knots(other.rao, components), {}, route.path, times[lo:hi])
                 continue
             response = self._kept.get((index, leg))
             if response is None:

@@ -49,7 +49,7 @@ from marinesim.session import helideck, lifting, others
 from marinesim.session.assembly import Assembly
 from marinesim.session.station import StationWorld, station_columns, station_record
 from marinesim.station.vessel import Station
-from marinesim.vessel.along import KNOT_S, ShipPath, linear_along
+from marinesim.vessel.along import KNOT_S, Knots, ShipPath, linear_along
 from marinesim.vessel.response import Response, Track, motion_columns
 from marinesim.wake.cache import cached_wake
 from marinesim.wake.compute import QUALITATIVE_BELOW_FROUDE, Wake, WakeGrid
@@ -173,6 +173,8 @@ class Simulation:
         self._set_times = [0.0]
         """When each component set is taken from the ocean (its amplitudes then)."""
         self._sets = Recent(lambda i: self.assembly.components(t=self._set_times[i]))
+        self._knots = Recent(lambda i: Knots(self.vessel.rao, self.components(i)))
+        """Each set's transfer functions at a manoeuvre's knots (:class:`~marinesim.vessel.along.Knots`)."""
         self._pending: list[_Change] = []
         self._preparing = ThreadPoolExecutor(max_workers=1, thread_name_prefix="sea-change")
         self._last_pose: tuple[float, int, Pose | None] = (math.nan, 0, None)
@@ -547,8 +549,8 @@ class Simulation:
         vessel = self.vessel
         for lo, hi, run in self.voyage.runs(times):
             if run is None:
-                out[lo:hi] = linear_along(vessel.rao, self.components(index), vessel.points, self.voyage.path,
-                                          times[lo:hi])
+                out[lo:hi] = linear_along(self._knots.get(index, len(self._set_times) - 1), vessel.points,
+                                          self.voyage.path, times[lo:hi])
             else:
                 out[lo:hi] = _linear(self._straight_response(index, run), times[lo:hi], dt)
         return out

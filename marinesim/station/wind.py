@@ -22,6 +22,7 @@ The load (Fossen 2021, sec. 10.1; ``rho_a`` = :data:`RHO_AIR`)::
 
 from __future__ import annotations
 
+import bisect
 import math
 import re
 from dataclasses import dataclass
@@ -370,11 +371,22 @@ class TabulatedCoefficients(WindCoefficients):
         """The table's angles over the full circle 0..2 pi (rad)."""
         self.table = np.stack([cx, cy, cn])
         """C_X, C_Y, C_N at :attr:`angles`, (3, n)."""
+        self._angles, self._rows = self.angles.tolist(), self.table.tolist()
         self.name = name
 
     def _evaluate(self, gamma: np.ndarray) -> np.ndarray:
         turn = np.mod(gamma, 2.0 * math.pi)
+        if turn.ndim == 0:  # one angle, as the simulation asks each step: np.interp's arithmetic in plain floats
+            return np.array(self._one(float(turn)))
         return np.stack([np.interp(turn, self.angles, row) for row in self.table])
+
+    def _one(self, turn: float) -> tuple[float, float, float]:
+        angles, rows = self._angles, self._rows
+        j = bisect.bisect_right(angles, turn) - 1
+        if j >= len(angles) - 1 or angles[j] == turn:
+            return rows[0][j], rows[1][j], rows[2][j]
+        x0, step = angles[j], angles[j + 1] - angles[j]
+        return tuple((row[j + 1] - row[j]) / step * (turn - x0) + row[j] for row in rows)
 
 
 def read_wind_coefficients(path: str | Path) -> TabulatedCoefficients:

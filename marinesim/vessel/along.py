@@ -37,6 +37,9 @@ LAG_KNOTS = 2
 ``t`` or before."""
 KNOTS_PER_PASS = 16
 """Knots whose transfer functions are held at once ((knots, components, 6) complex: 16 MB at 10,000 components)."""
+KNOTS_KEPT = 4
+"""How many knots' transfer functions :class:`Knots` keeps, the newest: the four one time reads, so that times
+asked one by one (a frame's pose) and the next pass of :func:`linear_along` find them."""
 
 
 @dataclass(frozen=True)
@@ -63,13 +66,36 @@ class ShipPath:
     roll_acc: np.ndarray
 
 
-def linear_along(rao: RaoTable, components: Components, points: dict[str, tuple[float, float, float]],
+class Knots:
+    """The motions' complex amplitudes ``H(w, beta - psi, U) a`` (n, 6) of ``components`` by the RAO table ``rao``
+    at a knot's heading ``psi`` (rad, math angle) and speed ``U`` (m/s), the newest :data:`KNOTS_KEPT` kept by
+    (heading, speed). Components beyond a partial table's headings take its nearest heading's."""
+
+    def __init__(self, rao: RaoTable, components: Components) -> None:
+        self.rao, self.components = rao, components
+        self._wave_heading = np.arctan2(components.ky, components.kx)
+        self._kept: dict[tuple[float, float], np.ndarray] = {}
+
+    def motion(self, psi: float, speed: float) -> np.ndarray:
+        """The amplitudes (n, 6) (m, rad) on heading ``psi`` (rad) at ``speed`` (m/s); read-only."""
+        key = (float(psi), float(speed))
+        found = self._kept.pop(key, None)
+        if found is None:
+            c = self.components
+            found = self.rao(c.omega, self._wave_heading - key[0], key[1]) * c.amplitude[:, None]
+            found.flags.writeable = False
+            if len(self._kept) >= KNOTS_KEPT:
+                self._kept.pop(next(iter(self._kept)))
+        self._kept[key] = found
+        return found
+
+
+def linear_along(knots: Knots, points: dict[str, tuple[float, float, float]],
                  path_at: Callable[[np.ndarray], ShipPath], times: np.ndarray) -> np.ndarray:
     """:meth:`Response.linear`'s outputs (T, 19 + points) at ``times`` (s, increasing) along the track that
-    ``path_at(times)`` gives (see the module). Components beyond a partial table's headings take its nearest
-    heading's."""
+    ``path_at(times)`` gives (see the module), the transfer functions at the knots from ``knots``."""
     times = np.asarray(times, dtype=float).ravel()
-    c = components
+    c = knots.components
     offsets = np.array([np.asarray(p, dtype=float) for p in points.values()]).reshape(-1, 3)
     out = np.empty((times.size, 19 + len(offsets)))
     if not times.size:
@@ -78,16 +104,13 @@ def linear_along(rao: RaoTable, components: Components, points: dict[str, tuple[
     cos_psi, sin_psi = np.cos(path.heading), np.sin(path.heading)
     px = cos_psi[:, None] * offsets[:, 0] - sin_psi[:, None] * offsets[:, 1]     # (T, points), E frame
     py = sin_psi[:, None] * offsets[:, 0] + cos_psi[:, None] * offsets[:, 1]
-    wave_heading = np.arctan2(c.ky, c.kx)
     lagged = times - LAG_KNOTS * KNOT_S
     interval = np.floor(lagged / KNOT_S).astype(np.int64)
     weights = _catmull_rom((lagged - interval * KNOT_S) / KNOT_S)                 # (T, 3, 4)
     for lo_knot in range(int(interval[0]), int(interval[-1]) + 1, KNOTS_PER_PASS):
         hi_knot = min(lo_knot + KNOTS_PER_PASS, int(interval[-1]) + 1)
-        knots = np.arange(lo_knot - 1, hi_knot + 2) * KNOT_S
-        at = path_at(np.maximum(knots, 0.0))
-        motion = np.stack([rao(c.omega, wave_heading - psi, speed) * c.amplitude[:, None]
-                           for psi, speed in zip(at.heading, at.speed)])                   # (knots, n, 6)
+        at = path_at(np.maximum(np.arange(lo_knot - 1, hi_knot + 2) * KNOT_S, 0.0))
+        motion = np.stack([knots.motion(psi, speed) for psi, speed in zip(at.heading, at.speed)])  # (knots, n, 6)
         rows = np.flatnonzero((interval >= lo_knot) & (interval < hi_knot))
         _sum(times[rows], interval[rows] - lo_knot, weights[rows], path.x[rows], path.y[rows], path.vx[rows],
              path.vy[rows], path.ax[rows], path.ay[rows], np.ascontiguousarray(px[rows]),
