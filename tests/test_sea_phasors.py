@@ -48,3 +48,17 @@ def test_the_block_product_is_the_response_time_by_time(response, steps):
     assert np.all(np.abs(blocks - direct) <= 1e-10 * scale + 1e-15)
     shifted = response.linear(times + dt)
     assert np.abs(shifted - direct).max() > 1e-3 * scale.max(), "a step's shift would show"
+
+
+def test_frames_of_a_few_steps_read_their_own_kept_tables(response):
+    """A viewer's frames, one after another: two or three steps of 0.1 s, now and then one of 0.05 s, more
+    distinct kinds than the response keeps. Each equals the response time by time. What would be wrong: a kept
+    table served for another step or another number of steps (the motions of the wrong times)."""
+    start = 500.0
+    for dt, steps in [(0.1, 2), (0.1, 3), (0.1, 2), (0.05, 2), (0.1, 3), (0.05, 3), (0.1, 1), (0.2, 2), (0.1, 2),
+                      (0.05, 2), (0.1, 3)]:
+        blocks = np.concatenate([out for _, out in response.linear_steps(start, dt, steps)])
+        direct = response.linear(start + dt * np.arange(steps))
+        scale = np.abs(direct).max(axis=0)
+        assert np.all(np.abs(blocks - direct) <= 1e-10 * scale + 1e-15), (dt, steps)
+        start += dt * steps
