@@ -20,6 +20,7 @@ import math
 from collections import OrderedDict
 from collections.abc import Callable
 
+import numba
 import numpy as np
 from scipy.integrate import trapezoid
 
@@ -239,21 +240,26 @@ class SlowDrift:
                 count = int(np.searchsorted(cumulative, self.kept_share * cumulative[-1])) + 1
                 keep[order[:count]] = True
         constant = contribution[~keep].sum(axis=0)
-        root = np.sqrt(np.abs(d[keep]))                         # (m, 3)
-        positive = d[keep] > 0.0
-        a = self.amplitude[keep][:, None]
-        columns = np.empty((a.shape[0], 6), dtype=complex)
-        columns[:, 0::2] = a * np.where(positive, root, 0.0)
-        columns[:, 1::2] = a * np.where(positive, 0.0, root)
         # components of one frequency beat at zero difference frequency: added into one, exactly
-        of_frequency = self._of_frequency[keep]
-        distinct = self._phasors.omega.size
-        present = np.flatnonzero(np.bincount(of_frequency, minlength=distinct))
-        coefficients = np.empty((present.size, 6), dtype=complex)
-        for j in range(6):
-            coefficients[:, j].real = np.bincount(of_frequency, columns[:, j].real, distinct)[present]
-            coefficients[:, j].imag = np.bincount(of_frequency, columns[:, j].imag, distinct)[present]
-        return _Heading(self._phasors, present, coefficients, constant, mean)
+        sums, count = np.zeros((self._phasors.omega.size, 6), dtype=complex), np.zeros(self._phasors.omega.size, int)
+        _sign_group_sums(d, self.amplitude, self._of_frequency, keep, sums, count)
+        present = np.flatnonzero(count)
+        return _Heading(self._phasors, present, sums[present], constant, mean)
+
+
+@numba.njit(nogil=True, cache=True)
+def _sign_group_sums(d, amplitude, of_frequency, keep, sums, count):
+    """Each kept component's ``a_j sqrt(|D_j|)`` added, in the components' order, into its distinct frequency's
+    row of ``sums`` (u, 6) in its sign group's column (X+, X-, Y+, Y-, N+, N-); ``count`` (u,) the components
+    added to each row."""
+    for i in range(d.shape[0]):
+        if not keep[i]:
+            continue
+        f = of_frequency[i]
+        count[f] += 1
+        for load in range(3):
+            value = d[i, load]
+            sums[f, 2 * load + (0 if value > 0.0 else 1)] += amplitude[i] * math.sqrt(abs(value))
 
 
 _GROUPS = np.kron(np.eye(3), [[1.0], [-1.0]])
