@@ -59,6 +59,7 @@ class Thrusters:
     azimuths: bool = field(init=False, repr=False, compare=False)
     _least: dict = field(init=False, repr=False, compare=False)
     _bounded: dict = field(init=False, repr=False, compare=False)
+    _kept: dict = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         if not self.units:
@@ -75,19 +76,22 @@ class Thrusters:
         object.__setattr__(self, "azimuths", any(t.kind == "azimuth" for t in self.units))
         object.__setattr__(self, "_least", {})
         object.__setattr__(self, "_bounded", {})  # per set of free forces: the last bounded answer's bounds held
+        object.__setattr__(self, "_kept", {})  # what the DP asks each cycle, worked out once (read-only)
 
     @property
     def width(self) -> int:
         """The number of virtual forces m."""
         return self.b.shape[1]
 
-    def slices(self) -> list[slice]:
+    def slices(self) -> tuple[slice, ...]:
         """Each thruster's virtual forces in ``f``."""
-        out, at = [], 0
-        for t in self.units:
-            out.append(slice(at, at + t.width))
-            at += t.width
-        return out
+        if "slices" not in self._kept:
+            out, at = [], 0
+            for t in self.units:
+                out.append(slice(at, at + t.width))
+                at += t.width
+            self._kept["slices"] = tuple(out)
+        return self._kept["slices"]
 
     def index(self, name: str) -> int:
         """The thruster named ``name``; :class:`ParameterError` naming those there are."""
@@ -97,14 +101,17 @@ class Thrusters:
         raise ParameterError(f"no thruster {name!r}: the vessel has {', '.join(t.name for t in self.units)}")
 
     def bounds(self, lost: frozenset[str] = frozenset()) -> tuple[np.ndarray, np.ndarray]:
-        """(lower, upper) bounds of ``f`` (N, (m,) each), a lost thruster's zero."""
-        lo, hi = [], []
-        for t in self.units:
-            top = 0.0 if t.name in lost else t.max_thrust
-            low = -t.astern * top if t.kind == "main" else -top
-            lo += [low] * t.width
-            hi += [top] * t.width
-        return np.array(lo), np.array(hi)
+        """(lower, upper) bounds of ``f`` (N, (m,) each, read-only), a lost thruster's zero."""
+        key = ("bounds", frozenset(lost))
+        if key not in self._kept:
+            lo, hi = [], []
+            for t in self.units:
+                top = 0.0 if t.name in lost else t.max_thrust
+                low = -t.astern * top if t.kind == "main" else -top
+                lo += [low] * t.width
+                hi += [top] * t.width
+            self._kept[key] = _read_only(np.array(lo)), _read_only(np.array(hi))
+        return self._kept[key]
 
     def stuck(self, name: str) -> np.ndarray:
         """The virtual forces (m,) of thruster ``name`` stuck at full thrust along its own axis (a main propeller or
@@ -185,8 +192,10 @@ class Thrusters:
         return np.array(out)
 
     def lag(self) -> np.ndarray:
-        """Each virtual force's time constant (s, (m,))."""
-        return np.concatenate([[t.time_constant_s] * t.width for t in self.units])
+        """Each virtual force's time constant (s, (m,), read-only)."""
+        if "lag" not in self._kept:
+            self._kept["lag"] = _read_only(np.concatenate([[t.time_constant_s] * t.width for t in self.units]))
+        return self._kept["lag"]
 
     def can_hold(self, tau: np.ndarray, lost: frozenset[str] = frozenset(), tolerance: float = 1e-3) -> bool:
         """Whether the thrusters (less ``lost``) give ``tau`` to within ``tolerance`` of each component's size
@@ -195,6 +204,11 @@ class Thrusters:
         miss = (self.b @ f - np.asarray(tau, float)) * np.array([1.0, 1.0, 1.0 / self.length])
         top = max(t.max_thrust for t in self.units)
         return bool(np.all(np.abs(miss) <= tolerance * top))
+
+
+def _read_only(array: np.ndarray) -> np.ndarray:
+    array.flags.writeable = False
+    return array
 
 
 def bounded_least_squares(a: np.ndarray, target: np.ndarray, lower: np.ndarray, upper: np.ndarray,
