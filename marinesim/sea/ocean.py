@@ -23,6 +23,7 @@ of its own.
 
 from __future__ import annotations
 
+import functools
 import math
 from concurrent.futures import wait
 from dataclasses import dataclass
@@ -73,6 +74,13 @@ class Components:
     ky: np.ndarray
     amplitude: np.ndarray  # complex, m
     tile: np.ndarray       # index of the tile each component lives on
+
+    @functools.cached_property
+    def direction(self) -> np.ndarray:
+        """The math angle (rad, E frame) each component travels towards, (n,), read-only: ``atan2(ky, kx)``."""
+        out = np.arctan2(self.ky, self.kx)
+        out.flags.writeable = False
+        return out
 
     @property
     def variance(self) -> float:

@@ -167,7 +167,7 @@ class SlowDrift:
                         kept_share: float = KEPT_SHARE) -> SlowDrift:
         """The slow drift at the fixed point (``x``, ``y``) (m, E frame) of an ocean's ``components``."""
         at_point = components.amplitude * np.exp(-1j * (components.kx * x + components.ky * y))
-        return cls(components.omega, np.arctan2(components.ky, components.kx), at_point, table,
+        return cls(components.omega, components.direction, at_point, table,
                    kept_share=kept_share)
 
     def force(self, t: float, heading: float) -> np.ndarray:

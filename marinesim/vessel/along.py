@@ -73,7 +73,7 @@ class Knots:
 
     def __init__(self, rao: RaoTable, components: Components) -> None:
         self.rao, self.components = rao, components
-        self._wave_heading = np.arctan2(components.ky, components.kx)
+        self._wave_heading = components.direction
         self._kept: dict[tuple[float, float], np.ndarray] = {}
 
     def motion(self, psi: float, speed: float) -> np.ndarray:

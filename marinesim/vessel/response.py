@@ -104,7 +104,7 @@ class Response:
             if p.shape != (3,) or not np.all(np.isfinite(p)):
                 raise ParameterError(f"point {name!r} must be three finite numbers (m, body frame), got {p.tolist()}")
         c, psi = components, track.heading
-        beta_rel = np.arctan2(c.ky, c.kx) - psi
+        beta_rel = c.direction - psi
         if strict:
             _check_headings(rao, beta_rel, np.abs(c.amplitude) ** 2)
         along = c.kx * math.cos(psi) + c.ky * math.sin(psi)
