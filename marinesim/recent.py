@@ -6,13 +6,18 @@ grow memory with every change; :class:`Recent` keeps the two newest and the thre
 asked for last (a blend reads an entry and the one before it, and a scan over the past reads
 them in order), and recomputes the others when asked: ``compute`` is a pure function of the
 index, so a recomputed entry is bit-identical to the one dropped.
+
+:class:`Newest` keeps, by key, the few entries asked for last (a manoeuvre's knots, a frame's phasor tables):
+what the next frame asks again.
 """
 
 from __future__ import annotations
 
+from collections.abc import Hashable
 from typing import Callable, Generic, TypeVar
 
 T = TypeVar("T")
+K = TypeVar("K", bound=Hashable)
 
 
 class Recent(Generic[T]):
@@ -37,4 +42,23 @@ class Recent(Generic[T]):
         if index < newest - 1:
             self._older = [index] + [i for i in self._older if i != index][:self.OLDER_KEPT - 1]
         self._kept = {i: v for i, v in self._kept.items() if i >= newest - 1 or i in self._older}
+        return value
+
+
+class Newest(Generic[K, T]):
+    """Entries by key, computed when first asked; the ``most`` asked for last are kept."""
+
+    def __init__(self, most: int) -> None:
+        self.most = most
+        self._kept: dict[K, T] = {}
+
+    def get(self, key: K, compute: Callable[[], T]) -> T:
+        """The entry of ``key``: the one kept, else ``compute()`` (the least recently asked then dropped)."""
+        if key in self._kept:
+            value = self._kept.pop(key)
+        else:
+            value = compute()
+            if len(self._kept) >= self.most:
+                self._kept.pop(next(iter(self._kept)))
+        self._kept[key] = value
         return value

@@ -78,13 +78,15 @@ def test_through_a_hard_over_turn_the_velocities_are_the_motions_derivatives(tra
 
 
 def test_in_a_turn_the_motions_asked_one_time_at_a_time_are_those_asked_at_once(transit):
-    """Hard to starboard at 30 s: the motions over the next minute at 5 Hz, asked one time at a time (as frames ask,
-    each reading the transfer functions kept at the knots before it) and in one call from a fresh simulation, are
-    the same bits. What would be wrong: a knot's transfer functions kept under another heading or speed (her speed
-    falls in the turn), or a knot read from a different component set."""
+    """A sea change ramping from 20 s over 30 s, hard to starboard at 30 s: the motions over the next minute at
+    5 Hz, asked one time at a time (as frames ask, each reading the transfer functions kept at the knots before
+    it, of both sea legs while they blend) and in one call from a fresh simulation, are the same bits. What would
+    be wrong: the two sets' knots kept in one store (frames ask them in turn), or a knot kept from another time."""
     records = []
     for one_by_one in (True, False):
         sim = Simulation(transit, wake=False)
+        sim.advance_to(20.0)
+        sim.change(hs_factor=1.3, ramp_s=30.0)
         sim.advance_to(30.0)
         sim.order(rudder_deg=35.0)
         times = 30.0 + 0.2 * np.arange(301)
@@ -93,6 +95,7 @@ def test_in_a_turn_the_motions_asked_one_time_at_a_time_are_those_asked_at_once(
             records.append({name: np.concatenate([row[name] for row in rows]) for name in rows[0]})
         else:
             records.append(sim.frame(times))
+        assert len(sim.legs) == 2 and sim.legs[1].start < times[0] < sim.legs[1].start + sim.legs[1].ramp_s
         sim.close()
     assert abs(records[1]["heading_deg"][-1] - records[1]["heading_deg"][0]) > 20.0, "she turns"
     for name in motion_columns(transit.vessel.points):

@@ -18,7 +18,7 @@ from conftest import ROOT
 
 PACKAGE = ROOT / "marinesim"
 LAYERS = (
-    {"__init__", "errors", "constants", "angles", "atomic", "cache", "tokens", "recent", "progress",
+    {"__init__", "errors", "constants", "angles", "atomic", "cache", "tokens", "recent", "progress", "compiled",
      "resources", "formats", "pose", "gl", "figures", "views"},
     {"sea"}, {"hull"}, {"vessel"}, {"manoeuvring"}, {"station"}, {"offshore"}, {"wake"}, {"solver"}, {"criteria"},
     {"scenario"}, {"session"}, {"study"}, {"report"}, {"render"}, {"net"}, {"cli", "__main__"},

@@ -20,25 +20,15 @@ from __future__ import annotations
 import contextlib
 import math
 import os
-from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
 
-import numba
 import numpy as np
 
+from marinesim.compiled import compiled
 from marinesim.sea.fft import InverseFFT2, available_cpus
 
 
-def _compiled(function: Callable) -> Callable:
-    """``function`` compiled by numba with the GIL released, its machine code cached on disk
-    (numba raises where it finds no writable place: then compiled afresh in every process)."""
-    try:
-        return numba.njit(nogil=True, cache=True)(function)
-    except RuntimeError:
-        return numba.njit(nogil=True)(function)
-
-
-@_compiled
+@compiled
 def _pack_cells(even: np.ndarray, odd: np.ndarray, cos: np.ndarray, sin: np.ndarray, multipliers: np.ndarray,
                 index: np.ndarray, plane: int, flat_input: np.ndarray) -> None:
     """``C[q] = even cos(wt) + odd sin(wt)`` for the ``h`` representatives, ``C[-q] = conj(C[q])``
@@ -54,7 +44,7 @@ def _pack_cells(even: np.ndarray, odd: np.ndarray, cos: np.ndarray, sin: np.ndar
             flat_input[there + j * plane] = multipliers[j, h + c] * mirrored
 
 
-@_compiled
+@compiled
 def _jacobian(out: np.ndarray, jacobian: np.ndarray) -> None:
     """``J = Re(out3) Im(out3) - Im(out0)^2`` per tile of the FFT outputs ``(tiles, 4, N, N)``."""
     for t in range(out.shape[0]):

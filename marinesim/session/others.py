@@ -19,16 +19,17 @@ from marinesim.constants import KNOT
 from marinesim.offshore.route import Route
 from marinesim.offshore.sailing import Sailed
 from marinesim.offshore.traffic import bearing_deg, cpa
+from marinesim.recent import Newest
 from marinesim.scenario.schema import OtherVessel
 from marinesim.sea.ocean import Components
-from marinesim.vessel.along import Knots, ShipPath, linear_along
+from marinesim.vessel.along import KNOT_SETS_KEPT, Knots, ShipPath, linear_along
 from marinesim.vessel.response import Response
 
 WIDTH = 19
 """A body's linear outputs (:meth:`Response.linear`): 6 DOF displacement, velocity, acceleration, the elevation at
 its reference point."""
 RESPONSES_KEPT = 4
-"""Straight-leg responses held per body, and component sets' knots (:class:`~marinesim.vessel.along.Knots`)."""
+"""Straight-leg responses held per body."""
 SUFFIXES = ("east_m", "north_m", "heading_deg", "speed_kn", "heave_m", "roll_deg", "pitch_deg", "range_m",
             "bearing_deg", "cpa_m", "tcpa_s")
 """A body's columns, each after ``NAME_``: where it is (E frame, m from own-ship's start), its heading (compass),
@@ -43,8 +44,8 @@ class Body:
         self.other = other
         self._components = components
         self._kept: dict[tuple[int, object], Response] = {}
-        self._knots: dict[int, Knots] = {}
-        """Each set's transfer functions at her manoeuvres' knots (:class:`~marinesim.vessel.along.Knots`)."""
+        self._knots: Newest[int, Knots] = Newest(KNOT_SETS_KEPT)
+        """Sets' transfer functions at her manoeuvres' knots (:class:`~marinesim.vessel.along.Knots`)."""
         self.route: Route | Sailed = other.route if other.ship is None else Sailed(other.route, other.ship)
         """Her route: sailed exactly, or by her manoeuvring model (:mod:`marinesim.offshore.sailing`)."""
 
@@ -68,7 +69,8 @@ class Body:
         for lo, hi, leg in route.runs(times):
             track = route.track(leg)
             if track is None:
-                out[lo:hi] = linear_along(self._knots_of(index, components), {}, route.path, times[lo:hi])
+                knots = self._knots.get(index, lambda: Knots(other.rao, components))
+                out[lo:hi] = linear_along(knots, {}, route.path, times[lo:hi])
                 continue
             response = self._kept.get((index, leg))
             if response is None:
@@ -82,15 +84,6 @@ class Body:
             else:
                 out[lo:hi] = np.concatenate([o for _, o in response.linear_steps(float(chunk[0]), dt, chunk.size)])
         return out
-
-    def _knots_of(self, index: int, components: Components) -> Knots:
-        knots = self._knots.pop(index, None)
-        if knots is None or knots.components is not components:
-            knots = Knots(self.other.rao, components)
-            if len(self._knots) >= RESPONSES_KEPT:
-                self._knots.pop(next(iter(self._knots)))
-        self._knots[index] = knots
-        return knots
 
     def path(self, times: np.ndarray) -> ShipPath:
         """Its track at ``times`` (s)."""

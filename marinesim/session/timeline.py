@@ -39,7 +39,7 @@ from marinesim.manoeuvring.voyage import SHIP_COLUMNS, Voyage
 from marinesim.offshore.crane import Lift
 from marinesim.offshore.helicopter import HelicopterApproach
 from marinesim.pose import Pose
-from marinesim.recent import Recent
+from marinesim.recent import Newest, Recent
 from marinesim.scenario import Scenario
 from marinesim.scenario.model import (CHANGE_RAMP_S, HELICOPTER_DECISIONS, MAX_DURATION_S, MAX_SPEED_KN, WEATHER,
                                       EnvironmentOptions)
@@ -49,7 +49,7 @@ from marinesim.session import helideck, lifting, others
 from marinesim.session.assembly import Assembly
 from marinesim.session.station import StationWorld, station_columns, station_record
 from marinesim.station.vessel import Station
-from marinesim.vessel.along import KNOT_S, Knots, ShipPath, linear_along
+from marinesim.vessel.along import KNOT_S, KNOT_SETS_KEPT, Knots, ShipPath, linear_along
 from marinesim.vessel.response import Response, Track, motion_columns
 from marinesim.wake.cache import cached_wake
 from marinesim.wake.compute import QUALITATIVE_BELOW_FROUDE, Wake, WakeGrid
@@ -173,8 +173,8 @@ class Simulation:
         self._set_times = [0.0]
         """When each component set is taken from the ocean (its amplitudes then)."""
         self._sets = Recent(lambda i: self.assembly.components(t=self._set_times[i]))
-        self._knots = Recent(lambda i: Knots(self.vessel.rao, self.components(i)))
-        """Each set's transfer functions at a manoeuvre's knots (:class:`~marinesim.vessel.along.Knots`)."""
+        self._knots: Newest[int, Knots] = Newest(KNOT_SETS_KEPT)
+        """Sets' transfer functions at a manoeuvre's knots (:class:`~marinesim.vessel.along.Knots`)."""
         self._pending: list[_Change] = []
         self._preparing = ThreadPoolExecutor(max_workers=1, thread_name_prefix="sea-change")
         self._last_pose: tuple[float, int, Pose | None] = (math.nan, 0, None)
@@ -549,8 +549,8 @@ class Simulation:
         vessel = self.vessel
         for lo, hi, run in self.voyage.runs(times):
             if run is None:
-                out[lo:hi] = linear_along(self._knots.get(index, len(self._set_times) - 1), vessel.points,
-                                          self.voyage.path, times[lo:hi])
+                knots = self._knots.get(index, lambda: Knots(vessel.rao, self.components(index)))
+                out[lo:hi] = linear_along(knots, vessel.points, self.voyage.path, times[lo:hi])
             else:
                 out[lo:hi] = _linear(self._straight_response(index, run), times[lo:hi], dt)
         return out

@@ -20,10 +20,10 @@ import math
 from collections import OrderedDict
 from collections.abc import Callable
 
-import numba
 import numpy as np
 from scipy.integrate import trapezoid
 
+from marinesim.compiled import compiled
 from marinesim.errors import ParameterError, require_finite, require_within
 from marinesim.sea.ocean import Components
 from marinesim.vessel.drift import DriftTable
@@ -247,8 +247,9 @@ class SlowDrift:
         return _Heading(self._phasors, present, sums[present], constant, mean)
 
 
-@numba.njit(nogil=True, cache=True)
-def _sign_group_sums(d, amplitude, of_frequency, keep, sums, count):
+@compiled
+def _sign_group_sums(d: np.ndarray, amplitude: np.ndarray, of_frequency: np.ndarray, keep: np.ndarray,
+                     sums: np.ndarray, count: np.ndarray) -> None:
     """Each kept component's ``a_j sqrt(|D_j|)`` added, in the components' order, into its distinct frequency's
     row of ``sums`` (u, 6) in its sign group's column (X+, X-, Y+, Y-, N+, N-); ``count`` (u,) the components
     added to each row."""

@@ -381,6 +381,9 @@ class TabulatedCoefficients(WindCoefficients):
         return np.stack([np.interp(turn, self.angles, row) for row in self.table])
 
     def _one(self, turn: float) -> tuple[float, float, float]:
+        """``(C_X, C_Y, C_N)`` at one angle ``turn`` (rad, in [0, 2 pi] or NaN), as np.interp gives them."""
+        if math.isnan(turn):
+            return math.nan, math.nan, math.nan
         angles, rows = self._angles, self._rows
         j = bisect.bisect_right(angles, turn) - 1
         if j >= len(angles) - 1 or angles[j] == turn:

@@ -26,6 +26,8 @@ from dataclasses import dataclass
 import numba
 import numpy as np
 
+from marinesim.compiled import compiled
+from marinesim.recent import Newest
 from marinesim.sea.ocean import Components
 from marinesim.vessel.rao import RaoTable
 
@@ -39,7 +41,10 @@ KNOTS_PER_PASS = 16
 """Knots whose transfer functions are held at once ((knots, components, 6) complex: 16 MB at 10,000 components)."""
 KNOTS_KEPT = 4
 """How many knots' transfer functions :class:`Knots` keeps, the newest: the four one time reads, so that times
-asked one by one (a frame's pose) and the next pass of :func:`linear_along` find them."""
+asked one by one (a frame's pose) and the next pass of :func:`linear_along` find them ((components, 6) complex
+each: 19 MB at 50,000 components)."""
+KNOT_SETS_KEPT = 2
+"""Component sets whose :class:`Knots` a body keeps, the newest asked: a sea change blends two."""
 
 
 @dataclass(frozen=True)
@@ -73,21 +78,18 @@ class Knots:
 
     def __init__(self, rao: RaoTable, components: Components) -> None:
         self.rao, self.components = rao, components
-        self._wave_heading = components.direction
-        self._kept: dict[tuple[float, float], np.ndarray] = {}
+        self._kept: Newest[tuple[float, float], np.ndarray] = Newest(KNOTS_KEPT)
 
     def motion(self, psi: float, speed: float) -> np.ndarray:
         """The amplitudes (n, 6) (m, rad) on heading ``psi`` (rad) at ``speed`` (m/s); read-only."""
-        key = (float(psi), float(speed))
-        found = self._kept.pop(key, None)
-        if found is None:
-            c = self.components
-            found = self.rao(c.omega, self._wave_heading - key[0], key[1]) * c.amplitude[:, None]
-            found.flags.writeable = False
-            if len(self._kept) >= KNOTS_KEPT:
-                self._kept.pop(next(iter(self._kept)))
-        self._kept[key] = found
-        return found
+        psi, speed = float(psi), float(speed)
+        return self._kept.get((psi, speed), lambda: self._computed(psi, speed))
+
+    def _computed(self, psi: float, speed: float) -> np.ndarray:
+        c = self.components
+        out = self.rao(c.omega, c.direction - psi, speed) * c.amplitude[:, None]
+        out.flags.writeable = False
+        return out
 
 
 def linear_along(knots: Knots, points: dict[str, tuple[float, float, float]],
@@ -130,7 +132,7 @@ def _catmull_rom(s: np.ndarray) -> np.ndarray:
     return np.stack([value, slope / KNOT_S, curve / KNOT_S**2], axis=1)
 
 
-@numba.njit(nogil=True, parallel=True, cache=True)
+@compiled(parallel=True)
 def _sum(t, knot, weights, x, y, vx, vy, ax, ay, px, py, omega, kx, ky, amplitude, motion, out, rows):
     """The sums of the module for each time step (row ``rows[j]`` of ``out``): 6 motions, their rates and
     accelerations, the elevation at the reference point and at each point. ``motion[knot[j] + m]`` for m in 0..3

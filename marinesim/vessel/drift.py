@@ -18,7 +18,6 @@ import math
 from dataclasses import dataclass
 from pathlib import Path
 
-import numba
 import numpy as np
 
 from marinesim.errors import FileFormatError, ParameterError
@@ -80,28 +79,18 @@ class DriftTable:
         (default: row ``i``)."""
         b = np.asarray(beta, dtype=float).ravel()
         rows = np.arange(b.size) if rows is None else np.asarray(rows).ravel()
+        if by_frequency.ndim != 3 or by_frequency.shape[1:] != (self.beta.size, 3):
+            raise ParameterError(f"at_headings: the frequencies' coefficients must be (m, {self.beta.size}, 3), got "
+                                 f"{by_frequency.shape}")
         if rows.size != b.size or (rows.size and (rows.min() < 0 or rows.max() >= by_frequency.shape[0])):
             raise ParameterError(f"at_headings: {b.size} headings need as many rows of the {by_frequency.shape[0]} "
                                  f"frequencies' coefficients, got {rows.size}")
-        out = np.empty((b.size, 3))
-        _at_headings(np.append(self.beta, self.beta[0] + 2.0 * math.pi), np.ascontiguousarray(by_frequency, float),
-                     b, rows, out)
-        return out
-
-
-@numba.njit(nogil=True, cache=True)
-def _at_headings(ring, by_frequency, beta, rows, out):
-    """:meth:`DriftTable.at_headings` into ``out`` (n, 3), a heading at a time: ``ring`` the table's headings with
-    the first again 2 pi on (n_b + 1,)."""
-    n_b = ring.size - 1
-    for i in range(beta.size):
-        q = ring[0] + (beta[i] - ring[0]) % (2.0 * math.pi)
-        j = min(max(np.searchsorted(ring, q, side="right") - 1, 0), n_b - 1)
-        tb = (q - ring[j]) / (ring[j + 1] - ring[j])
-        j1 = 0 if j + 1 == n_b else j + 1
-        row = rows[i]
-        for k in range(3):
-            out[i, k] = (1.0 - tb) * by_frequency[row, j, k] + tb * by_frequency[row, j1, k]
+        ring = np.append(self.beta, self.beta[0] + 2.0 * math.pi)
+        q = self.beta[0] + np.mod(b - self.beta[0], 2.0 * math.pi)
+        j = np.clip(np.searchsorted(ring, q, side="right") - 1, 0, self.beta.size - 1)
+        tb = ((q - ring[j]) / (ring[j + 1] - ring[j]))[:, None]
+        j1 = np.where(j + 1 == self.beta.size, 0, j + 1)
+        return (1.0 - tb) * by_frequency[rows, j] + tb * by_frequency[rows, j1]
 
 
 def make_drift_table(omega: np.ndarray, beta: np.ndarray, coefficients: np.ndarray, *, source: str = "",

@@ -27,7 +27,6 @@ import math
 import dataclasses
 from dataclasses import dataclass, field
 
-import numba
 import numpy as np
 
 from marinesim.constants import G, KNOT
@@ -305,35 +304,22 @@ def one_speed_note(table: RaoTable, speed: float, length: float | None, length_f
 
 def _bilinear(omega_grid: np.ndarray, beta_grid: np.ndarray, table: np.ndarray,
               omega: np.ndarray, beta: np.ndarray) -> np.ndarray:
-    """Linear on Re/Im in frequency and heading; ``table`` is (len(beta_grid), len(omega_grid), 6), ``omega`` and
-    ``beta`` (n,) within the grids' ranges; the values (n, 6). A one-frequency table holds its value at every
-    frequency."""
-    out = np.empty((omega.size, 6), dtype=complex)
-    _bilinear_into(omega_grid, beta_grid, np.ascontiguousarray(table, dtype=complex), omega, beta, out)
-    return out
+    """Linear on Re/Im in frequency and heading; ``table`` is (len(beta_grid), len(omega_grid), 6).
+    A one-frequency table holds its value at every frequency."""
+    iw, fw = _locate(omega_grid, omega)
+    ib, fb = _locate(beta_grid, beta)
+    iw1 = np.minimum(iw + 1, omega_grid.size - 1)
+    fw, fb = fw[:, None], fb[:, None]
+    return ((1 - fb) * ((1 - fw) * table[ib, iw] + fw * table[ib, iw1])
+            + fb * ((1 - fw) * table[ib + 1, iw] + fw * table[ib + 1, iw1]))
 
 
-@numba.njit(nogil=True, cache=True)
-def _locate(grid: np.ndarray, x: float) -> tuple[int, float]:
-    """Cell index and fraction of ``x`` in the increasing ``grid`` (x within its range)."""
+def _locate(grid: np.ndarray, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Cell index and fraction of each ``x`` in the increasing ``grid`` (x within its range)."""
     if grid.size == 1:
-        return 0, 0.0
-    i = min(max(np.searchsorted(grid, x, side="right") - 1, 0), grid.size - 2)
+        return np.zeros(x.size, dtype=int), np.zeros(x.size)
+    i = np.clip(np.searchsorted(grid, x, side="right") - 1, 0, grid.size - 2)
     return i, (x - grid[i]) / (grid[i + 1] - grid[i])
-
-
-@numba.njit(nogil=True, cache=True)
-def _bilinear_into(omega_grid, beta_grid, table, omega, beta, out):
-    """:func:`_bilinear`'s values into ``out`` (n, 6), a component at a time (no (n, 6) temporaries: a call per
-    heading of a manoeuvre's knots or a station's runs)."""
-    last = omega_grid.size - 1
-    for j in range(omega.size):
-        iw, fw = _locate(omega_grid, omega[j])
-        ib, fb = _locate(beta_grid, beta[j])
-        iw1 = min(iw + 1, last)
-        for d in range(6):
-            out[j, d] = ((1 - fb) * ((1 - fw) * table[ib, iw, d] + fw * table[ib, iw1, d])
-                         + fb * ((1 - fw) * table[ib + 1, iw, d] + fw * table[ib + 1, iw1, d]))
 
 
 def refer_phases(values: np.ndarray, omega: np.ndarray, headings_deg: np.ndarray, offset_m: tuple[float, float],

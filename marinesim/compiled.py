@@ -1,0 +1,20 @@
+"""The one way loops over components and time steps are compiled: numba, the GIL released, the machine code
+cached on disk beside the module (or, where numba finds no writable place for it, compiled afresh in every
+process)."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numba
+
+
+def compiled(function: Callable | None = None, *, parallel: bool = False) -> Callable:
+    """``function`` compiled (``@compiled``, or ``@compiled(parallel=True)`` for a ``numba.prange`` loop on every
+    core)."""
+    if function is None:
+        return lambda f: compiled(f, parallel=parallel)
+    try:
+        return numba.njit(nogil=True, cache=True, parallel=parallel)(function)
+    except RuntimeError:
+        return numba.njit(nogil=True, parallel=parallel)(function)
