@@ -55,6 +55,18 @@ def test_answers_come_from_the_covered_headings_never_across_a_gap():
     assert heave_at(arc, 135.0) == pytest.approx(1.35)    # inside an arc: interpolated as before
 
 
+def test_a_whole_circle_from_15_deg_wraps_between_its_last_and_first_headings():
+    """Headings 15..345 deg every 30 deg cover the circle: a wave at 0, 5 or 14 deg lies between 345 and 15 deg
+    and is interpolated between them (as at 350 deg), not extrapolated from the 15..45 deg cell (which gave 0.0,
+    0.05 and 0.14 instead of 1.8, 1.25 and 0.26)."""
+    table = table_at([15.0 + 30.0 * i for i in range(12)])
+    assert table.covered is None
+    for heading in (0.0, 5.0, 14.0, 350.0, 359.0, 360.0, -10.0):
+        expected = 3.45 + (0.15 - 3.45) * ((heading - 345.0) % 360.0) / 30.0
+        assert heave_at(table, heading) == pytest.approx(expected, abs=1e-12), heading
+    assert heave_at(table, 15.0) == pytest.approx(0.15) and heave_at(table, 30.0) == pytest.approx(0.3)
+
+
 def waves(beta_rel_deg: np.ndarray, variance: np.ndarray) -> Components:
     """One frequency (0.6 rad/s, deep water) from the given relative headings (vessel heading 0)."""
     k = 0.6**2 / 9.80665

@@ -164,6 +164,8 @@ class RaoTable:
         w_lo, w_hi = self.omega[0], self.omega[-1]
         if self.covered is not None:
             beta = self._nearest_covered(beta)
+        first = self.beta[0]
+        beta = first + np.mod(beta - first, 2.0 * math.pi)  # from the first heading round: past the last, wrapped
         inside = _bilinear(self.omega, self._beta_wrapped, table, np.clip(omega, w_lo, w_hi), beta)
         below = omega < w_lo
         if np.any(below):
