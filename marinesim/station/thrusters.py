@@ -59,7 +59,9 @@ class Thrusters:
     azimuths: bool = field(init=False, repr=False, compare=False)
     _least: dict = field(init=False, repr=False, compare=False)
     _bounded: dict = field(init=False, repr=False, compare=False)
-    _kept: dict = field(init=False, repr=False, compare=False)
+    _slices: tuple[slice, ...] = field(init=False, repr=False, compare=False)
+    _lag: np.ndarray = field(init=False, repr=False, compare=False)
+    _bounds: dict = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         if not self.units:
@@ -76,7 +78,15 @@ class Thrusters:
         object.__setattr__(self, "azimuths", any(t.kind == "azimuth" for t in self.units))
         object.__setattr__(self, "_least", {})
         object.__setattr__(self, "_bounded", {})  # per set of free forces: the last bounded answer's bounds held
-        object.__setattr__(self, "_kept", {})  # what the DP asks each cycle, worked out once (read-only)
+        slices, at = [], 0
+        for t in self.units:
+            slices.append(slice(at, at + t.width))
+            at += t.width
+        lag = np.concatenate([[t.time_constant_s] * t.width for t in self.units])
+        lag.flags.writeable = False
+        object.__setattr__(self, "_slices", tuple(slices))
+        object.__setattr__(self, "_lag", lag)
+        object.__setattr__(self, "_bounds", {})  # per set of lost thrusters (read-only): the DP asks every cycle
 
     @property
     def width(self) -> int:
@@ -85,13 +95,7 @@ class Thrusters:
 
     def slices(self) -> tuple[slice, ...]:
         """Each thruster's virtual forces in ``f``."""
-        if "slices" not in self._kept:
-            out, at = [], 0
-            for t in self.units:
-                out.append(slice(at, at + t.width))
-                at += t.width
-            self._kept["slices"] = tuple(out)
-        return self._kept["slices"]
+        return self._slices
 
     def index(self, name: str) -> int:
         """The thruster named ``name``; :class:`ParameterError` naming those there are."""
@@ -102,16 +106,18 @@ class Thrusters:
 
     def bounds(self, lost: frozenset[str] = frozenset()) -> tuple[np.ndarray, np.ndarray]:
         """(lower, upper) bounds of ``f`` (N, (m,) each, read-only), a lost thruster's zero."""
-        key = ("bounds", frozenset(lost))
-        if key not in self._kept:
+        key = frozenset(lost)
+        if key not in self._bounds:
             lo, hi = [], []
             for t in self.units:
                 top = 0.0 if t.name in lost else t.max_thrust
                 low = -t.astern * top if t.kind == "main" else -top
                 lo += [low] * t.width
                 hi += [top] * t.width
-            self._kept[key] = _read_only(np.array(lo)), _read_only(np.array(hi))
-        return self._kept[key]
+            lo, hi = np.array(lo), np.array(hi)
+            lo.flags.writeable = hi.flags.writeable = False
+            self._bounds[key] = lo, hi
+        return self._bounds[key]
 
     def stuck(self, name: str) -> np.ndarray:
         """The virtual forces (m,) of thruster ``name`` stuck at full thrust along its own axis (a main propeller or
@@ -193,9 +199,7 @@ class Thrusters:
 
     def lag(self) -> np.ndarray:
         """Each virtual force's time constant (s, (m,), read-only)."""
-        if "lag" not in self._kept:
-            self._kept["lag"] = _read_only(np.concatenate([[t.time_constant_s] * t.width for t in self.units]))
-        return self._kept["lag"]
+        return self._lag
 
     def can_hold(self, tau: np.ndarray, lost: frozenset[str] = frozenset(), tolerance: float = 1e-3) -> bool:
         """Whether the thrusters (less ``lost``) give ``tau`` to within ``tolerance`` of each component's size
@@ -204,11 +208,6 @@ class Thrusters:
         miss = (self.b @ f - np.asarray(tau, float)) * np.array([1.0, 1.0, 1.0 / self.length])
         top = max(t.max_thrust for t in self.units)
         return bool(np.all(np.abs(miss) <= tolerance * top))
-
-
-def _read_only(array: np.ndarray) -> np.ndarray:
-    array.flags.writeable = False
-    return array
 
 
 def bounded_least_squares(a: np.ndarray, target: np.ndarray, lower: np.ndarray, upper: np.ndarray,
