@@ -1,4 +1,4 @@
-"""Benchmark: the spray's CPU cost per frame (render/spray.py), against the pose the viewer asks for every frame.
+"""Benchmark: the spray's CPU cost per frame (session/spray.py), against the pose the viewer asks for every frame.
 
 The S175 at 18 kn in its heavy-weather sea, the sea doubled and 24 m/s of wind (Beaufort 9: bow spray and
 spindrift both on); frames of 1/60 s of simulated time. Per frame: ``Spray.update`` (the sea at the stem, the
@@ -23,7 +23,7 @@ sys.path.insert(0, str(ROOT))
 
 import numpy as np  # noqa: E402
 
-from marinesim.render.spray import Bow, Spray  # noqa: E402
+from marinesim.session.spray import Bow, Spray  # noqa: E402
 from marinesim.scenario import load_scenario  # noqa: E402
 from marinesim.sea.seastate import scaled_sea  # noqa: E402
 from marinesim.session.timeline import Simulation  # noqa: E402

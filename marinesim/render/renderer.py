@@ -14,7 +14,7 @@ draws a camera's view into the bound framebuffer:
 3. the vessel mesh (the scenario's visual mesh, else one made from the hull) in its 6-DOF pose, draft marks on,
    and the other vessels and structures in theirs;
 4. spray thrown up where the bow meets the rising sea and blown off the crests in a gale
-   (:mod:`~marinesim.render.spray`);
+   (:mod:`~marinesim.session.spray`, the session's state; drawn, never written back);
 5. the navigation lights, by night and in restricted visibility (COLREG sectors and intensities);
 6. rain, as streaks of falling drops over it all.
 
@@ -38,7 +38,6 @@ from marinesim.render.camera import Eye
 from marinesim.render.daylight import Light, light_at
 from marinesim.render.draft_marks import draft_marks
 from marinesim.render.nav_lights import place_lights
-from marinesim.render.spray import Bow, Spray
 from marinesim.render.layers.base import View
 from marinesim.render.layers.cascades import CascadeLayer
 from marinesim.render.layers.foam import FoamLayer
@@ -53,6 +52,7 @@ from marinesim.render.layers.solver_field import SolverFieldLayer
 from marinesim.render.layers.vessel import VesselLayer, drawn_mesh, other_mesh
 from marinesim.render.layers.wake import WakeLayer
 from marinesim.render.vessel_mesh import CONTAINER_M, boom_mesh, container_mesh, hawser_mesh, wire_mesh
+from marinesim.session.spray import Bow, Spray
 from marinesim.session.timeline import Simulation
 
 
@@ -152,8 +152,7 @@ class Renderer:
             self.cascades.upload(self.sim.ocean.fields(t, self.options.reproducible))
         self.foam.update(self.cascades, dt)
         if self.spray is not None:
-            wind = self.light().wind
-            self.spray.update(np.array([wind[0] * wind[2], wind[1] * wind[2], 0.0]))
+            self.spray.update()
 
     def light(self) -> Light:
         """The light at the simulation's time (the sun and moon from astral take 0.7 ms: worked out once a frame,

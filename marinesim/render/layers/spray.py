@@ -1,4 +1,4 @@
-"""The spray pass: the puffs of :mod:`~marinesim.render.spray` as soft sprites of white water, lit like the foam,
+"""The spray pass: the puffs of :mod:`~marinesim.session.spray` as soft sprites of white water, lit like the foam,
 hazed with distance, each as wide as its puff (``shaders/spray.*``)."""
 
 from __future__ import annotations
@@ -10,7 +10,7 @@ import numpy as np
 
 from marinesim.gl import Program
 from marinesim.render.layers.base import View, mat4
-from marinesim.render.spray import LIFE_S, MAX_PUFFS, Puffs
+from marinesim.session.spray import LIFE_S, MAX_PUFFS, Puffs
 
 SIZE_M = np.array([1.5, 3.0])
 """Diameter (m) of a bow-spray puff and of a spindrift puff when it leaves the water."""

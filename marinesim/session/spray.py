@@ -1,6 +1,6 @@
 """Spray: sheets thrown up where the bow meets the rising sea, and spindrift torn off the crests in a gale. Puffs of
-drops that fly, fall and drift with the wind, stepped on the CPU with the simulation's clock and drawn by
-:mod:`~marinesim.render.layers.spray`.
+drops that fly, fall and drift with the wind, stepped on the CPU with the simulation's clock: the session's state,
+which :mod:`~marinesim.render.layers.spray` draws and nothing writes back.
 
 Bow spray. Ochi (1964) takes the sea rising against the bow faster than ``v_th = 0.093 sqrt(g L)`` (L the
 waterline length; REFERENCES section 8) as the impact of a slam; a bottom slam also needs the forefoot out of the
@@ -40,6 +40,7 @@ from marinesim.constants import G
 from marinesim.criteria.quantities import ochi_threshold_velocity
 from marinesim.hull import Hull
 from marinesim.hull.waterplane import waterline_loops
+from marinesim.scenario.model import wind_of
 from marinesim.sea.ocean import Components
 from marinesim.session.timeline import Leg, Simulation
 from marinesim.vessel.response import Response
@@ -186,8 +187,8 @@ class Bow:
 
 
 class Spray:
-    """The spray of ``sim`` (its vessel's ``bow``, or None for spindrift only), moved on to the simulation's time by
-    :meth:`update`."""
+    """The spray of ``sim`` (its vessel's ``bow``, or None for spindrift only): :attr:`puffs`, the puffs in flight at
+    the simulation's time as of the last :meth:`update`."""
 
     def __init__(self, sim: Simulation, bow: Bow | None) -> None:
         self.sim, self.bow = sim, bow
@@ -197,13 +198,17 @@ class Spray:
         self._crest_set: tuple[Leg, Components, float] | None = None
         self._stem: tuple[Response, np.ndarray] | None = None
 
-    def update(self, wind: np.ndarray) -> None:
-        """Move the puffs on to the simulation's time in ``wind`` (3,) (E frame, m/s at 10 m); a jump (the first
-        call, a seek, a step back) starts afresh :data:`WARM_UP_S` before. Puffs are born on the steps
+    def update(self, wind: np.ndarray | None = None) -> Puffs:
+        """The puffs moved on to the simulation's time in ``wind`` (3,) (E frame, m/s at 10 m; by default the run's
+        wind at its time, :func:`~marinesim.scenario.model.wind_of`); a jump (the first call, a seek, a step back)
+        starts afresh :data:`WARM_UP_S` before. Puffs are born on the steps
         ``k STEP_S`` of the run's clock, each step's from its own seeded stream, and flown from step to step; the
         frame shows them flown on from the last step: the same run gives the same spray whatever the frame
         rate."""
         t = self.sim.time
+        if wind is None:
+            east, north, speed = wind_of(self.sim.environment, self.sim.sea)
+            wind = np.array([east * speed, north * speed, 0.0])
         if self.time is None or t < self.time or t - self.time > WARM_UP_S:
             self._stepped, self._step = Puffs.none(), math.floor(max(t - WARM_UP_S, 0.0) / STEP_S)
         first, last = self._step + 1, math.floor(t / STEP_S)
@@ -219,6 +224,7 @@ class Spray:
         self._step = last
         self.puffs = flying(self._stepped, t - self._step * STEP_S, wind)
         self.time = t
+        return self.puffs
 
     def _crests(self) -> tuple[Components, float]:
         """The newest leg's largest wave components, :data:`CREST_VARIANCE` of its variance (where the crests are),

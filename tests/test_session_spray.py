@@ -12,8 +12,8 @@ from scipy.optimize import brentq
 
 from conftest import ROOT, luminance, offscreen
 from marinesim.constants import G
-from marinesim.render.spray import (DROP_TERMINAL_M_S, SPINDRIFT_TERMINAL_M_S, SPRAY_ONSET, STEP_S, Bow, Puffs, Spray,
-                                    flown, jet_speed, whitecap_fraction)
+from marinesim.session.spray import (DROP_TERMINAL_M_S, SPINDRIFT_TERMINAL_M_S, SPRAY_ONSET, STEP_S, Bow, Puffs, Spray,
+                                     flown, jet_speed, whitecap_fraction)
 from marinesim.scenario import load_scenario
 from marinesim.sea.seastate import scaled_sea
 from marinesim.session.timeline import Simulation
@@ -214,6 +214,27 @@ def test_spindrift_blows_off_the_crests_from_beaufort_8_and_not_below(heavy):
     fewer = len(spray.puffs.where(spray.puffs.kind == 1))
     sim.close()
     assert fewer / counts[0] == pytest.approx(whitecap_fraction(21.0) / whitecap_fraction(25.0), rel=0.25)
+
+
+def test_left_to_itself_the_spray_feels_the_runs_wind_and_its_changes(heavy):
+    """Asked for its puffs with no wind given (as the renderer asks), the spray feels the run's wind at 10 m: a
+    25 m/s northerly carries the spindrift south, and once the wind has eased to 15 m/s (below Beaufort 8) none is
+    in flight. What would be wrong: a spray that feels no wind (no spindrift, puffs that rise and fall where they
+    left), the wind's bearing taken as where it blows to (puffs carried north), or the scenario's wind kept after a
+    change of weather."""
+    northerly = dataclasses.replace(heavy, environment=heavy.environment.model_copy(
+        update={"wind_speed_m_s": 25.0, "wind_from_deg": 0.0}))
+    sim, spray = spray_of(northerly)
+    sim.advance_to(60.0)
+    drift = spray.update().where(spray.puffs.kind == 1)
+    assert len(drift) > 100
+    assert np.mean(drift.velocity[:, 1]) < -10.0 and abs(np.mean(drift.velocity[:, 0])) < 2.0
+    sim.change_weather(wind_speed_m_s=15.0)
+    for t in np.arange(60.5, 70.0, 0.5):   # frames two a second: the spray moved on through the change
+        sim.advance_to(float(t))
+        spray.update()
+    sim.close()
+    assert len(spray.puffs.where(spray.puffs.kind == 1)) == 0
 
 
 def test_the_same_run_throws_the_same_spray_whatever_the_frame_rate(heavy):
