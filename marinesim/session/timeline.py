@@ -50,7 +50,7 @@ from marinesim.session.assembly import Assembly
 from marinesim.session.station import StationWorld, station_columns, station_record
 from marinesim.station.vessel import Station
 from marinesim.vessel.along import KNOT_S, KNOT_SETS_KEPT, Knots, ShipPath, linear_along
-from marinesim.vessel.response import Response, Track, motion_columns
+from marinesim.vessel.response import PhasorTables, Response, Track, motion_columns
 from marinesim.wake.cache import cached_wake
 from marinesim.wake.compute import QUALITATIVE_BELOW_FROUDE, Wake, WakeGrid
 
@@ -78,6 +78,9 @@ MOTION_BLOCKS_KEPT = 64
 several times over."""
 RESPONSES_KEPT = 3
 """Responses to straight runs held at once (a few MB each: the run she is on, the one before, one more)."""
+REST_TABLES_KEPT = 2
+"""Phasor tables a set's responses at rest share (:data:`~marinesim.vessel.response.SHARED_ROWS` rows, one per
+time step asked), the newest this many."""
 WAKE_GRID = WakeGrid()
 """The viewer's wake grid: the default one, so the viewer reads the wakes the headless run cached."""
 
@@ -175,6 +178,8 @@ class Simulation:
         self._sets = Recent(lambda i: self.assembly.components(t=self._set_times[i]))
         self._knots: Newest[int, Knots] = Newest(KNOT_SETS_KEPT)
         """Sets' transfer functions at a manoeuvre's knots (:class:`~marinesim.vessel.along.Knots`)."""
+        self._rest_tables: Newest[int, PhasorTables] = Newest(KNOT_SETS_KEPT)
+        """Sets' phasor tables shared by a vessel keeping station on her headings (:meth:`_along_station`)."""
         self._pending: list[_Change] = []
         self._preparing = ThreadPoolExecutor(max_workers=1, thread_name_prefix="sea-change")
         self._last_pose: tuple[float, int, Pose | None] = (math.nan, 0, None)
@@ -558,12 +563,14 @@ class Simulation:
     def _along_station(self, index: int, times: np.ndarray, dt: float | None, out: np.ndarray) -> np.ndarray:
         """Set ``index``'s response into ``out`` for a vessel keeping station: on her heading of each time, to the
         nearest :data:`STATION_HEADING_DEG`, at rest at the set point (her excursions, metres, hardly shift the
-        waves' phases)."""
+        waves' phases). At rest the waves meet her at their own frequencies on every heading: the responses share
+        their phasor tables."""
         headings = np.round(np.degrees(self.voyage.path(times).heading) / STATION_HEADING_DEG) * STATION_HEADING_DEG
         bounds = np.r_[0, np.flatnonzero(np.diff(headings)) + 1, times.size]
+        tables = self._rest_tables.get(index, lambda: Newest(REST_TABLES_KEPT))
         for lo, hi in zip(bounds[:-1], bounds[1:]):
             heading = float(headings[lo])
-            response = self._kept((index, "station", heading), index, Track(math.radians(heading), 0.0))
+            response = self._kept((index, "station", heading), index, Track(math.radians(heading), 0.0), tables)
             out[lo:hi] = _linear(response, times[lo:hi], dt)
         return out
 
@@ -580,12 +587,13 @@ class Simulation:
         return self._kept((index, t0, float(run.x[0]), float(run.y[0]), heading, speed), index,
                           Track(heading, speed, x0, y0))
 
-    def _kept(self, key: tuple, index: int, track: Track) -> Response:
-        """Set ``index``'s response on ``track``, kept by ``key`` (the :data:`RESPONSES_KEPT` newest)."""
+    def _kept(self, key: tuple, index: int, track: Track, tables: PhasorTables | None = None) -> Response:
+        """Set ``index``'s response on ``track``, kept by ``key`` (the :data:`RESPONSES_KEPT` newest); ``tables``:
+        phasor tables it shares at rest (:class:`~marinesim.vessel.response.Response`)."""
         response = self._straight.get(key)
         if response is None:
             vessel = self.vessel
-            response = Response(vessel.rao, self.components(index), track, vessel.points, strict=False)
+            response = Response(vessel.rao, self.components(index), track, vessel.points, strict=False, tables=tables)
             if len(self._straight) >= RESPONSES_KEPT:
                 self._straight.pop(next(iter(self._straight)))
             self._straight[key] = response

@@ -49,6 +49,13 @@ FRAME_STEPS = 4
 """A call of at most this many steps (a viewer frame's one to three) keeps its phasor table for the next frames ..."""
 FRAME_TABLES_KEPT = 4
 """... the newest this many, by time step and steps: at most 16 rows of every component, 13 MB at 50,000."""
+SHARED_ROWS = 32
+"""Rows of a phasor table shared by responses at rest (:class:`Response`'s ``tables``): every call is summed in
+blocks of this many steps, so that the short runs of a vessel keeping station on a wandering heading (a few
+seconds on each) all read one table, 9 MB at 17,844 components."""
+
+PhasorTables = Newest[tuple[float, int], list[np.ndarray]]
+"""Phasor tables by (time step, rows), each a list over the component chunks (:meth:`Response.linear_steps`)."""
 
 
 @dataclass(frozen=True)
@@ -95,10 +102,13 @@ def motion_columns(points: dict[str, tuple[float, float, float]]) -> list[str]:
 class Response:
     """Motions of a vessel (RAO table, track, named points) in the given wave components. ``strict``: refuse a sea
     a partial RAO table does not cover (a scenario's start); else its nearest headings serve (a course the ship
-    has been steered onto)."""
+    has been steered onto). ``tables``: phasor tables shared with the responses to the same components of a vessel
+    at rest on other headings (their encounter frequencies are the waves' own), summed in blocks of
+    :data:`SHARED_ROWS`; None, its own."""
 
     def __init__(self, rao: RaoTable, components: Components, track: Track,
-                 points: dict[str, tuple[float, float, float]] | None = None, strict: bool = True) -> None:
+                 points: dict[str, tuple[float, float, float]] | None = None, strict: bool = True,
+                 tables: PhasorTables | None = None) -> None:
         self.rao, self.components, self.track = rao, components, track
         self.points = {name: np.asarray(p, dtype=float) for name, p in (points or {}).items()}
         for name, p in self.points.items():
@@ -118,7 +128,10 @@ class Response:
         columns += [self.elevation_coefficients(p)[:, None] for p in self.points.values()]
         coefficients = np.concatenate(columns, axis=1)                     # (n, 19 + points)
         self._real, self._imag = np.ascontiguousarray(coefficients.real), np.ascontiguousarray(coefficients.imag)
-        self._frame_tables: Newest[tuple[float, int], list[np.ndarray]] = Newest(FRAME_TABLES_KEPT)
+        if tables is not None and track.speed != 0.0:
+            raise ParameterError(f"phasor tables are shared at rest only, not at {track.speed:g} m/s")
+        self._shared_tables = tables
+        self._frame_tables: PhasorTables = Newest(FRAME_TABLES_KEPT)
 
     def elevation_coefficients(self, p: np.ndarray) -> np.ndarray:
         """The incident waves at the mean position of body point ``p`` (3,) (m): complex (n,), the elevation being
@@ -164,16 +177,16 @@ class Response:
     def linear_steps(self, start: float, dt: float, steps: int) -> Iterator[tuple[np.ndarray, np.ndarray]]:
         """``(times, linear outputs)`` in blocks for ``start + dt * arange(steps)``.
 
-        One phasor table ``exp(i w_e j dt)`` (j below the block's length, :data:`BLOCK` or the run's steps;
-        :func:`~marinesim.sea.phasors.phasor_table`) serves every block, the block's start time folded into the
-        coefficients, or into the table where it has fewer rows than there are outputs (a few steps of the viewer's
-        frame, whose tables are kept: :data:`FRAME_STEPS`). The product is memory-bound, so components go in chunks
-        whose table stays in cache while a run of blocks reuses it.
+        One phasor table ``exp(i w_e j dt)`` (j below the block's length, :data:`BLOCK` or the run's steps, or
+        :data:`SHARED_ROWS` for shared tables; :func:`~marinesim.sea.phasors.phasor_table`) serves every block, the
+        block's start time folded into the coefficients, or into the table where it has fewer rows than there are
+        outputs (a few steps of the viewer's frame, whose tables are kept: :data:`FRAME_STEPS`). The product is
+        memory-bound, so components go in chunks whose table stays in cache while a run of blocks reuses it.
         """
         dt = require_positive("time step", dt)
         start = require_finite("start time", start)
         steps = int(steps)
-        block = min(BLOCK, max(steps, 1))
+        block = SHARED_ROWS if self._shared_tables is not None else min(BLOCK, max(steps, 1))
         if steps <= 0:
             return
         size = CHUNK * min(BLOCK // block, WIDEST)  # a short run's table, as few rows, takes more components
@@ -187,7 +200,10 @@ class Response:
                 # (block, chunk) complex, or its real and imaginary parts side by side (block, 2 chunk)
                 tables.append(phasors if few else np.concatenate([phasors.real, phasors.imag], axis=1))
             return tables
-        tables = self._frame_tables.get((dt, block), made) if block <= FRAME_STEPS else made()
+        if self._shared_tables is not None:
+            tables = self._shared_tables.get((dt, block), made)
+        else:
+            tables = self._frame_tables.get((dt, block), made) if block <= FRAME_STEPS else made()
         span = block * BLOCKS_PER_PASS
         for first in range(0, steps, span):
             count = min(span, steps - first)
