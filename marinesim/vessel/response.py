@@ -178,10 +178,11 @@ class Response:
         """``(times, linear outputs)`` in blocks for ``start + dt * arange(steps)``.
 
         One phasor table ``exp(i w_e j dt)`` (j below the block's length, :data:`BLOCK` or the run's steps, or
-        :data:`SHARED_ROWS` for shared tables; :func:`~marinesim.sea.phasors.phasor_table`) serves every block, the
-        block's start time folded into the coefficients, or into the table where it has fewer rows than there are
-        outputs (a few steps of the viewer's frame, whose tables are kept: :data:`FRAME_STEPS`). The product is
-        memory-bound, so components go in chunks whose table stays in cache while a run of blocks reuses it.
+        :data:`SHARED_ROWS` for shared tables; :func:`~marinesim.sea.phasors.phasor_table`), its real and imaginary
+        parts side by side, serves every block: the block's start time is folded into the coefficients, or into the
+        table's rows where they are fewer than the outputs (a few steps of the viewer's frame, whose tables are kept:
+        :data:`FRAME_STEPS`). The product is memory-bound, so components go in chunks whose table stays in cache
+        while a run of blocks reuses it.
         """
         dt = require_positive("time step", dt)
         start = require_finite("start time", start)
@@ -191,14 +192,13 @@ class Response:
             return
         size = CHUNK * min(BLOCK // block, WIDEST)  # a short run's table, as few rows, takes more components
         chunks = [slice(lo, lo + size) for lo in range(0, self.omega_e.size, size)]
-        few = block < self._real.shape[1]
+        outputs = self._real.shape[1]
 
         def made() -> list[np.ndarray]:
             tables = []
             for chunk in chunks:
                 phasors = phasor_table(self.omega_e[chunk], dt, block)
-                # (block, chunk) complex, or its real and imaginary parts side by side (block, 2 chunk)
-                tables.append(phasors if few else np.concatenate([phasors.real, phasors.imag], axis=1))
+                tables.append(np.concatenate([phasors.real, phasors.imag], axis=1))  # (block, 2 chunk)
             return tables
         if self._shared_tables is not None:
             tables = self._shared_tables.get((dt, block), made)
@@ -207,17 +207,19 @@ class Response:
         span = block * BLOCKS_PER_PASS
         for first in range(0, steps, span):
             count = min(span, steps - first)
-            out = np.zeros((count, self._real.shape[1]))
+            out = np.zeros((count, outputs))
             for chunk, table in zip(chunks, tables):
                 real, imag, omega_e = self._real[chunk], self._imag[chunk], self.omega_e[chunk]
+                width = omega_e.size
                 for lo in range(0, count, block):
                     n = min(block, count - lo)
                     turn = np.exp(1j * omega_e * (start + (first + lo) * dt))
-                    if few:
-                        turned = table[:n] * turn
-                        c, s = np.ascontiguousarray(turned.real), np.ascontiguousarray(turned.imag)  # for BLAS
+                    if n < outputs:  # turn the table's rows
+                        tc, ts = table[:n, :width], table[:n, width:]
+                        c = tc * turn.real - ts * turn.imag
+                        s = tc * turn.imag + ts * turn.real
                         out[lo:lo + n] += c @ real - s @ imag
-                    else:
+                    else:            # turn the coefficients
                         c, s = turn.real[:, None], turn.imag[:, None]
                         out[lo:lo + n] += table[:n] @ np.concatenate([real * c - imag * s, -(real * s + imag * c)])
             for lo in range(0, count, block):
