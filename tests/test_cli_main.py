@@ -1,5 +1,6 @@
 """The `marinesim` command's contract: --version and --help, and a bad value is one line on stderr
-naming it, exit status 2, no traceback."""
+naming it, exit status 2, no traceback. The real command (a process of its own) answers --version, --help and
+one bad value; the other bad values go to its entry point in this process (conftest's ``cli``)."""
 
 import signal
 import subprocess
@@ -8,12 +9,20 @@ import sys
 import pytest
 
 import marinesim
-from conftest import HANG_S, VESSEL_SCENARIO, cli_process as cli, wait_for, write
+from conftest import HANG_S, VESSEL_SCENARIO, cli, cli_process, wait_for, write
 
 
 def test_version_and_help():
-    assert cli("--version").stdout.strip() == f"marinesim {marinesim.__version__}"
-    assert "sea" in cli("--help").stdout
+    assert cli_process("--version").stdout.strip() == f"marinesim {marinesim.__version__}"
+    assert "sea" in cli_process("--help").stdout
+
+
+def test_the_real_command_gives_a_bad_value_one_line_and_exit_2():
+    """As a user's shell runs it (``python -m marinesim``): what ends the process after the entry point returns
+    adds nothing to its one line."""
+    result = cli_process("sea", "--hs", "-1")
+    assert result.returncode == 2 and result.stderr.strip().splitlines() == [
+        "marinesim sea: error: hs must be in 0..30 m, got -1.0"], result.stderr
 
 
 @pytest.mark.parametrize("args, value", [
