@@ -10,8 +10,6 @@ cases per reader (default :data:`DEFAULT_EXAMPLES`, so that the file runs in und
 from __future__ import annotations
 
 import os
-import subprocess
-import sys
 import tempfile
 from collections.abc import Callable
 from pathlib import Path
@@ -22,7 +20,7 @@ import trimesh
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from conftest import HANG_S, hang_guard, outcome
+from conftest import cli, hang_guard, outcome
 from marinesim.hull import Hull, load_hull
 from marinesim.scenario import load_scenario
 from marinesim.vessel.native import write_native
@@ -142,7 +140,8 @@ BROKEN = {
 
 @pytest.mark.parametrize("name", sorted(BROKEN))
 def test_a_broken_file_gives_exit_2_and_one_line(tmp_path, name):
-    """The command line's side of the fuzz: a broken file of each reader is one line on stderr and exit 2."""
+    """The command line's side of the fuzz: a broken file of each reader is one line on stderr and exit 2 (the
+    entry point, in this process; test_cli_main runs the command in a process of its own)."""
     _, file_name, _, _ = SOURCES[name]
     lines = list(lines_of(name))
     at, text = BROKEN[name]
@@ -151,8 +150,7 @@ def test_a_broken_file_gives_exit_2_and_one_line(tmp_path, name):
     path.write_text("\n".join(lines) + "\n")
     command = {"scenario": ["export", str(path), "--out", str(tmp_path / "m.csv")],
                "gdf": ["hull", str(path)], "obj": ["hull", str(path)]}.get(name, ["rao", str(path)])
-    result = subprocess.run([sys.executable, "-m", "marinesim", *command], capture_output=True, text=True,
-                            env=dict(os.environ, PYTHONPATH=str(ROOT)), timeout=HANG_S)
+    result = cli(*command, cwd=tmp_path)
     stderr = result.stderr.strip().splitlines()
     assert result.returncode == 2 and "Traceback" not in result.stderr and len(stderr) == 1, result.stderr
     assert str(path) in stderr[0]
