@@ -25,7 +25,7 @@ from marinesim.scenario import load_scenario, with_run
 from marinesim.session.assembly import Assembly
 from marinesim.session.export import export_motions
 
-from conftest import HANG_S, ROOT, wait_for
+from conftest import HANG_S, ROOT, cli, wait_for
 
 SCENARIO = f"""
 [ocean]
@@ -66,8 +66,9 @@ def start_export(scenario: Path, cwd: Path, *args: str) -> subprocess.Popen:
 
 
 def export(scenario: Path, cwd: Path, *args: str) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "marinesim", "export", str(scenario), "--quiet", *args], cwd=cwd,
-                          capture_output=True, text=True, timeout=600)
+    """``marinesim export`` through the entry point in this process, in the folder ``cwd``: a refusal or a short
+    export needs no process of its own (the signals and the second writer above do)."""
+    return cli("export", str(scenario), "--quiet", *args, cwd=cwd)
 
 
 def test_the_sidecar_names_the_bytes_of_its_table_and_each_table_has_its_own(tmp_path, scenario):
