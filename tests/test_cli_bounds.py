@@ -3,47 +3,31 @@ line on stderr naming the file, key or option and what was expected, exit status
 
 from __future__ import annotations
 
-import contextlib
-import io
 import json
 import math
 import os
 import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
 
-from conftest import HANG_S
+from conftest import HANG_S, ROOT, cli, cli_process
 from marinesim.errors import FileFormatError, ParameterError
 from marinesim.vessel.native import write_native
 from marinesim.vessel.read import read_rao
 
-ROOT = Path(__file__).resolve().parents[1]
 TANKER_RAO = ROOT / "rao" / "tanker" / "tanker.4"
 TANKER_HULL = ROOT / "hulls" / "tanker.gdf"
 S175 = ROOT / "rao" / "s175" / "input.re1"
 
 
 def marinesim(*args: str, process: bool = False) -> subprocess.CompletedProcess:
-    """``marinesim ARGS`` through the command line's own entry (``marinesim.cli.main``) in this process, its
-    exit status and output captured as a user would see them; with ``process``, ``python -m marinesim ARGS`` in a
-    process of its own (for what could block: a hang then fails the test after :data:`~conftest.HANG_S`). The
-    subprocess path itself (imports, signals) is tested by test_cli_main.py and the input campaign."""
-    if process:
-        env = dict(os.environ, PYTHONPATH=str(ROOT))
-        return subprocess.run([sys.executable, "-m", "marinesim", *args], capture_output=True, text=True, env=env,
-                              timeout=HANG_S)
-    from marinesim.cli import main
-
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        try:
-            code = main(list(args))
-        except SystemExit as exit_:  # argparse's usage errors
-            code = exit_.code if isinstance(exit_.code, int) else 2
-    return subprocess.CompletedProcess(list(args), code, out.getvalue(), err.getvalue())
+    """``marinesim ARGS`` through the command line's own entry in this process (conftest's ``cli``); with
+    ``process``, in a process of its own (for what could block: a hang then fails the test after
+    :data:`~conftest.HANG_S`). The subprocess path itself (imports, signals) is tested by test_cli_main.py and the
+    input campaign."""
+    return cli_process(*args, timeout=HANG_S) if process else cli(*args)
 
 
 def refused(result: subprocess.CompletedProcess, *words: str) -> str:
