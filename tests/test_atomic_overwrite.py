@@ -8,8 +8,6 @@ refusal must be one line with exit status 2, and every input must keep its bytes
 
 from __future__ import annotations
 
-import contextlib
-import io
 import os
 import shutil
 import signal
@@ -20,8 +18,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import ROOT, write
-from marinesim.cli import main
+from conftest import ROOT, cli, write
 from marinesim.scenario import load_scenario
 from marinesim.session.exercise import Exercise
 from marinesim.session.log import write_log
@@ -55,11 +52,9 @@ seed = 3
 
 
 def run(*argv: str) -> tuple[int, str, str]:
-    """``marinesim *argv`` in this process: (exit status, stdout, stderr)."""
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        code = main(list(argv))
-    return code, out.getvalue(), err.getvalue()
+    """``marinesim *argv`` in this process (conftest's ``cli``): (exit status, stdout, stderr)."""
+    result = cli(*argv)
+    return result.returncode, result.stdout, result.stderr
 
 
 def snapshot(folder: Path) -> dict[str, bytes]:
