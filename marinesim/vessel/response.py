@@ -50,9 +50,10 @@ FRAME_STEPS = 4
 FRAME_TABLES_KEPT = 4
 """... the newest this many, by time step and steps: at most 16 rows of every component, 13 MB at 50,000."""
 SHARED_ROWS = 32
-"""Rows of a phasor table shared by responses at rest (:class:`Response`'s ``tables``): every call is summed in
-blocks of this many steps, so that the short runs of a vessel keeping station on a wandering heading (a few
-seconds on each) all read one table, 9 MB at 17,844 components."""
+"""Rows of a phasor table shared by responses at rest (:class:`Response`'s ``tables``): a call of at most
+:data:`BLOCK` steps is summed in blocks of this many, so that the short runs of a vessel keeping station on a
+wandering heading (a few seconds on each) all read one table, 9 MB at 17,844 components; a longer call makes its
+own table of :data:`BLOCK` rows, which its many blocks repay."""
 
 PhasorTables = Newest[tuple[float, int], list[np.ndarray]]
 """Phasor tables by (time step, rows), each a list over the component chunks (:meth:`Response.linear_steps`)."""
@@ -178,7 +179,7 @@ class Response:
         """``(times, linear outputs)`` in blocks for ``start + dt * arange(steps)``.
 
         One phasor table ``exp(i w_e j dt)`` (j below the block's length, :data:`BLOCK` or the run's steps, or
-        :data:`SHARED_ROWS` for shared tables; :func:`~marinesim.sea.phasors.phasor_table`), its real and imaginary
+        :data:`SHARED_ROWS` for a shared table; :func:`~marinesim.sea.phasors.phasor_table`), its real and imaginary
         parts side by side, serves every block: the block's start time is folded into the coefficients, or into the
         table's rows where they are fewer than the outputs (a few steps of the viewer's frame, whose tables are kept:
         :data:`FRAME_STEPS`). The product is memory-bound, so components go in chunks whose table stays in cache
@@ -187,7 +188,8 @@ class Response:
         dt = require_positive("time step", dt)
         start = require_finite("start time", start)
         steps = int(steps)
-        block = SHARED_ROWS if self._shared_tables is not None else min(BLOCK, max(steps, 1))
+        shared = self._shared_tables is not None and steps <= BLOCK
+        block = SHARED_ROWS if shared else min(BLOCK, max(steps, 1))
         if steps <= 0:
             return
         size = CHUNK * min(BLOCK // block, WIDEST)  # a short run's table, as few rows, takes more components
@@ -200,7 +202,7 @@ class Response:
                 phasors = phasor_table(self.omega_e[chunk], dt, block)
                 tables.append(np.concatenate([phasors.real, phasors.imag], axis=1))  # (block, 2 chunk)
             return tables
-        if self._shared_tables is not None:
+        if shared:
             tables = self._shared_tables.get((dt, block), made)
         else:
             tables = self._frame_tables.get((dt, block), made) if block <= FRAME_STEPS else made()
