@@ -33,15 +33,17 @@ CRITERIA = 4
 """The crane lift's criteria here: its objectives' three and her DP footprint."""
 TIGHT_ROLL_DEG = 1.5
 """A roll limit the crane lift's roll goes above within its first minute (about 1.9 deg by 36 s)."""
+FRAME_S = 1.0
+"""The session's frames (s): the viewer's, coarser (the record and the criteria do not depend on them)."""
 
 
 def session(path, folder, until_s: float) -> tuple:
-    """The exercise of ``path`` over :data:`PLANNED_S` as the viewer runs it, in frames of 0.25 s, closed at
-    ``until_s`` and its log written to ``folder``: (the log, the exercise's assessment)."""
+    """The exercise of ``path`` over :data:`PLANNED_S` as the viewer runs it, frame by frame (:data:`FRAME_S`),
+    closed at ``until_s`` and its log written to ``folder``: (the log, the exercise's assessment)."""
     with Simulation(with_run(load_scenario(path), PLANNED_S), wake=False) as simulation:
         exercise = Exercise(simulation)
         while simulation.time < until_s - 1e-9:
-            exercise.advance(min(0.25, until_s - simulation.time))
+            exercise.advance(min(FRAME_S, until_s - simulation.time))
         exercise.note("end")
     folder.mkdir(parents=True, exist_ok=True)
     return write_log(folder / "session.jsonl", exercise), exercise.assessment()
