@@ -52,6 +52,10 @@ class Newest(Generic[K, T]):
         self.most = most
         self._kept: dict[K, T] = {}
 
+    def __contains__(self, key: object) -> bool:
+        """Whether the entry of ``key`` is kept."""
+        return key in self._kept
+
     def get(self, key: K, compute: Callable[[], T]) -> T:
         """The entry of ``key``: the one kept, else ``compute()`` (the least recently asked then dropped)."""
         if key in self._kept:

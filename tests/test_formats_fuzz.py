@@ -150,7 +150,8 @@ def test_a_broken_file_gives_exit_2_and_one_line(tmp_path, name):
     path.write_text("\n".join(lines) + "\n")
     command = {"scenario": ["export", str(path), "--out", str(tmp_path / "m.csv")],
                "gdf": ["hull", str(path)], "obj": ["hull", str(path)]}.get(name, ["rao", str(path)])
-    result = cli(*command, cwd=tmp_path)
+    with hang_guard(f"marinesim {command[0]} of a broken {name} file"):
+        result = cli(*command, cwd=tmp_path)
     stderr = result.stderr.strip().splitlines()
     assert result.returncode == 2 and "Traceback" not in result.stderr and len(stderr) == 1, result.stderr
     assert str(path) in stderr[0]

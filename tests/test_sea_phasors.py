@@ -13,7 +13,7 @@ from marinesim.errors import ParameterError
 from marinesim.scenario import load_scenario
 from marinesim.sea.phasors import phasor_table
 from marinesim.session.timeline import Simulation
-from marinesim.vessel.response import PhasorTables, Response, Track
+from marinesim.vessel.response import BLOCK, SHARED_ROWS, PhasorTables, Response, Track
 
 
 @pytest.mark.parametrize("rows", [1, 2, 3, 16, 17, 28, 97, 512, 600])
@@ -68,14 +68,17 @@ def test_frames_of_a_few_steps_read_their_own_kept_tables(response):
 def test_responses_at_rest_on_several_headings_share_their_tables(response):
     """A vessel keeping station: responses at rest on headings half a degree apart share one store of tables, and
     runs of a few to a few hundred steps at two time steps, taken in turn on each heading, each equal that heading's
-    response time by time. What would be wrong: a shared table kept for another time step (the motions of the wrong
-    times), or one heading's coefficients summed for another (the motions of a ship on another heading)."""
+    response time by time; a run longer than a block makes its own table. What would be wrong: a shared table kept
+    for another time step (the motions of the wrong times), one heading's coefficients summed for another (the
+    motions of a ship on another heading), or each heading making tables of its own (the store left empty: the
+    station's short runs paying for a table each)."""
     tables = PhasorTables(2)
     sharing = [Response(response.rao, response.components, Track(0.3 + np.radians(0.5 * i), 0.0),
                         {name: tuple(p) for name, p in response.points.items()}, strict=False, tables=tables)
                for i in range(3)]
     start = 200.0
-    for i, (dt, steps) in enumerate([(0.1, 28), (0.1, 3), (0.05, 40), (0.1, 1), (0.1, 150), (0.05, 31), (0.1, 33)]):
+    for i, (dt, steps) in enumerate([(0.1, 28), (0.1, 3), (0.05, 40), (0.1, 1), (0.1, 150), (0.05, 31), (0.1, 33),
+                                      (0.1, BLOCK + 88)]):
         own = sharing[i % 3]
         blocks = np.concatenate([out for _, out in own.linear_steps(start, dt, steps)])
         direct = own.linear(start + dt * np.arange(steps))
@@ -84,5 +87,6 @@ def test_responses_at_rest_on_several_headings_share_their_tables(response):
         other = sharing[(i + 1) % 3].linear(start + dt * np.arange(steps))
         assert np.abs(other - direct).max() > 1e-6 * scale.max(), "the headings' motions differ"
         start += dt * steps
+    assert (0.1, SHARED_ROWS) in tables and (0.05, SHARED_ROWS) in tables and (0.1, BLOCK) not in tables
     with pytest.raises(ParameterError, match="at rest only"):
         Response(response.rao, response.components, Track(0.3, 2.0), strict=False, tables=tables)

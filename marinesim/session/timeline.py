@@ -80,7 +80,9 @@ RESPONSES_KEPT = 3
 """Responses to straight runs held at once (a few MB each: the run she is on, the one before, one more)."""
 REST_TABLES_KEPT = 2
 """Phasor tables a set's responses at rest share (:data:`~marinesim.vessel.response.SHARED_ROWS` rows, one per
-time step asked), the newest this many."""
+time step asked), the newest this many ..."""
+REST_SETS_KEPT = 2
+"""... for the newest this many component sets (a sea change blends two)."""
 WAKE_GRID = WakeGrid()
 """The viewer's wake grid: the default one, so the viewer reads the wakes the headless run cached."""
 
@@ -178,7 +180,7 @@ class Simulation:
         self._sets = Recent(lambda i: self.assembly.components(t=self._set_times[i]))
         self._knots: Newest[int, Knots] = Newest(KNOT_SETS_KEPT)
         """Sets' transfer functions at a manoeuvre's knots (:class:`~marinesim.vessel.along.Knots`)."""
-        self._rest_tables: Newest[int, PhasorTables] = Newest(KNOT_SETS_KEPT)
+        self._rest_tables: Newest[int, PhasorTables] = Newest(REST_SETS_KEPT)
         """Sets' phasor tables shared by a vessel keeping station on her headings (:meth:`_along_station`)."""
         self._pending: list[_Change] = []
         self._preparing = ThreadPoolExecutor(max_workers=1, thread_name_prefix="sea-change")

@@ -312,9 +312,9 @@ def _bilinear(omega_grid: np.ndarray, beta_grid: np.ndarray, table: np.ndarray,
     ib, fb = _locate(beta_grid, beta)
     iw1 = np.minimum(iw + 1, omega_grid.size - 1)
     fw, fb = fw[:, None], fb[:, None]
-    # the complex values as (re, im) pairs of floats, weighed in place: real products, no temporaries (the same
-    # bits as the expression (1 - fb) ((1 - fw) a + fw b) + fb ((1 - fw) c + fw d) in complex numbers)
-    flat = np.ascontiguousarray(table).view(np.float64).reshape(-1, 2 * table.shape[2])
+    # the complex values as (re, im) pairs of floats, weighed in place: real products, no temporaries (the values
+    # of (1 - fb) ((1 - fw) a + fw b) + fb ((1 - fw) c + fw d) in complex arithmetic; only a zero's sign may differ)
+    flat = np.ascontiguousarray(table, dtype=np.complex128).view(np.float64).reshape(-1, 2 * table.shape[2])
     rows = (ib * omega_grid.size, (ib + 1) * omega_grid.size)
     sides = []
     for row in rows:

@@ -104,12 +104,14 @@ class Response:
     """Motions of a vessel (RAO table, track, named points) in the given wave components. ``strict``: refuse a sea
     a partial RAO table does not cover (a scenario's start); else its nearest headings serve (a course the ship
     has been steered onto). ``tables``: phasor tables shared with the responses to the same components of a vessel
-    at rest on other headings (their encounter frequencies are the waves' own), summed in blocks of
-    :data:`SHARED_ROWS`; None, its own."""
+    at rest on other headings (their encounter frequencies are the waves' own; one store per component set), read
+    by calls of at most :data:`BLOCK` steps in blocks of :data:`SHARED_ROWS`; None, or a longer call, its own."""
 
     def __init__(self, rao: RaoTable, components: Components, track: Track,
                  points: dict[str, tuple[float, float, float]] | None = None, strict: bool = True,
                  tables: PhasorTables | None = None) -> None:
+        if tables is not None and track.speed != 0.0:
+            raise ParameterError(f"phasor tables are shared at rest only, not at {track.speed:g} m/s")
         self.rao, self.components, self.track = rao, components, track
         self.points = {name: np.asarray(p, dtype=float) for name, p in (points or {}).items()}
         for name, p in self.points.items():
@@ -129,8 +131,6 @@ class Response:
         columns += [self.elevation_coefficients(p)[:, None] for p in self.points.values()]
         coefficients = np.concatenate(columns, axis=1)                     # (n, 19 + points)
         self._real, self._imag = np.ascontiguousarray(coefficients.real), np.ascontiguousarray(coefficients.imag)
-        if tables is not None and track.speed != 0.0:
-            raise ParameterError(f"phasor tables are shared at rest only, not at {track.speed:g} m/s")
         self._shared_tables = tables
         self._frame_tables: PhasorTables = Newest(FRAME_TABLES_KEPT)
 
@@ -178,12 +178,13 @@ class Response:
     def linear_steps(self, start: float, dt: float, steps: int) -> Iterator[tuple[np.ndarray, np.ndarray]]:
         """``(times, linear outputs)`` in blocks for ``start + dt * arange(steps)``.
 
-        One phasor table ``exp(i w_e j dt)`` (j below the block's length, :data:`BLOCK` or the run's steps, or
-        :data:`SHARED_ROWS` for a shared table; :func:`~marinesim.sea.phasors.phasor_table`), its real and imaginary
-        parts side by side, serves every block: the block's start time is folded into the coefficients, or into the
-        table's rows where they are fewer than the outputs (a few steps of the viewer's frame, whose tables are kept:
-        :data:`FRAME_STEPS`). The product is memory-bound, so components go in chunks whose table stays in cache
-        while a run of blocks reuses it.
+        One phasor table ``exp(i w_e j dt)`` (j below the block's length: :data:`BLOCK` or the run's steps; or
+        :data:`SHARED_ROWS`, the shared table of a response at rest, for a run of at most :data:`BLOCK` steps;
+        :func:`~marinesim.sea.phasors.phasor_table`), its real and imaginary parts side by side, serves every block:
+        the block's start time is folded into the coefficients, or into the table's rows where a block has fewer
+        rows than there are outputs (as the few steps of a viewer's frame do: those of at most :data:`FRAME_STEPS`
+        keep their tables). The product is memory-bound, so components go in chunks whose table stays in cache while
+        a run of blocks reuses it.
         """
         dt = require_positive("time step", dt)
         start = require_finite("start time", start)
