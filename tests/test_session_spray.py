@@ -226,7 +226,8 @@ def test_left_to_itself_the_spray_feels_the_runs_wind_and_its_changes(heavy):
         update={"wind_speed_m_s": 25.0, "wind_from_deg": 0.0}))
     sim, spray = spray_of(northerly)
     sim.advance_to(60.0)
-    drift = spray.update().where(spray.puffs.kind == 1)
+    puffs = spray.update()
+    drift = puffs.where(puffs.kind == 1)
     assert len(drift) > 100
     assert np.mean(drift.velocity[:, 1]) < -10.0 and abs(np.mean(drift.velocity[:, 0])) < 2.0
     sim.change_weather(wind_speed_m_s=15.0)

@@ -14,7 +14,7 @@ draws a camera's view into the bound framebuffer:
 3. the vessel mesh (the scenario's visual mesh, else one made from the hull) in its 6-DOF pose, draft marks on,
    and the other vessels and structures in theirs;
 4. spray thrown up where the bow meets the rising sea and blown off the crests in a gale
-   (:mod:`~marinesim.session.spray`, the session's state; drawn, never written back);
+   (worked out in the session, :mod:`~marinesim.session.spray`; drawn, never written back);
 5. the navigation lights, by night and in restricted visibility (COLREG sectors and intensities);
 6. rain, as streaks of falling drops over it all.
 

@@ -315,17 +315,18 @@ def _bilinear(omega_grid: np.ndarray, beta_grid: np.ndarray, table: np.ndarray,
     # the complex values as (re, im) pairs of floats, weighed in place: real products, no temporaries (the values
     # of (1 - fb) ((1 - fw) a + fw b) + fb ((1 - fw) c + fw d) in complex arithmetic; only a zero's sign may differ)
     flat = np.ascontiguousarray(table, dtype=np.complex128).view(np.float64).reshape(-1, 2 * table.shape[2])
-    rows = (ib * omega_grid.size, (ib + 1) * omega_grid.size)
-    sides = []
-    for row in rows:
+
+    def along_frequency(row: np.ndarray) -> np.ndarray:
+        """(1 - fw) a + fw b between the frequencies of the headings at ``row`` (n,), (n, 2 dofs)."""
         side = np.take(flat, row + iw, axis=0)
         side *= 1 - fw
         other = np.take(flat, row + iw1, axis=0)
         other *= fw
         side += other
-        sides.append(side)
-    out, other = sides
+        return side
+    out = along_frequency(ib * omega_grid.size)
     out *= 1 - fb
+    other = along_frequency((ib + 1) * omega_grid.size)
     other *= fb
     out += other
     return out.view(np.complex128)
