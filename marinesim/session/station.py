@@ -67,6 +67,8 @@ class StationWorld:
             if candidate.start <= t:
                 leg = candidate
         w = float(leg.weight(t))
+        if w == 1.0:
+            return value(leg.after)
         out = w * value(leg.after)
         if w < 1.0:
             for index, weight in leg.before:

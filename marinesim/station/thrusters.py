@@ -58,6 +58,7 @@ class Thrusters:
     b: np.ndarray = field(init=False, repr=False, compare=False)
     azimuths: bool = field(init=False, repr=False, compare=False)
     _least: dict = field(init=False, repr=False, compare=False)
+    _problems: dict = field(init=False, repr=False, compare=False)
     _bounded: dict = field(init=False, repr=False, compare=False)
     _slices: tuple[slice, ...] = field(init=False, repr=False, compare=False)
     _lag: np.ndarray = field(init=False, repr=False, compare=False)
@@ -77,6 +78,7 @@ class Thrusters:
         object.__setattr__(self, "b", np.array(columns, dtype=float).T)
         object.__setattr__(self, "azimuths", any(t.kind == "azimuth" for t in self.units))
         object.__setattr__(self, "_least", {})
+        object.__setattr__(self, "_problems", {})
         object.__setattr__(self, "_bounded", {})  # per set of free forces: the last bounded answer's bounds held
         slices, at = [], 0
         for t in self.units:
@@ -144,18 +146,16 @@ class Thrusters:
         rest = tau - self.b @ f
         if not free.any():
             return f
-        least = self._least_norm(tuple(free)) @ rest
-        if np.all(np.isfinite(least)) and np.all(least >= lo[free] - 1e-9) and np.all(least <= hi[free] + 1e-9) \
+        key = tuple(free)
+        lo, hi = lo[free], hi[free]
+        least = self._least_norm(key) @ rest
+        if np.isfinite(least).all() and (least >= lo - 1e-9).all() and (least <= hi + 1e-9).all() \
                 and self._within_circles(f, free, least):
             f[free] = least
             return f
-        b = self.b[:, free]
-        scale = np.array([1.0, 1.0, 1.0 / self.length])
-        top = max(float(np.max(hi[free])), 1.0)
-        a = np.vstack([b * scale[:, None] / top, math.sqrt(PENALTY) * np.eye(b.shape[1]) / top])
-        target = np.concatenate([rest * scale / top, np.zeros(b.shape[1])])
-        key = tuple(free)
-        f[free], self._bounded[key] = bounded_least_squares(a, target, lo[free], np.maximum(hi[free], lo[free] + 1e-12),
+        a, scale, top = self._bounded_problem(key, hi)
+        target = np.concatenate([rest * scale / top, np.zeros(a.shape[1])])
+        f[free], self._bounded[key] = bounded_least_squares(a, target, lo, np.maximum(hi, lo + 1e-12),
                                                             self._bounded.get(key))
         return self._onto_circles(f)
 
@@ -174,12 +174,25 @@ class Thrusters:
             self._least[free] = b.T @ np.linalg.inv(b @ b.T) if full else np.full((b.shape[1], 3), np.nan)
         return self._least[free]
 
+    def _bounded_problem(self, free: tuple[bool, ...], hi: np.ndarray) -> tuple[np.ndarray, np.ndarray, float]:
+        """The bounded problem of the ``free`` virtual forces (their upper bounds ``hi``): its matrix ``a``
+        ((3 + k, k): the scaled columns over the penalty's rows), the rows' scale (3,) and the largest rating
+        (N) both are divided by. Kept per set of free forces."""
+        if free not in self._problems:
+            b = self.b[:, np.array(free)]
+            scale = np.array([1.0, 1.0, 1.0 / self.length])
+            top = max(float(np.max(hi)), 1.0)
+            a = np.vstack([b * scale[:, None] / top, math.sqrt(PENALTY) * np.eye(b.shape[1]) / top])
+            self._problems[free] = a, scale, top
+        return self._problems[free]
+
     def _within_circles(self, f: np.ndarray, free: np.ndarray, values: np.ndarray) -> bool:
         if not self.azimuths:
             return True
         trial = f.copy()
         trial[free] = values
-        return np.allclose(self._onto_circles(trial.copy()), trial)
+        inside = self._onto_circles(trial.copy())
+        return bool((np.abs(inside - trial) <= 1e-8 + 1e-5 * np.abs(trial)).all())  # np.allclose's test, finite
 
     def _onto_circles(self, f: np.ndarray) -> np.ndarray:
         """``f`` with each azimuth's resultant pulled in to its rating."""
@@ -239,10 +252,10 @@ def _with_bounds_held(a: np.ndarray, target: np.ndarray, lower: np.ndarray, uppe
     free = held == 0
     if free.any():
         x[free] = np.linalg.lstsq(a[:, free], target - a[:, ~free] @ x[~free], rcond=None)[0]
-        if np.any(x[free] <= lower[free]) or np.any(x[free] >= upper[free]):
+        if (x[free] <= lower[free]).any() or (x[free] >= upper[free]).any():
             return None
     gradient = a.T @ (a @ x - target)
     tolerance = 1e-9 * float(np.abs(a.T @ target).max() + np.abs(a.T @ (a @ x)).max())
-    if np.any(gradient[held < 0] < -tolerance) or np.any(gradient[held > 0] > tolerance):
+    if (gradient[held < 0] < -tolerance).any() or (gradient[held > 0] > tolerance).any():
         return None
     return x

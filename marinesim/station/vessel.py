@@ -160,7 +160,7 @@ class Station:
         if self.dp is not None:
             self.thrusters.forget()
             env = self.environment
-            current = np.asarray(self.d, float) @ _in_body(env.current(0.0), psi)
+            current = np.asarray(self.d, float) @ np.array([*_in_body(env.current(0.0), psi), 0.0])
             load = env.loads(0.0, 0.0, 0.0, psi, 0.0, 0.0, 0.0) + current
             if self.moorings is not None:
                 load = load + self.moorings.force(0.0, 0.0, psi)
@@ -227,35 +227,39 @@ class Station:
         f_order, lag = f_now, None
         if self.dp is not None:
             f_order, lag, extra[:n_dp] = self._dp_cycle(s, orders, extra[:n_dp], f_now, h, t)
-        m_inv, d, env = self._m_inv, self._d, self.environment
+        m_inv, d, env, pull = self._m_inv, self._d, self.environment, self.pull
+        # the thrusters' force at the stages' times (start, middle, end of the step), their lags exact over it
+        thrusts = [np.zeros(3)] * 3 if lag is None else [
+            self.thrusters.b @ (f_order + (f_now - f_order) * np.exp(-tau / lag)) for tau in (0.0, 0.5 * h, h)]
 
-        def thrust(tau: float) -> np.ndarray:
-            if lag is None:
-                return np.zeros(3)
-            return self.thrusters.b @ (f_order + (f_now - f_order) * np.exp(-tau / lag))
-
-        def rates(tau: float, y: np.ndarray) -> np.ndarray:
-            north, east, psi, u, v, r = y
+        def rates(stage: int, north: float, east: float, psi: float, u: float, v: float, r: float
+                  ) -> tuple[float, ...]:
+            """The derivatives of (north, east, psi, u, v, r) at the time of ``stage`` (0, 1, 2: the step's start,
+            middle and end)."""
+            at = t + 0.5 * h * stage
             c, sn = math.cos(psi), math.sin(psi)
-            force = thrust(tau) + env.loads(t + tau, north, east, psi, u, v, r) - d @ (
-                np.array([u, v, r]) - _in_body(env.current(t + tau), psi))
-            if self.pull:
-                force = force - np.array([self.pull, 0.0, 0.0])
+            u_c, v_c = _in_body(env.current(at), psi)
+            relative = np.array([u - u_c, v - v_c, r])  # through the water
+            force = thrusts[stage] + env.loads(at, north, east, psi, u, v, r) - d @ relative
+            if pull:
+                force[0] -= pull
             if lines is not None:
-                force = force + lines.force(north, east, psi)
-            return np.concatenate([(u * c - v * sn, u * sn + v * c, r), m_inv @ force])
+                force += lines.force(north, east, psi)
+            du, dv, dr = (m_inv @ force).tolist()
+            return u * c - v * sn, u * sn + v * c, r, du, dv, dr
 
-        y0 = np.array([s.north, s.east, s.psi, s.u, s.v, s.r])
-        k1 = rates(0.0, y0)
-        k2 = rates(0.5 * h, y0 + 0.5 * h * k1)
-        k3 = rates(0.5 * h, y0 + 0.5 * h * k2)
-        k4 = rates(h, y0 + h * k3)
-        y = y0 + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
+        y0 = (s.north, s.east, s.psi, s.u, s.v, s.r)
+        half = 0.5 * h
+        k1 = rates(0, *y0)
+        k2 = rates(1, *(y + half * k for y, k in zip(y0, k1)))
+        k3 = rates(1, *(y + half * k for y, k in zip(y0, k2)))
+        k4 = rates(2, *(y + h * k for y, k in zip(y0, k3)))
+        sixth = h / 6.0
+        y = [y + sixth * (a + 2.0 * b + 2.0 * c + e) for y, a, b, c, e in zip(y0, k1, k2, k3, k4)]
         if lag is not None:
             extra[n_dp:] = f_order + (f_now - f_order) * np.exp(-h / lag)
-        after = ShipState(*y.tolist(), r_ref=0.0, extra=tuple(extra.tolist()))
-        d0 = k1.tolist()
-        return after, (d0[0], d0[1], d0[2], d0[3], d0[4], d0[5], 0.0, 0.0)
+        after = ShipState(*y, r_ref=0.0, extra=tuple(extra.tolist()))
+        return after, (*k1, 0.0, 0.0)
 
     def _dp_cycle(self, s: ShipState, orders: Orders, dp: np.ndarray, f_now: np.ndarray, h: float, t: float
                   ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -270,7 +274,7 @@ class Station:
         stuck = {name: thrusters.stuck(name)
                  for name in (f.partition(":")[2] for f in orders.faults if f.startswith("drive-off:"))}
         f_order = thrusters.allocate(tau, lost - stuck.keys(), stuck)
-        saturated = np.any(np.abs(thrusters.b @ f_order - tau) > 1e-3 * np.abs(tau).max() + 1.0)
+        saturated = (np.abs(thrusters.b @ f_order - tau) > 1e-3 * np.abs(tau).max() + 1.0).any()
         out = dp.copy()
         out[OBSERVER] = computer.observe(est, measured, thrusters.b @ f_now, h)
         if not saturated:
@@ -324,9 +328,10 @@ class Station:
         return extra[:, SET_POINT]
 
 
-def _in_body(current: tuple[float, float], psi: float) -> np.ndarray:
-    """A current (north, east m/s) in body axes on heading ``psi`` (rad): (u_c, v_c, 0)."""
-    return rotation(psi).T @ np.array([current[0], current[1], 0.0])
+def _in_body(current: tuple[float, float], psi: float) -> tuple[float, float]:
+    """A current (north, east m/s) in body axes on heading ``psi`` (rad): (u_c, v_c) m/s."""
+    c, s = math.cos(psi), math.sin(psi)
+    return current[0] * c + current[1] * s, current[1] * c - current[0] * s
 
 
 def _unwrapped(course: float, near: float) -> float:

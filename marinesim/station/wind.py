@@ -230,7 +230,17 @@ class WindCoefficients:
         """The yaw coefficient C_N at ``gamma`` (rad)."""
         return self(gamma)[2]
 
+    def one(self, gamma: float) -> tuple[float, float, float]:
+        """``(C_X, C_Y, C_N)`` at one angle ``gamma`` (rad, any real value) in plain floats, as the simulation asks
+        at each stage of each step: the same values as ``self(gamma)``."""
+        return self._one(math.pi - (math.pi - gamma) % (2.0 * math.pi))  # Python's % is np.mod's, bit for bit
+
     def _evaluate(self, gamma: np.ndarray) -> np.ndarray:
+        """The coefficients (3,) + gamma's shape at ``gamma`` wrapped to (-pi, pi]."""
+        raise NotImplementedError
+
+    def _one(self, gamma: float) -> tuple[float, float, float]:
+        """:meth:`_evaluate` at one wrapped angle, in plain floats."""
         raise NotImplementedError
 
 
@@ -312,7 +322,7 @@ class BlendermannCoefficients(WindCoefficients):
         self.name = f"Blendermann (1994): {vessel_type}"
 
     def _evaluate(self, gamma: np.ndarray) -> np.ndarray:
-        if gamma.ndim == 0:  # one angle, as the simulation asks each step: the same formulas in plain floats
+        if gamma.ndim == 0:
             return np.array(self._one(float(gamma)))
         row, off = self.row, np.abs(gamma)
         cd_l_af = np.where(off <= math.pi / 2.0, row.cd_l_af_bow, row.cd_l_af_stern)
@@ -324,6 +334,7 @@ class BlendermannCoefficients(WindCoefficients):
         return np.stack([cx, cy, cn])
 
     def _one(self, gamma: float) -> tuple[float, float, float]:
+        """The same formulas in plain floats."""
         row, off = self.row, abs(gamma)
         cd_l_af = row.cd_l_af_bow if off <= math.pi / 2.0 else row.cd_l_af_stern
         cd_l = cd_l_af * self.frontal_area / self.lateral_area
@@ -375,15 +386,17 @@ class TabulatedCoefficients(WindCoefficients):
         self.name = name
 
     def _evaluate(self, gamma: np.ndarray) -> np.ndarray:
+        if gamma.ndim == 0:
+            return np.array(self._one(float(gamma)))
         turn = np.mod(gamma, 2.0 * math.pi)
-        if turn.ndim == 0:  # one angle, as the simulation asks each step: np.interp's arithmetic in plain floats
-            return np.array(self._one(float(turn)))
         return np.stack([np.interp(turn, self.angles, row) for row in self.table])
 
-    def _one(self, turn: float) -> tuple[float, float, float]:
-        """``(C_X, C_Y, C_N)`` at one angle ``turn`` (rad, in [0, 2 pi] or NaN), as np.interp gives them."""
-        if math.isnan(turn):
+    def _one(self, gamma: float) -> tuple[float, float, float]:
+        """``(C_X, C_Y, C_N)`` at one angle ``gamma`` (rad, wrapped, or NaN), as np.interp gives them: np.interp's
+        arithmetic in plain floats."""
+        if math.isnan(gamma):
             return math.nan, math.nan, math.nan
+        turn = gamma % (2.0 * math.pi)
         angles, rows = self._angles, self._rows
         j = bisect.bisect_right(angles, turn) - 1
         if j >= len(angles) - 1 or angles[j] == turn:
@@ -500,7 +513,7 @@ def wind_force(coefficients: WindCoefficients, frontal_area: float, lateral_area
     (:func:`relative_wind`). The areas must be the ones ``coefficients`` were made for."""
     speed, gamma = relative_wind(u, v, psi, wind_speed, wind_from)
     q = 0.5 * rho_air * speed**2
-    cx, cy, cn = coefficients(gamma)
+    cx, cy, cn = coefficients.one(gamma)
     return np.array([q * cx * frontal_area, q * cy * lateral_area, q * cn * lateral_area * length])
 
 
