@@ -14,6 +14,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from marinesim.compiled import compiled
+
 
 def rotation_y(angle: float) -> np.ndarray:
     """Ry (3, 3) for ``angle`` rad about y: a positive angle takes +x towards -z (bow down)."""
@@ -73,46 +75,84 @@ class RotationKinematics:
     derivatives, per time step. ``angles``, ``rates``, ``accelerations``: (T, 3) roll, pitch, yaw
     (rad, rad/s, rad/s^2)."""
 
-    AXES = (2, 1, 0)  # factors of R from the left: yaw about z, pitch about y, roll about x
-
     def __init__(self, angles: np.ndarray, rates: np.ndarray, accelerations: np.ndarray) -> None:
-        self._factors = [(axis, np.cos(angles[:, axis])[:, None], np.sin(angles[:, axis])[:, None],
-                          rates[:, axis, None], accelerations[:, axis, None]) for axis in self.AXES]
+        angles = np.asarray(angles, dtype=float)
+        self._cos = np.column_stack([np.cos(angles[:, axis]) for axis in range(3)])
+        self._sin = np.column_stack([np.sin(angles[:, axis]) for axis in range(3)])
+        self._rates = np.ascontiguousarray(rates, dtype=float)
+        self._accelerations = np.ascontiguousarray(accelerations, dtype=float)
 
     def points(self, p: np.ndarray, xi: np.ndarray, xi_dot: np.ndarray, xi_ddot: np.ndarray
                ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Positions, velocities and accelerations (T, P, 3) of body points ``p`` (P, 3), given the
         translations (T, 3) and their derivatives."""
-        v = np.broadcast_to(np.asarray(p, dtype=float), (xi.shape[0],) + np.shape(p))
-        # d^n/dt^n (A B C) p: the orders of the three factors' time derivatives and their weights
-        first = ((1, 0, 0), (0, 1, 0), (0, 0, 1))
-        second = ((2, 0, 0), (0, 2, 0), (0, 0, 2), (1, 1, 0), (1, 0, 1), (0, 1, 1))
-        position = self._apply((0, 0, 0), v)
-        velocity = sum(self._apply(orders, v) for orders in first)
-        acceleration = sum(self._apply(orders, v) * (1.0 if 2 in orders else 2.0) for orders in second)
-        return xi[:, None] + position, xi_dot[:, None] + velocity, xi_ddot[:, None] + acceleration
-
-    def _apply(self, orders: tuple[int, int, int], v: np.ndarray) -> np.ndarray:
-        """``F1 F2 F3 v`` where each factor is R, dR/dt or d2R/dt2 as ``orders`` says."""
-        for (axis, c, s, rate, acceleration), order in zip(reversed(self._factors), reversed(orders)):
-            if order == 0:
-                v = _turn(axis, 0, c, s, v)
-            elif order == 1:
-                v = _turn(axis, 1, c, s, v) * rate[..., None]
-            else:
-                v = (_turn(axis, 2, c, s, v) * (rate ** 2)[..., None]
-                     + _turn(axis, 1, c, s, v) * acceleration[..., None])
-        return v
+        p = np.ascontiguousarray(p, dtype=float).reshape(-1, 3)
+        out = np.empty((3, self._cos.shape[0], p.shape[0], 3))
+        _points(self._cos, self._sin, self._rates, self._accelerations, p, *(np.ascontiguousarray(x, dtype=float)
+                for x in (xi, xi_dot, xi_ddot)), out)
+        return out[0], out[1], out[2]
 
 
-def _turn(axis: int, order: int, c: np.ndarray, s: np.ndarray, v: np.ndarray) -> np.ndarray:
-    """The ``order``-th derivative with respect to the angle of the rotation about ``axis``
-    (0 x, 1 y, 2 z) with cosine ``c`` and sine ``s``, applied to vectors ``v`` (T, P, 3). The
-    n-th derivative turns the plane by ``angle + n pi/2`` and drops the axis component (n >= 1)."""
-    i, j = ((1, 2), (2, 0), (0, 1))[axis]          # the plane rotated: y-z, z-x, x-y
-    c, s = ((c, s), (-s, c), (-c, -s))[order]      # cos and sin of angle + order pi/2
-    out = np.empty(v.shape)
-    out[..., i] = c * v[..., i] - s * v[..., j]
-    out[..., j] = s * v[..., i] + c * v[..., j]
-    out[..., axis] = v[..., axis] if order == 0 else 0.0
-    return out
+@compiled
+def _turn(axis: int, order: int, c: float, s: float, v: tuple[float, float, float]) -> tuple[float, float, float]:
+    """The ``order``-th derivative with respect to the angle of the rotation about ``axis`` (0 x, 1 y, 2 z) with
+    cosine ``c`` and sine ``s``, applied to the vector ``v``. The n-th derivative turns the plane by
+    ``angle + n pi/2`` and drops the axis component (n >= 1)."""
+    if order == 1:
+        c, s = -s, c
+    elif order == 2:
+        c, s = -c, -s
+    kept = v[axis] if order == 0 else 0.0
+    if axis == 0:    # the y-z plane
+        return kept, c * v[1] - s * v[2], s * v[1] + c * v[2]
+    if axis == 1:    # the z-x plane
+        return s * v[2] + c * v[0], kept, c * v[2] - s * v[0]
+    return c * v[0] - s * v[1], s * v[0] + c * v[1], kept  # the x-y plane
+
+
+@compiled
+def _applied(orders: tuple[int, int, int], c: np.ndarray, s: np.ndarray, rate: np.ndarray,
+             acceleration: np.ndarray, v: tuple[float, float, float]) -> tuple[float, float, float]:
+    """``F1 F2 F3 v`` for ``R = Rz Ry Rx`` at one time, each factor R, dR/dt or d2R/dt2 as ``orders`` (yaw's,
+    pitch's, roll's) says; ``c``, ``s``, ``rate``, ``acceleration`` (3,) per axis (roll, pitch, yaw)."""
+    for axis in range(3):  # roll's factor first: it is the rightmost
+        order = orders[2 - axis]
+        if order == 0:
+            v = _turn(axis, 0, c[axis], s[axis], v)
+        elif order == 1:
+            a = _turn(axis, 1, c[axis], s[axis], v)
+            v = (a[0] * rate[axis], a[1] * rate[axis], a[2] * rate[axis])
+        else:
+            square = rate[axis] * rate[axis]
+            a, b = _turn(axis, 2, c[axis], s[axis], v), _turn(axis, 1, c[axis], s[axis], v)
+            v = (a[0] * square + b[0] * acceleration[axis], a[1] * square + b[1] * acceleration[axis],
+                 a[2] * square + b[2] * acceleration[axis])
+    return v
+
+
+@compiled
+def _points(c: np.ndarray, s: np.ndarray, rates: np.ndarray, accelerations: np.ndarray, p: np.ndarray,
+            xi: np.ndarray, xi_dot: np.ndarray, xi_ddot: np.ndarray, out: np.ndarray) -> None:
+    """Each time's (T) and point's (P) position, velocity and acceleration into ``out`` (3, T, P, 3): d^n/dt^n of
+    ``xi + R p``, R's derivative the sum over its factors' derivatives (the product rule), element by element so
+    that a time's values do not depend on the others asked with it."""
+    first = ((1, 0, 0), (0, 1, 0), (0, 0, 1))
+    second = ((2, 0, 0), (0, 2, 0), (0, 0, 2), (1, 1, 0), (1, 0, 1), (0, 1, 1))
+    for t in range(c.shape[0]):
+        for k in range(p.shape[0]):
+            v = (p[k, 0], p[k, 1], p[k, 2])
+            position = _applied((0, 0, 0), c[t], s[t], rates[t], accelerations[t], v)
+            velocity = (0.0, 0.0, 0.0)
+            for orders in first:
+                a = _applied(orders, c[t], s[t], rates[t], accelerations[t], v)
+                velocity = (velocity[0] + a[0], velocity[1] + a[1], velocity[2] + a[2])
+            acceleration = (0.0, 0.0, 0.0)
+            for orders in second:
+                weight = 1.0 if orders[0] == 2 or orders[1] == 2 or orders[2] == 2 else 2.0
+                a = _applied(orders, c[t], s[t], rates[t], accelerations[t], v)
+                acceleration = (acceleration[0] + a[0] * weight, acceleration[1] + a[1] * weight,
+                                acceleration[2] + a[2] * weight)
+            for i in range(3):
+                out[0, t, k, i] = xi[t, i] + position[i]
+                out[1, t, k, i] = xi_dot[t, i] + velocity[i]
+                out[2, t, k, i] = xi_ddot[t, i] + acceleration[i]
