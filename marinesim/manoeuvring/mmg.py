@@ -29,6 +29,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+import numpy as np
+
+from marinesim.compiled import compiled
 from marinesim.constants import RHO_SEAWATER
 
 
@@ -99,69 +102,94 @@ class Mmg:
         # [[m + m_y, x_G m], [x_G m, I]] (dv/dt, dr/dt) = (Y', N'): its inverse, once
         a, b, c = mass + m_y, self.x_g * mass, inertia
         det = a * c - b * b
-        set_ = object.__setattr__
-        set_(self, "_mass", (mass, m_x, m_y))
-        set_(self, "_inverse", (c / det, -b / det, a / det))
-        set_(self, "_force", 0.5 * rho * lpp * d)
+        derived = {"mass": mass, "mass_x": m_x, "mass_y": m_y, "i11": c / det, "i12": -b / det, "i22": a / det,
+                   "force": 0.5 * rho * lpp * d, "kappa_squared": self.kappa**2,
+                   "kt_astern_0": self.astern_kt[0], "kt_astern_1": self.astern_kt[1]}
+        values = [derived[name] if name in derived else getattr(self, name) for name in _COEFFICIENTS]
+        object.__setattr__(self, "_coefficients", np.array(values, dtype=float))
 
     @property
     def length_m(self) -> float:
         return self.lpp
+
+    @property
+    def coefficients(self) -> np.ndarray:
+        """Her coefficients and what follows from them, in :func:`mmg_accelerations`' order (:data:`_COEFFICIENTS`)."""
+        return self._coefficients
 
     def accelerations(self, u: float, v: float, r: float, p: float, phi: float, delta: float, n: float,
                       more: tuple[float, float, float] = (0.0, 0.0, 0.0)) -> tuple[float, float, float, float]:
         """(du/dt, dv/dt, dr/dt, dp/dt) (m/s^2, rad/s^2) at midship for surge ``u``, sway ``v`` (m/s), yaw rate
         ``r`` (rad/s), rudder ``delta`` (rad) and propeller ``n`` (rev/s), with ``more`` surge and sway force (N) and
         yaw moment (N m) of a model built on this one; roll is not modelled (dp/dt = 0)."""
-        lpp, rho = self.lpp, self.rho
-        mass, m_x, m_y = self._mass
-        speed = math.hypot(u, v)
-        if speed > 1e-9:
-            vv, rr = v / speed, r * lpp / speed
-            beta = math.asin(-vv)  # within +-90 deg: going astern the flow is not a drift of 180 deg
-        else:
-            vv = rr = beta = 0.0
-        q = self._force * speed * speed
-        x_h = q * (-math.copysign(self.r_0, u) + self.x_vv * vv * vv + self.x_vr * vv * rr + self.x_rr * rr * rr
-                   + self.x_vvvv * vv**4)
-        y_h = q * (self.y_v * vv + self.y_r * rr + self.y_vvv * vv**3 + self.y_vvr * vv * vv * rr
-                   + self.y_vrr * vv * rr * rr + self.y_rrr * rr**3)
-        n_h = q * lpp * (self.n_v * vv + self.n_r * rr + self.n_vvv * vv**3 + self.n_vvr * vv * vv * rr
-                         + self.n_vrr * vv * rr * rr + self.n_rrr * rr**3)
-        # propeller: K_T n^2 D^4 = (k_0 n^2 + k_1 n u_P / D + k_2 u_P^2 / D^2) D^4, finite as n goes to 0
-        d_p = self.d_p
-        beta_p = beta - self.x_p * rr
-        c_2 = self.c_2_plus if beta_p > 0.0 else self.c_2_minus
-        u_p = u * (1.0 - self.w_p0) * (1.0 + (1.0 - math.exp(-self.c_1 * abs(beta_p))) * (c_2 - 1.0))
-        ahead = n * n * self.k_0 + n * u_p * self.k_1 / d_p + u_p * u_p * self.k_2 / (d_p * d_p) if n > 0.0 else 0.0
-        if n < 0.0:
-            thrust = -rho * d_p**4 * (n * n * self.astern_kt[0] - n * u * (1.0 - self.w_p0) * self.astern_kt[1] / d_p)
-        else:
-            thrust = rho * d_p**4 * ahead
-        x_p = (1.0 - self.t_p) * thrust
-        # rudder: the inflow sped up by the propeller race (ahead only); 8 K_T / (pi J^2) = 8 K_T n^2 D^2 / (pi u_P^2)
-        eta = d_p / self.h_r
-        if n > 0.0 and u_p > 0.0:
-            race = 1.0 + 8.0 * ahead * d_p * d_p / (math.pi * u_p * u_p)
-            race = 1.0 + self.kappa * (math.sqrt(race) - 1.0) if race > 0.0 else 1.0 - self.kappa
-            u_r = self.epsilon * u_p * math.sqrt(eta * race * race + 1.0 - eta)
-        elif n > 0.0:
-            # at rest or going astern with the propeller ahead: the race alone, momentum theory (J = 0)
-            u_r = self.epsilon * math.sqrt(eta * self.kappa**2 * 8.0 * max(self.k_0, 0.0) / math.pi) * n * d_p
-        else:
-            u_r = self.epsilon * u_p
-        beta_r = beta - self.l_r * rr
-        gamma = self.gamma_r_starboard if beta_r > 0.0 else self.gamma_r_port
-        v_r = speed * gamma * beta_r
-        alpha_r = delta - math.atan2(v_r, u_r) if (u_r or v_r) else delta
-        f_n = 0.5 * rho * self.a_r * (u_r * u_r + v_r * v_r) * self.f_alpha * math.sin(alpha_r)
-        cos_d = math.cos(delta)
-        x_r = -(1.0 - self.t_r) * f_n * math.sin(delta)
-        y_r = -(1.0 + self.a_h) * f_n * cos_d
-        n_r = -(self.x_r + self.a_h * self.x_h) * lpp * f_n * cos_d
-        # motion
-        x = x_h + x_p + x_r + more[0] + (mass + m_y) * v * r + self.x_g * mass * r * r
-        y = y_h + y_r + more[1] - (mass + m_x) * u * r
-        nn = n_h + n_r + more[2] - self.x_g * mass * u * r
-        i11, i12, i22 = self._inverse
-        return x / (mass + m_x), i11 * y + i12 * nn, i12 * y + i22 * nn, 0.0
+        return (*mmg_accelerations(self._coefficients, u, v, r, delta, n, *more), 0.0)
+
+
+_COEFFICIENTS = ("lpp", "rho", "force", "mass", "mass_x", "mass_y", "i11", "i12", "i22", "x_g", "r_0", "x_vv",
+                 "x_vr", "x_rr", "x_vvvv", "y_v", "y_r", "y_vvv", "y_vvr", "y_vrr", "y_rrr", "n_v", "n_r", "n_vvv",
+                 "n_vvr", "n_vrr", "n_rrr", "d_p", "t_p", "w_p0", "k_0", "k_1", "k_2", "x_p", "h_r", "a_r", "t_r",
+                 "a_h", "x_h", "x_r", "gamma_r_port", "gamma_r_starboard", "l_r", "epsilon", "kappa", "kappa_squared",
+                 "f_alpha", "c_1", "c_2_plus", "c_2_minus", "kt_astern_0", "kt_astern_1")
+""":func:`mmg_accelerations`' coefficients in order: :class:`Mmg`'s fields, her masses (kg; ``mass_x``, ``mass_y``
+the added masses), the inverse of her sway-yaw mass matrix (``i11``, ``i12``, ``i22``), ``force`` = (rho/2) L d
+(kg/m), kappa squared and the backing thrust's two coefficients."""
+
+
+@compiled
+def mmg_accelerations(c: np.ndarray, u: float, v: float, r: float, delta: float, n: float, more_x: float,
+                      more_y: float, more_n: float) -> tuple[float, float, float]:
+    """(du/dt, dv/dt, dr/dt) (m/s^2, rad/s^2) at midship of the ship of coefficients ``c``
+    (:attr:`Mmg.coefficients`) for surge ``u``, sway ``v`` (m/s), yaw rate ``r`` (rad/s), rudder ``delta`` (rad)
+    and propeller ``n`` (rev/s), with ``more_x``, ``more_y`` (N) and ``more_n`` (N m) of a model built on hers: the
+    module's formulas, compiled (the same values as in Python to the last bit or two: numba's ``hypot`` is not
+    CPython's)."""
+    (lpp, rho, force, mass, m_x, m_y, i11, i12, i22, x_g, r_0, x_vv, x_vr, x_rr, x_vvvv, y_v, y_r, y_vvv, y_vvr,
+     y_vrr, y_rrr, n_v, n_r, n_vvv, n_vvr, n_vrr, n_rrr, d_p, t_p, w_p0, k_0, k_1, k_2, x_p, h_r, a_r, t_r, a_h,
+     x_h, x_r, gamma_port, gamma_starboard, l_r, epsilon, kappa, kappa_squared, f_alpha, c_1, c_2_plus, c_2_minus,
+     kt_astern_0, kt_astern_1) = c
+    speed = math.hypot(u, v)
+    if speed > 1e-9:
+        vv, rr = v / speed, r * lpp / speed
+        beta = math.asin(-vv)  # within +-90 deg: going astern the flow is not a drift of 180 deg
+    else:
+        vv = rr = beta = 0.0
+    q = force * speed * speed
+    x_h_force = q * (-math.copysign(r_0, u) + x_vv * vv * vv + x_vr * vv * rr + x_rr * rr * rr + x_vvvv * vv**4.0)
+    y_h = q * (y_v * vv + y_r * rr + y_vvv * vv**3.0 + y_vvr * vv * vv * rr + y_vrr * vv * rr * rr + y_rrr * rr**3.0)
+    n_h = q * lpp * (n_v * vv + n_r * rr + n_vvv * vv**3.0 + n_vvr * vv * vv * rr + n_vrr * vv * rr * rr
+                     + n_rrr * rr**3.0)
+    # propeller: K_T n^2 D^4 = (k_0 n^2 + k_1 n u_P / D + k_2 u_P^2 / D^2) D^4, finite as n goes to 0
+    beta_p = beta - x_p * rr
+    c_2 = c_2_plus if beta_p > 0.0 else c_2_minus
+    u_p = u * (1.0 - w_p0) * (1.0 + (1.0 - math.exp(-c_1 * abs(beta_p))) * (c_2 - 1.0))
+    ahead = n * n * k_0 + n * u_p * k_1 / d_p + u_p * u_p * k_2 / (d_p * d_p) if n > 0.0 else 0.0
+    if n < 0.0:
+        thrust = -rho * d_p**4.0 * (n * n * kt_astern_0 - n * u * (1.0 - w_p0) * kt_astern_1 / d_p)
+    else:
+        thrust = rho * d_p**4.0 * ahead
+    x_p_force = (1.0 - t_p) * thrust
+    # rudder: the inflow sped up by the propeller race (ahead only); 8 K_T / (pi J^2) = 8 K_T n^2 D^2 / (pi u_P^2)
+    eta = d_p / h_r
+    if n > 0.0 and u_p > 0.0:
+        race = 1.0 + 8.0 * ahead * d_p * d_p / (math.pi * u_p * u_p)
+        race = 1.0 + kappa * (math.sqrt(race) - 1.0) if race > 0.0 else 1.0 - kappa
+        u_r = epsilon * u_p * math.sqrt(eta * race * race + 1.0 - eta)
+    elif n > 0.0:
+        # at rest or going astern with the propeller ahead: the race alone, momentum theory (J = 0)
+        u_r = epsilon * math.sqrt(eta * kappa_squared * 8.0 * max(k_0, 0.0) / math.pi) * n * d_p
+    else:
+        u_r = epsilon * u_p
+    beta_r = beta - l_r * rr
+    gamma = gamma_starboard if beta_r > 0.0 else gamma_port
+    v_r = speed * gamma * beta_r
+    alpha_r = delta - math.atan2(v_r, u_r) if (u_r != 0.0 or v_r != 0.0) else delta
+    f_n = 0.5 * rho * a_r * (u_r * u_r + v_r * v_r) * f_alpha * math.sin(alpha_r)
+    cos_d = math.cos(delta)
+    x_r_force = -(1.0 - t_r) * f_n * math.sin(delta)
+    y_r_force = -(1.0 + a_h) * f_n * cos_d
+    n_r_force = -(x_r + a_h * x_h) * lpp * f_n * cos_d
+    # motion
+    x = x_h_force + x_p_force + x_r_force + more_x + (mass + m_y) * v * r + x_g * mass * r * r
+    y = y_h + y_r_force + more_y - (mass + m_x) * u * r
+    nn = n_h + n_r_force + more_n - x_g * mass * u * r
+    return x / (mass + m_x), i11 * y + i12 * nn, i12 * y + i22 * nn

@@ -183,7 +183,7 @@ class SlowDrift:
         found = self._last.get(key)
         if found is not None:
             return found
-        h = self._prepared(heading)
+        h = self._prepared_at(key[1])
         x = key[0] / FORCE_STEP
         first = math.floor(x) - 1
         s = x - first - 1.0
@@ -216,7 +216,10 @@ class SlowDrift:
         return int(round(require_finite("heading", heading) / HEADING_STEP)) % round(2.0 * math.pi / HEADING_STEP)
 
     def _prepared(self, heading: float) -> _Heading:
-        key = self._key(heading)
+        return self._prepared_at(self._key(heading))
+
+    def _prepared_at(self, key: int) -> _Heading:
+        """The sums of heading step ``key`` (:meth:`_key`), prepared when first asked (the newest kept)."""
         found = self._cache.get(key)
         if found is not None:
             self._cache.move_to_end(key)
