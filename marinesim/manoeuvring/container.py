@@ -24,6 +24,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+import numpy as np
+
+from marinesim.compiled import compiled
+
 LENGTH_M = 175.0
 RHO = 1025.0
 G = 9.81
@@ -65,7 +69,7 @@ class SonNomotoContainer:
     def __post_init__(self) -> None:
         m22, m32, m42, m33, m44 = M + MY, -MY * LY, MY * ALPHA_Y, IX + JX, IZ + JZ
         det = m22 * m33 * m44 - m32**2 * m44 - m42**2 * m33
-        object.__setattr__(self, "_mass", (m22, m32, m42, m33, m44, det))
+        object.__setattr__(self, "_coefficients", np.array([self.gm_m, *self.astern_kt, m22, m32, m42, m33, m44, det]))
 
     @property
     def length_m(self) -> float:
@@ -75,44 +79,52 @@ class SonNomotoContainer:
                       ) -> tuple[float, float, float, float]:
         """(du/dt, dv/dt, dr/dt, dp/dt) (m/s^2, rad/s^2) for ``u``, ``v`` (m/s), ``r``, ``p`` (rad/s), heel ``phi``,
         rudder ``delta`` (rad) and propeller ``n`` (rev/s)."""
-        L = LENGTH_M
-        speed = max(math.hypot(u, v), MIN_SPEED)
-        u_, v_, r_, p_ = u / speed, v / speed, r * L / speed, p * L / speed
-        w = RHO * G * NABLA / (RHO * L * L * speed * speed / 2.0)
-        gm = self.gm_m / L
-        u_p = u_ * ((1.0 - W_P) + TAU * ((v_ + X_P * r_) ** 2 + C_PV * v_ + C_PR * r_))
-        v_r = GAMMA * v_ + C_RR * r_ + C_RRRR * r_**3 + C_RRRV * r_ * r_ * v_
-        thrust_scale = 2.0 * D_P**4 / (speed * speed * L * L)
-        if n > 0.0:
-            # K_T n^2 = 0.527 n^2 - 0.455 n u_P U / D (J = u_P U / (n D)): finite as n goes to 0
-            kt_n2 = 0.527 * n * n - 0.455 * n * u_p * speed / D_P
-            thrust = thrust_scale * kt_n2
-            # u_R = epsilon u_P sqrt(1 + 8 k K_T / (pi J^2)) = epsilon sqrt(u_P^2 + 8 k K_T n^2 D^2 / (pi U^2))
-            u_r = EPSILON * math.sqrt(max(u_p * u_p + 8.0 * KK * kt_n2 * D_P * D_P / (math.pi * speed * speed), 0.0))
-            u_r = -u_r if u_p < 0.0 else u_r
-        elif n < 0.0:
-            thrust = -thrust_scale * (n * n * self.astern_kt[0] - n * u_p * speed * self.astern_kt[1] / D_P)
-            u_r = u_p * EPSILON
-        else:
-            thrust, u_r = 0.0, u_p * EPSILON
-        # MSS's atan(v_R / u_R), taken round the circle: a flow from aft (going astern) reverses the rudder's force
-        alpha_r = delta + math.atan2(v_r, u_r)
-        f_n = -((6.13 * ASPECT) / (ASPECT + 2.25)) * (A_R / L**2) * (u_r * u_r + v_r * v_r) * math.sin(alpha_r)
-        cos_d = math.cos(delta)
-        x = (XUU * u_ * abs(u_) + (1.0 - T_P) * thrust + XVR * v_ * r_ + XVV * v_ * v_ + XRR * r_ * r_
-             + XPHIPHI * phi * phi + C_RX * f_n * math.sin(delta) + (M + MY) * v_ * r_)
-        y = (YV * v_ + YR * r_ + YP * p_ + YPHI * phi + YVVV * v_**3 + YRRR * r_**3 + YVVR * v_ * v_ * r_
-             + YVRR * v_ * r_ * r_ + YVVPHI * v_ * v_ * phi + YVPHIPHI * v_ * phi * phi + YRRPHI * r_ * r_ * phi
-             + YRPHIPHI * r_ * phi * phi + (1.0 + A_H) * f_n * cos_d - (M + MX) * u_ * r_)
-        k = (KV * v_ + KR * r_ + KP * p_ + KPHI * phi + KVVV * v_**3 + KRRR * r_**3 + KVVR * v_ * v_ * r_
-             + KVRR * v_ * r_ * r_ + KVVPHI * v_ * v_ * phi + KVPHIPHI * v_ * phi * phi + KRRPHI * r_ * r_ * phi
-             + KRPHIPHI * r_ * phi * phi - (1.0 + A_H) * Z_R * f_n * cos_d + MX * LX * u_ * r_ - w * gm * phi)
-        nn = (NV * v_ + NR * r_ + NP * p_ + NPHI * phi + NVVV * v_**3 + NRRR * r_**3 + NVVR * v_ * v_ * r_
-              + NVRR * v_ * r_ * r_ + NVVPHI * v_ * v_ * phi + NVPHIPHI * v_ * phi * phi + NRRPHI * r_ * r_ * phi
-              + NRPHIPHI * r_ * phi * phi + (X_R + A_H * X_H) * f_n * cos_d)
-        m22, m32, m42, m33, m44, det = self._mass
-        a = speed * speed / L
-        return (x * a / (M + MX),
-                -((-m33 * m44 * y + m32 * m44 * k + m42 * m33 * nn) / det) * a,
-                ((-m42 * m33 * y + m32 * m42 * k + nn * m22 * m33 - nn * m32**2) / det) * a / L,
-                ((-m32 * m44 * y + k * m22 * m44 - k * m42**2 + m32 * m42 * nn) / det) * a / L)
+        return _accelerations(self._coefficients, u, v, r, p, phi, delta, n)
+
+
+@compiled
+def _accelerations(c: np.ndarray, u: float, v: float, r: float, p: float, phi: float, delta: float, n: float
+                   ) -> tuple[float, float, float, float]:
+    """:meth:`SonNomotoContainer.accelerations` of the vessel of ``c`` (her metacentric height (m), the backing
+    thrust's two coefficients, the mass matrix's five terms and its determinant), compiled."""
+    gm_m, astern_0, astern_1, m22, m32, m42, m33, m44, det = c
+    L = LENGTH_M
+    speed = max(math.hypot(u, v), MIN_SPEED)
+    u_, v_, r_, p_ = u / speed, v / speed, r * L / speed, p * L / speed
+    w = RHO * G * NABLA / (RHO * L * L * speed * speed / 2.0)
+    gm = gm_m / L
+    u_p = u_ * ((1.0 - W_P) + TAU * ((v_ + X_P * r_) ** 2 + C_PV * v_ + C_PR * r_))
+    v_r = GAMMA * v_ + C_RR * r_ + C_RRRR * r_**3 + C_RRRV * r_ * r_ * v_
+    thrust_scale = 2.0 * D_P**4 / (speed * speed * L * L)
+    if n > 0.0:
+        # K_T n^2 = 0.527 n^2 - 0.455 n u_P U / D (J = u_P U / (n D)): finite as n goes to 0
+        kt_n2 = 0.527 * n * n - 0.455 * n * u_p * speed / D_P
+        thrust = thrust_scale * kt_n2
+        # u_R = epsilon u_P sqrt(1 + 8 k K_T / (pi J^2)) = epsilon sqrt(u_P^2 + 8 k K_T n^2 D^2 / (pi U^2))
+        u_r = EPSILON * math.sqrt(max(u_p * u_p + 8.0 * KK * kt_n2 * D_P * D_P / (math.pi * speed * speed), 0.0))
+        u_r = -u_r if u_p < 0.0 else u_r
+    elif n < 0.0:
+        thrust = -thrust_scale * (n * n * astern_0 - n * u_p * speed * astern_1 / D_P)
+        u_r = u_p * EPSILON
+    else:
+        thrust, u_r = 0.0, u_p * EPSILON
+    # MSS's atan(v_R / u_R), taken round the circle: a flow from aft (going astern) reverses the rudder's force
+    alpha_r = delta + math.atan2(v_r, u_r)
+    f_n = -((6.13 * ASPECT) / (ASPECT + 2.25)) * (A_R / L**2) * (u_r * u_r + v_r * v_r) * math.sin(alpha_r)
+    cos_d = math.cos(delta)
+    x = (XUU * u_ * abs(u_) + (1.0 - T_P) * thrust + XVR * v_ * r_ + XVV * v_ * v_ + XRR * r_ * r_
+         + XPHIPHI * phi * phi + C_RX * f_n * math.sin(delta) + (M + MY) * v_ * r_)
+    y = (YV * v_ + YR * r_ + YP * p_ + YPHI * phi + YVVV * v_**3 + YRRR * r_**3 + YVVR * v_ * v_ * r_
+         + YVRR * v_ * r_ * r_ + YVVPHI * v_ * v_ * phi + YVPHIPHI * v_ * phi * phi + YRRPHI * r_ * r_ * phi
+         + YRPHIPHI * r_ * phi * phi + (1.0 + A_H) * f_n * cos_d - (M + MX) * u_ * r_)
+    k = (KV * v_ + KR * r_ + KP * p_ + KPHI * phi + KVVV * v_**3 + KRRR * r_**3 + KVVR * v_ * v_ * r_
+         + KVRR * v_ * r_ * r_ + KVVPHI * v_ * v_ * phi + KVPHIPHI * v_ * phi * phi + KRRPHI * r_ * r_ * phi
+         + KRPHIPHI * r_ * phi * phi - (1.0 + A_H) * Z_R * f_n * cos_d + MX * LX * u_ * r_ - w * gm * phi)
+    nn = (NV * v_ + NR * r_ + NP * p_ + NPHI * phi + NVVV * v_**3 + NRRR * r_**3 + NVVR * v_ * v_ * r_
+          + NVRR * v_ * r_ * r_ + NVVPHI * v_ * v_ * phi + NVPHIPHI * v_ * phi * phi + NRRPHI * r_ * r_ * phi
+          + NRPHIPHI * r_ * phi * phi + (X_R + A_H * X_H) * f_n * cos_d)
+    a = speed * speed / L
+    return (x * a / (M + MX),
+            -((-m33 * m44 * y + m32 * m44 * k + m42 * m33 * nn) / det) * a,
+            ((-m42 * m33 * y + m32 * m42 * k + nn * m22 * m33 - nn * m32**2) / det) * a / L,
+            ((-m32 * m44 * y + k * m22 * m44 - k * m42**2 + m32 * m42 * nn) / det) * a / L)
