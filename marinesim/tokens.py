@@ -1,15 +1,49 @@
 """Whitespace-separated numbers read with their line numbers, for the text file readers (RAO tables, panel meshes).
 
-Every failure raises :class:`FileFormatError` naming the file, the line and what was expected.
+Every failure raises :class:`FileFormatError` naming the file, the line and what was expected. A reader wrapped in
+:func:`by_content` parses a file once per process while its bytes stay the same.
 """
 
 from __future__ import annotations
 
+import copy
+import functools
+import hashlib
 import math
+import threading
+from collections.abc import Callable
 from pathlib import Path
+from typing import TypeVar
 
 from marinesim.errors import FileFormatError
 from marinesim.formats import check_file
+from marinesim.recent import Newest
+
+T = TypeVar("T")
+PARSED_KEPT = 8
+"""How many parsed files each reader wrapped in :func:`by_content` keeps, the newest asked."""
+
+
+def by_content(read: Callable[..., T]) -> Callable[..., T]:
+    """``read(path, ...)`` kept per process by the file's place and bytes and the other arguments (the newest
+    :data:`PARSED_KEPT`): a session, a study or a test suite that loads a vessel again parses her files once. Each
+    call gets its own copy; a file that fails is read again, and its error raised again, each time."""
+    kept: Newest[tuple, T] = Newest(PARSED_KEPT)
+    lock = threading.Lock()
+
+    @functools.wraps(read)
+    def reader(path: str | Path, *args, **kwargs) -> T:
+        path = Path(path)
+        check_file(path)
+        try:
+            digest = hashlib.sha256(path.read_bytes()).digest()
+        except OSError:
+            return read(path, *args, **kwargs)  # its own error, with its words
+        key = (str(path.resolve()), digest, args, tuple(sorted(kwargs.items())))
+        with lock:
+            value = kept.get(key, lambda: read(path, *args, **kwargs))
+        return copy.deepcopy(value)
+    return reader
 
 
 def read_text(path: Path) -> str:

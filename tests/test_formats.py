@@ -273,3 +273,40 @@ def test_a_scenario_file_over_its_limit_is_refused_by_the_loader(tmp_path):
         file.truncate(2 * formats.SIZE_LIMITS["scenario file"])
     with pytest.raises(MarinesimError, match="one scenario file may have"):
         load_scenario(path)
+
+
+def test_a_file_read_again_gives_its_own_copy_and_a_changed_file_is_read_anew(tmp_path):
+    """A VERES file read twice (parsed once, :func:`~marinesim.tokens.by_content`) gives equal tables, each the
+    caller's own (changing one leaves the next read alone); the same bytes at another path name that path;
+    rewritten in place with the same size and time stamp, it is read anew (a heave RAO changed in the file changes
+    only heave in the table); made unreadable, it is refused each time. What would be wrong: a vessel moving with
+    the RAOs of a file that has since changed, or one caller's edit showing in another's table."""
+    path = tmp_path / "s175.re1"
+    shutil.copyfile(S175, path)
+    first, second = read_rao(path), read_rao(path)
+    assert np.array_equal(first.values, second.values) and first.values is not second.values
+    first.values[...] = 0.0
+    assert np.array_equal(read_rao(path).values, second.values)
+    elsewhere = tmp_path / "copy.re1"
+    shutil.copyfile(S175, elsewhere)
+    assert read_rao(elsewhere).source == str(elsewhere) and read_rao(path).source == str(path)
+
+    lines = path.read_bytes().splitlines(keepends=True)
+    stamp = os.stat(path).st_mtime_ns
+    heave = next(i for i, line in enumerate(lines) if line.split()[:1] == [b"3"] and len(line.split()) == 3)
+    real = lines[heave].split()[1]
+    doubled = f"{2.0 * float(real):.8E}".encode()
+    assert len(doubled) == len(real)
+    before = read_rao(path)
+    lines[heave] = lines[heave].replace(real, doubled, 1)  # the first heave RAO's real part doubled, in place
+    path.write_bytes(b"".join(lines))
+    os.utime(path, ns=(stamp, stamp))
+    assert os.path.getsize(path) == os.path.getsize(elsewhere)
+    after = read_rao(path)
+    changed = np.argwhere(after.values != before.values)
+    assert changed.size and set(changed[:, -1]) == {2}, "the changed file was not read again, or read wrong"
+
+    path.write_bytes(b"\xff\xfe not a VERES file")
+    for _ in range(2):
+        with pytest.raises(FileFormatError):
+            read_rao(path)

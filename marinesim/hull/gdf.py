@@ -21,7 +21,7 @@ import numpy as np
 from marinesim.errors import FileFormatError
 from marinesim.hull.trimesh_held import trimesh
 from marinesim.hull.wamit_pot import placement
-from marinesim.tokens import Tokens, parse_float, parse_int, read_text
+from marinesim.tokens import Tokens, by_content, parse_float, parse_int, read_text
 
 
 @dataclass(frozen=True)
@@ -38,6 +38,7 @@ def read_gdf_header(path: str | Path) -> GdfHeader:
     return _header(path, read_text(path).splitlines())
 
 
+@by_content
 def read_gdf(path: str | Path) -> tuple[GdfHeader, np.ndarray, np.ndarray]:
     """The header, vertices ``(n, 3)`` and triangles ``(m, 3)`` of the whole (mirrored) surface."""
     path = Path(path)

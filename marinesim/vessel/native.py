@@ -37,7 +37,7 @@ from marinesim.atomic import atomic_path
 from marinesim.constants import KNOT
 from marinesim.errors import FileFormatError, ParameterError
 from marinesim.vessel.rao import DOFS, ROTATIONS, RaoTable, make_table
-from marinesim.tokens import parse_float, read_text
+from marinesim.tokens import by_content, parse_float, read_text
 
 FREQUENCY_COLUMNS = {"omega_rad_s": lambda v: v, "freq_hz": lambda v: 2.0 * math.pi * v,
                      "period_s": lambda v: 2.0 * math.pi / v}
@@ -51,6 +51,7 @@ def sniff(head: bytes) -> bool:
                for line in head.decode("utf-8", errors="replace").splitlines())
 
 
+@by_content
 def read_native(path: str | Path) -> RaoTable:
     """Read a native RAO table (format in the module docstring)."""
     path = Path(path)

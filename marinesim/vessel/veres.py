@@ -32,7 +32,7 @@ import numpy as np
 
 from marinesim.errors import FileFormatError, ParameterError
 from marinesim.vessel.rao import RaoTable, make_table
-from marinesim.tokens import Tokens, read_text
+from marinesim.tokens import Tokens, by_content, read_text
 
 TITLE_LINES = 6
 MAGIC = "MOTION TRANSFER FUNCTIONS"
@@ -43,6 +43,7 @@ def sniff(head: bytes) -> bool:
     return MAGIC in head.decode("utf-8", errors="replace").upper()
 
 
+@by_content
 def read_veres(path: str | Path) -> RaoTable:
     """Read a VERES ``.re1`` file (all speeds, headings and frequencies it holds)."""
     path = Path(path)

@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 
 from marinesim.errors import FileFormatError
-from marinesim.tokens import parse_float, parse_int, read_text
+from marinesim.tokens import by_content, parse_float, parse_int, read_text
 
 COLUMNS = "PER BETA I MOD PHA RE IM"
 RIGID_MODES = 6
@@ -35,6 +35,7 @@ def next_period(path: Path, number: int, token: str, per: float, periods: list[f
     return True
 
 
+@by_content
 def read_rows(path: Path, *, header_lines: int = 0, what: str = "mode", offset: int = 0) -> tuple[
         np.ndarray, np.ndarray, np.ndarray, list[str]]:
     """Periods (file order, monotonic), headings (deg, increasing), values (heading, period, 6) and notes
