@@ -23,7 +23,7 @@ import numpy as np
 from marinesim.constants import RHO_SEAWATER
 from marinesim.errors import FileFormatError, ParameterError, require_positive
 from marinesim.formats import check_file
-from marinesim.tokens import parse_float, parse_int, read_text
+from marinesim.tokens import by_content, parse_float, parse_int, read_text
 from marinesim.vessel.drift import DriftTable, make_drift_table
 from marinesim.vessel.wamit import Settings, frc_rho
 from marinesim.vessel.wamit_rows import check_modulus, next_period
@@ -76,6 +76,7 @@ def read_drift(path: Path, ulen: float | None = None, rho: float | None = None, 
                                           f"{', '.join(f'{h:g}' for h in headings)} deg)") from None
 
 
+@by_content
 def _read_rows(path: Path, header_lines: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, list[str]]:
     """Periods (file order, monotonic), headings (deg, increasing), nondimensional values (period, heading, 3:
     modes 1, 2, 6) and notes of the eight-column file ``path``."""
