@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from marinesim.compiled import compiled
+from marinesim.errors import ParameterError
 
 
 def rotation_y(angle: float) -> np.ndarray:
@@ -81,18 +82,23 @@ class RotationKinematics:
         self._sin = np.column_stack([np.sin(angles[:, axis]) for axis in range(3)])
         self._rates = np.ascontiguousarray(rates, dtype=float)
         self._accelerations = np.ascontiguousarray(accelerations, dtype=float)
+        if not self._rates.shape == self._accelerations.shape == angles.shape[:1] + (3,):
+            raise ParameterError(f"angles, rates and accelerations must be (T, 3) alike, got {angles.shape}, "
+                                 f"{self._rates.shape} and {self._accelerations.shape}")
 
     def points(self, p: np.ndarray, xi: np.ndarray, xi_dot: np.ndarray, xi_ddot: np.ndarray
                ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Positions, velocities and accelerations (T, P, 3) of body points ``p`` (P, 3), given the
         translations (T, 3) and their derivatives."""
-        p = np.ascontiguousarray(p, dtype=float).reshape(-1, 3)
-        out = np.empty((3, self._cos.shape[0], p.shape[0], 3))
-        _points(self._cos, self._sin, self._rates, self._accelerations, p, *(np.ascontiguousarray(x, dtype=float)
-                for x in (xi, xi_dot, xi_ddot)), out)
-        return out[0], out[1], out[2]
-
-
+        p = np.ascontiguousarray(p, dtype=float)
+        translations = [np.ascontiguousarray(x, dtype=float) for x in (xi, xi_dot, xi_ddot)]
+        steps = self._cos.shape[0]
+        if p.ndim != 2 or p.shape[1] != 3 or any(x.shape != (steps, 3) for x in translations):
+            raise ParameterError(f"points must be (P, 3) and the translations ({steps}, 3), got {p.shape} and "
+                                 f"{', '.join(str(x.shape) for x in translations)}")
+        out = tuple(np.empty((steps, p.shape[0], 3)) for _ in range(3))
+        _points(self._cos, self._sin, self._rates, self._accelerations, p, *translations, *out)
+        return out
 @compiled
 def _turn(axis: int, order: int, c: float, s: float, v: tuple[float, float, float]) -> tuple[float, float, float]:
     """The ``order``-th derivative with respect to the angle of the rotation about ``axis`` (0 x, 1 y, 2 z) with
@@ -132,8 +138,9 @@ def _applied(orders: tuple[int, int, int], c: np.ndarray, s: np.ndarray, rate: n
 
 @compiled
 def _points(c: np.ndarray, s: np.ndarray, rates: np.ndarray, accelerations: np.ndarray, p: np.ndarray,
-            xi: np.ndarray, xi_dot: np.ndarray, xi_ddot: np.ndarray, out: np.ndarray) -> None:
-    """Each time's (T) and point's (P) position, velocity and acceleration into ``out`` (3, T, P, 3): d^n/dt^n of
+            xi: np.ndarray, xi_dot: np.ndarray, xi_ddot: np.ndarray, position_out: np.ndarray,
+            velocity_out: np.ndarray, acceleration_out: np.ndarray) -> None:
+    """Each time's (T) and point's (P) position, velocity and acceleration into the three (T, P, 3): d^n/dt^n of
     ``xi + R p``, R's derivative the sum over its factors' derivatives (the product rule), element by element so
     that a time's values do not depend on the others asked with it."""
     first = ((1, 0, 0), (0, 1, 0), (0, 0, 1))
@@ -153,6 +160,6 @@ def _points(c: np.ndarray, s: np.ndarray, rates: np.ndarray, accelerations: np.n
                 acceleration = (acceleration[0] + a[0] * weight, acceleration[1] + a[1] * weight,
                                 acceleration[2] + a[2] * weight)
             for i in range(3):
-                out[0, t, k, i] = xi[t, i] + position[i]
-                out[1, t, k, i] = xi_dot[t, i] + velocity[i]
-                out[2, t, k, i] = xi_ddot[t, i] + acceleration[i]
+                position_out[t, k, i] = xi[t, i] + position[i]
+                velocity_out[t, k, i] = xi_dot[t, i] + velocity[i]
+                acceleration_out[t, k, i] = xi_ddot[t, i] + acceleration[i]

@@ -25,9 +25,10 @@ PARSED_KEPT = 8
 
 
 def by_content(read: Callable[..., T]) -> Callable[..., T]:
-    """``read(path, ...)`` kept per process by the file's place and bytes and the other arguments (the newest
-    :data:`PARSED_KEPT`): a session, a study or a test suite that loads a vessel again parses her files once. Each
-    call gets its own copy; a file that fails is read again, and its error raised again, each time."""
+    """``read(path, ...)`` kept per process by the path as given, the file's bytes and the other arguments (the
+    newest :data:`PARSED_KEPT`): a session, a study or a test suite that loads a vessel again parses her files once.
+    Each call gets its own copy; a file that fails is read again, and its error raised again, each time; a file that
+    changes while it is parsed is not kept."""
     kept: Newest[tuple, T] = Newest(PARSED_KEPT)
     lock = threading.Lock()
 
@@ -35,15 +36,29 @@ def by_content(read: Callable[..., T]) -> Callable[..., T]:
     def reader(path: str | Path, *args, **kwargs) -> T:
         path = Path(path)
         check_file(path)
-        try:
-            digest = hashlib.sha256(path.read_bytes()).digest()
-        except OSError:
+        digest = _digest(path)
+        if digest is None:
             return read(path, *args, **kwargs)  # its own error, with its words
-        key = (str(path.resolve()), digest, args, tuple(sorted(kwargs.items())))
+        key = (str(path), digest, args, tuple(sorted(kwargs.items())))
         with lock:
-            value = kept.get(key, lambda: read(path, *args, **kwargs))
+            found = key in kept
+            if found:
+                value = kept.get(key, lambda: None)
+        if not found:
+            value = read(path, *args, **kwargs)
+            if _digest(path) == digest:
+                with lock:
+                    kept.get(key, lambda: value)
         return copy.deepcopy(value)
     return reader
+
+
+def _digest(path: Path) -> bytes | None:
+    """The SHA-256 of the file's bytes; None if it cannot be read."""
+    try:
+        return hashlib.sha256(path.read_bytes()).digest()
+    except OSError:
+        return None
 
 
 def read_text(path: Path) -> str:

@@ -277,10 +277,10 @@ def test_a_scenario_file_over_its_limit_is_refused_by_the_loader(tmp_path):
 
 def test_a_file_read_again_gives_its_own_copy_and_a_changed_file_is_read_anew(tmp_path):
     """A VERES file read twice (parsed once, :func:`~marinesim.tokens.by_content`) gives equal tables, each the
-    caller's own (changing one leaves the next read alone); the same bytes at another path name that path;
-    rewritten in place with the same size and time stamp, it is read anew (a heave RAO changed in the file changes
-    only heave in the table); made unreadable, it is refused each time. What would be wrong: a vessel moving with
-    the RAOs of a file that has since changed, or one caller's edit showing in another's table."""
+    caller's own (changing one leaves the next read alone); the same bytes at another path, or through a link, name
+    that path; rewritten in place with the same size and time stamp, it is read anew (a heave RAO changed in the
+    file changes only heave in the table); made unreadable, it is refused each time. What would be wrong: a vessel
+    moving with the RAOs of a file that has since changed, or one caller's edit showing in another's table."""
     path = tmp_path / "s175.re1"
     shutil.copyfile(S175, path)
     first, second = read_rao(path), read_rao(path)
@@ -290,6 +290,9 @@ def test_a_file_read_again_gives_its_own_copy_and_a_changed_file_is_read_anew(tm
     elsewhere = tmp_path / "copy.re1"
     shutil.copyfile(S175, elsewhere)
     assert read_rao(elsewhere).source == str(elsewhere) and read_rao(path).source == str(path)
+    link = tmp_path / "link.re1"
+    link.symlink_to(path)
+    assert read_rao(link).source == str(link) and read_rao(path).source == str(path), "each spelling its own name"
 
     lines = path.read_bytes().splitlines(keepends=True)
     stamp = os.stat(path).st_mtime_ns

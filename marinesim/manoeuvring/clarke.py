@@ -34,7 +34,7 @@ import numpy as np
 
 from marinesim.constants import RHO_SEAWATER
 from marinesim.compiled import compiled
-from marinesim.manoeuvring.mmg import Mmg, mmg_accelerations
+from marinesim.manoeuvring.mmg import Mmg
 
 HOERNER = (np.array([0.0109, 0.1766, 0.3530, 0.4519, 0.4728, 0.4929, 0.4933, 0.5585, 0.6464, 0.8336, 0.9880, 1.3081,
                      1.6392, 1.8600, 2.3129, 2.6000, 3.0088, 3.4508, 3.7379, 4.0031]),
@@ -98,7 +98,9 @@ class Clarke:
         wetted = 1.7 * l * t + cb * l * b
         set_ = object.__setattr__
         set_(self, "_mmg", mmg)
-        set_(self, "_strips", np.column_stack([0.5 * l * points, 0.5 * l * weights]))
+        strips = np.column_stack([0.5 * l * points, 0.5 * l * weights])
+        strips.flags.writeable = False
+        set_(self, "_strips", strips)
         set_(self, "_cross", 0.5 * self.rho * t * hoerner(b, t))
         set_(self, "_resistance", (0.5 * self.rho * wetted * (1.0 + 0.1 + 0.4 * cb), l / KINEMATIC_VISCOSITY))
 
@@ -113,8 +115,8 @@ class Clarke:
     def accelerations(self, u: float, v: float, r: float, p: float, phi: float, delta: float, n: float
                       ) -> tuple[float, float, float, float]:
         """(du/dt, dv/dt, dr/dt, 0) (m/s^2, rad/s^2) at midship (see the module)."""
-        return (*_accelerations(self._mmg.coefficients, self._strips, self._cross, *self._resistance, u, v, r, delta,
-                                n), 0.0)
+        return self._mmg.accelerations(u, v, r, p, phi, delta, n, _hull(self._strips, self._cross, *self._resistance,
+                                                                        u, v, r))
 
 
 @compiled
@@ -122,14 +124,14 @@ def _ittc(scale: float, re_per_speed: float, u: float) -> float:
     """The ITTC 1957 line's resistance (N) at surge ``u`` (m/s): ``scale`` (rho/2) S_w (1 + k) (kg/m), the Reynolds
     number ``re_per_speed`` u (no less than 1e5)."""
     re = max(abs(u) * re_per_speed, 1e5)
-    return scale * 0.075 / (math.log10(re) - 2.0) ** 2 * u * abs(u)
+    return scale * 0.075 / (math.log10(re) - 2.0) ** 2.0 * u * abs(u)
 
 
 @compiled
-def _accelerations(mmg: np.ndarray, strips: np.ndarray, cross: float, scale: float, re_per_speed: float, u: float,
-                   v: float, r: float, delta: float, n: float) -> tuple[float, float, float]:
-    """(du/dt, dv/dt, dr/dt): the MMG frame's (coefficients ``mmg``) with the cross-flow drag summed over the
-    ``strips`` ((k, 2): each point's x (m) and weight (m)), ``cross`` (rho/2) T C_D (kg/m^2), and the resistance."""
+def _hull(strips: np.ndarray, cross: float, scale: float, re_per_speed: float, u: float, v: float, r: float
+          ) -> tuple[float, float, float]:
+    """What this model adds to the MMG frame's forces: (X N, Y N, N N m), the resistance and the cross-flow drag
+    summed over the ``strips`` ((k, 2): each point's x (m) and weight (m)), ``cross`` (rho/2) T C_D (kg/m^2)."""
     y = nn = 0.0
     for k in range(strips.shape[0]):
         x, weight = strips[k, 0], strips[k, 1]
@@ -137,4 +139,4 @@ def _accelerations(mmg: np.ndarray, strips: np.ndarray, cross: float, scale: flo
         drag = -cross * abs(w) * w * weight
         y += drag
         nn += x * drag
-    return mmg_accelerations(mmg, u, v, r, delta, n, -_ittc(scale, re_per_speed, u), y, nn)
+    return -_ittc(scale, re_per_speed, u), y, nn

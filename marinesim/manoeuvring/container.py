@@ -69,7 +69,9 @@ class SonNomotoContainer:
     def __post_init__(self) -> None:
         m22, m32, m42, m33, m44 = M + MY, -MY * LY, MY * ALPHA_Y, IX + JX, IZ + JZ
         det = m22 * m33 * m44 - m32**2 * m44 - m42**2 * m33
-        object.__setattr__(self, "_coefficients", np.array([self.gm_m, *self.astern_kt, m22, m32, m42, m33, m44, det]))
+        coefficients = np.array([self.gm_m, *self.astern_kt, m22, m32, m42, m33, m44, det])
+        coefficients.flags.writeable = False
+        object.__setattr__(self, "_coefficients", coefficients)
 
     @property
     def length_m(self) -> float:
@@ -93,9 +95,9 @@ def _accelerations(c: np.ndarray, u: float, v: float, r: float, p: float, phi: f
     u_, v_, r_, p_ = u / speed, v / speed, r * L / speed, p * L / speed
     w = RHO * G * NABLA / (RHO * L * L * speed * speed / 2.0)
     gm = gm_m / L
-    u_p = u_ * ((1.0 - W_P) + TAU * ((v_ + X_P * r_) ** 2 + C_PV * v_ + C_PR * r_))
-    v_r = GAMMA * v_ + C_RR * r_ + C_RRRR * r_**3 + C_RRRV * r_ * r_ * v_
-    thrust_scale = 2.0 * D_P**4 / (speed * speed * L * L)
+    u_p = u_ * ((1.0 - W_P) + TAU * ((v_ + X_P * r_) ** 2.0 + C_PV * v_ + C_PR * r_))
+    v_r = GAMMA * v_ + C_RR * r_ + C_RRRR * r_**3.0 + C_RRRV * r_ * r_ * v_
+    thrust_scale = 2.0 * D_P**4.0 / (speed * speed * L * L)
     if n > 0.0:
         # K_T n^2 = 0.527 n^2 - 0.455 n u_P U / D (J = u_P U / (n D)): finite as n goes to 0
         kt_n2 = 0.527 * n * n - 0.455 * n * u_p * speed / D_P
@@ -110,21 +112,21 @@ def _accelerations(c: np.ndarray, u: float, v: float, r: float, p: float, phi: f
         thrust, u_r = 0.0, u_p * EPSILON
     # MSS's atan(v_R / u_R), taken round the circle: a flow from aft (going astern) reverses the rudder's force
     alpha_r = delta + math.atan2(v_r, u_r)
-    f_n = -((6.13 * ASPECT) / (ASPECT + 2.25)) * (A_R / L**2) * (u_r * u_r + v_r * v_r) * math.sin(alpha_r)
+    f_n = -((6.13 * ASPECT) / (ASPECT + 2.25)) * (A_R / L**2.0) * (u_r * u_r + v_r * v_r) * math.sin(alpha_r)
     cos_d = math.cos(delta)
     x = (XUU * u_ * abs(u_) + (1.0 - T_P) * thrust + XVR * v_ * r_ + XVV * v_ * v_ + XRR * r_ * r_
          + XPHIPHI * phi * phi + C_RX * f_n * math.sin(delta) + (M + MY) * v_ * r_)
-    y = (YV * v_ + YR * r_ + YP * p_ + YPHI * phi + YVVV * v_**3 + YRRR * r_**3 + YVVR * v_ * v_ * r_
+    y = (YV * v_ + YR * r_ + YP * p_ + YPHI * phi + YVVV * v_**3.0 + YRRR * r_**3.0 + YVVR * v_ * v_ * r_
          + YVRR * v_ * r_ * r_ + YVVPHI * v_ * v_ * phi + YVPHIPHI * v_ * phi * phi + YRRPHI * r_ * r_ * phi
          + YRPHIPHI * r_ * phi * phi + (1.0 + A_H) * f_n * cos_d - (M + MX) * u_ * r_)
-    k = (KV * v_ + KR * r_ + KP * p_ + KPHI * phi + KVVV * v_**3 + KRRR * r_**3 + KVVR * v_ * v_ * r_
+    k = (KV * v_ + KR * r_ + KP * p_ + KPHI * phi + KVVV * v_**3.0 + KRRR * r_**3.0 + KVVR * v_ * v_ * r_
          + KVRR * v_ * r_ * r_ + KVVPHI * v_ * v_ * phi + KVPHIPHI * v_ * phi * phi + KRRPHI * r_ * r_ * phi
          + KRPHIPHI * r_ * phi * phi - (1.0 + A_H) * Z_R * f_n * cos_d + MX * LX * u_ * r_ - w * gm * phi)
-    nn = (NV * v_ + NR * r_ + NP * p_ + NPHI * phi + NVVV * v_**3 + NRRR * r_**3 + NVVR * v_ * v_ * r_
+    nn = (NV * v_ + NR * r_ + NP * p_ + NPHI * phi + NVVV * v_**3.0 + NRRR * r_**3.0 + NVVR * v_ * v_ * r_
           + NVRR * v_ * r_ * r_ + NVVPHI * v_ * v_ * phi + NVPHIPHI * v_ * phi * phi + NRRPHI * r_ * r_ * phi
           + NRPHIPHI * r_ * phi * phi + (X_R + A_H * X_H) * f_n * cos_d)
     a = speed * speed / L
     return (x * a / (M + MX),
             -((-m33 * m44 * y + m32 * m44 * k + m42 * m33 * nn) / det) * a,
-            ((-m42 * m33 * y + m32 * m42 * k + nn * m22 * m33 - nn * m32**2) / det) * a / L,
-            ((-m32 * m44 * y + k * m22 * m44 - k * m42**2 + m32 * m42 * nn) / det) * a / L)
+            ((-m42 * m33 * y + m32 * m42 * k + nn * m22 * m33 - nn * m32**2.0) / det) * a / L,
+            ((-m32 * m44 * y + k * m22 * m44 - k * m42**2.0 + m32 * m42 * nn) / det) * a / L)

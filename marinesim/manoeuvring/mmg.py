@@ -106,7 +106,9 @@ class Mmg:
                    "force": 0.5 * rho * lpp * d, "kappa_squared": self.kappa**2,
                    "kt_astern_0": self.astern_kt[0], "kt_astern_1": self.astern_kt[1]}
         values = [derived[name] if name in derived else getattr(self, name) for name in _COEFFICIENTS]
-        object.__setattr__(self, "_coefficients", np.array(values, dtype=float))
+        coefficients = np.array(values, dtype=float)
+        coefficients.flags.writeable = False
+        object.__setattr__(self, "_coefficients", coefficients)
 
     @property
     def length_m(self) -> float:
@@ -114,7 +116,8 @@ class Mmg:
 
     @property
     def coefficients(self) -> np.ndarray:
-        """Her coefficients and what follows from them, in :func:`mmg_accelerations`' order (:data:`_COEFFICIENTS`)."""
+        """Her coefficients and what follows from them, in :func:`mmg_accelerations`' order (:data:`_COEFFICIENTS`;
+        read-only)."""
         return self._coefficients
 
     def accelerations(self, u: float, v: float, r: float, p: float, phi: float, delta: float, n: float,

@@ -60,7 +60,8 @@ class StationWorld:
     # -- the waves, leg by leg -----------------------------------------------------------------
 
     def _blend(self, t: float, value: Callable[[int], np.ndarray]) -> np.ndarray:
-        """``value(set)`` at ``t`` blended over the sea legs as the timeline blends the response."""
+        """``value(set)`` at ``t`` blended over the sea legs as the timeline blends the response: ``value``'s own
+        array (read-only, perhaps shared) where one leg has all the weight."""
         legs = self._legs()
         leg = legs[0]
         for candidate in legs:

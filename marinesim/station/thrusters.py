@@ -177,7 +177,8 @@ class Thrusters:
     def _bounded_problem(self, free: tuple[bool, ...], hi: np.ndarray) -> tuple[np.ndarray, np.ndarray, float]:
         """The bounded problem of the ``free`` virtual forces (their upper bounds ``hi``): its matrix ``a``
         ((3 + k, k): the scaled columns over the penalty's rows), the rows' scale (3,) and the largest rating
-        (N) both are divided by. Kept per set of free forces."""
+        (N) both are divided by. Kept per set of free forces: a free force's bound is its thruster's rating (a lost
+        or stuck thruster's forces are not free)."""
         if free not in self._problems:
             b = self.b[:, np.array(free)]
             scale = np.array([1.0, 1.0, 1.0 / self.length])

@@ -248,7 +248,7 @@ class Station:
             du, dv, dr = (m_inv @ force).tolist()
             return u * c - v * sn, u * sn + v * c, r, du, dv, dr
 
-        y0 = (s.north, s.east, s.psi, s.u, s.v, s.r)
+        y0 = (float(s.north), float(s.east), float(s.psi), float(s.u), float(s.v), float(s.r))
         half = 0.5 * h
         k1 = rates(0, *y0)
         k2 = rates(1, *(y + half * k for y, k in zip(y0, k1)))

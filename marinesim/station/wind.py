@@ -203,7 +203,8 @@ class Gusts:
 
 
 def _wrap(angle: float | np.ndarray) -> np.ndarray:
-    """An angle (rad) wrapped to (-pi, pi]; an array of its shape."""
+    """An angle (rad) wrapped to (-pi, pi]; an array of its shape (:meth:`WindCoefficients.one`: the same in
+    floats)."""
     return np.pi - np.mod(np.pi - np.asarray(angle, dtype=float), 2.0 * np.pi)
 
 
@@ -233,15 +234,15 @@ class WindCoefficients:
     def one(self, gamma: float) -> tuple[float, float, float]:
         """``(C_X, C_Y, C_N)`` at one angle ``gamma`` (rad, any real value) in plain floats, as the simulation asks
         at each stage of each step: the same values as ``self(gamma)``."""
-        return self._one(math.pi - (math.pi - gamma) % (2.0 * math.pi))  # Python's % is np.mod's, bit for bit
+        return self._one(math.pi - (math.pi - gamma) % (2.0 * math.pi))  # _wrap's formula: Python's % is np.mod's
 
     def _evaluate(self, gamma: np.ndarray) -> np.ndarray:
         """The coefficients (3,) + gamma's shape at ``gamma`` wrapped to (-pi, pi]."""
         raise NotImplementedError
 
     def _one(self, gamma: float) -> tuple[float, float, float]:
-        """:meth:`_evaluate` at one wrapped angle, in plain floats."""
-        raise NotImplementedError
+        """:meth:`_evaluate` at one wrapped angle, in plain floats (a subclass gives its own where that is faster)."""
+        return tuple(self._evaluate(np.asarray(gamma, dtype=float)).tolist())
 
 
 @dataclass(frozen=True)
