@@ -13,7 +13,7 @@ from conftest import ROOT
 from marinesim.errors import FileFormatError
 from marinesim.sea.ocean import Components
 from marinesim.sea.spectra import Jonswap
-from marinesim.station.drift import FORCE_STEP, SlowDrift, mean_drift
+from marinesim.station.drift import FORCE_STEP, KEPT_SHARE, SlowDrift, mean_drift
 from marinesim.vessel.wamit_drift import read_drift
 
 TANKER_DRIFT = ROOT / "rao" / "tanker" / "tanker.9"
@@ -186,6 +186,29 @@ def test_force_interpolates_the_exact_sums(table):
     on_grid = np.array([slow.force(t, heading) for t in grid])
     assert np.allclose(on_grid, slow.force_series(grid, heading), rtol=1e-9, atol=1e-9 * np.abs(on_grid).max())
     assert np.allclose(slow.force(12.34, heading + math.radians(0.04)), slow.force(12.34, heading))  # 0.1 deg
+
+
+def test_the_series_sums_the_largest_components_holding_the_kept_share(table):
+    """Per load, the components summed in time are the fewest largest ``|a_j|^2 |D_j|`` holding KEPT_SHARE of their
+    sum (with any as large as the smallest of them), the loads' sets joined; the rest only add their mean. The
+    weights here are worked out from the table on their own. What would be wrong: a component the share needs left
+    out (the series short of its variance), or all of them summed (the shortcut lost)."""
+    rng = np.random.default_rng(11)
+    _, omega, amplitude = _components(0.25, 2.0, 0.004)              # distinct frequencies: one sum per component
+    direction = math.radians(200.0) + rng.normal(0.0, 0.5, omega.size)
+    heading = math.radians(10.0)
+    slow = SlowDrift(omega, direction, amplitude, table)
+    kept = np.isin(omega, slow._prepared(heading).omega)
+    weight = np.abs(amplitude)[:, None] ** 2 * np.abs(table(omega, direction - heading))
+    needed = np.zeros(omega.size, dtype=bool)
+    for load in range(3):
+        w = weight[:, load]
+        descending = np.sort(w)[::-1]
+        count = int(np.argmax(np.cumsum(descending) >= KEPT_SHARE * w.sum())) + 1
+        needed |= w >= descending[count - 1]
+        assert w[kept].sum() >= KEPT_SHARE * w.sum() * (1.0 - 1e-12)
+    assert np.array_equal(kept, needed), (int(kept.sum()), int(needed.sum()))
+    assert 0 < kept.sum() < omega.size
 
 
 def test_from_components_refers_the_phases_to_the_point(table):

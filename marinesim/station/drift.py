@@ -133,7 +133,8 @@ class SlowDrift:
     :meth:`from_components` refers an ocean's components to a point). For speed, per heading (rounded to
     :data:`HEADING_STEP`, the last :data:`CACHED_HEADINGS` kept) the table is looked up once, components of equal
     frequency are added together (exact), and only the largest components holding ``kept_share``
-    (:data:`KEPT_SHARE`) of ``sum |a_j|^2 |D_j|`` (each load) are summed in time; the others add their mean
+    (:data:`KEPT_SHARE`) of ``sum |a_j|^2 |D_j|`` (each load; those equal to the smallest of them too) are summed in
+    time; the others add their mean
     ``|a_j|^2 D_j`` as a constant, so the time mean stays exactly :meth:`mean`.
     """
 
@@ -236,12 +237,12 @@ class SlowDrift:
         mean = contribution.sum(axis=0)
         keep = np.zeros(self.omega.size, dtype=bool)
         weight = np.abs(contribution)
+        descending = np.sort(weight, axis=0)[::-1]
+        cumulative = np.cumsum(descending, axis=0)
         for load in range(3):
-            order = np.argsort(weight[:, load])[::-1]
-            cumulative = np.cumsum(weight[order, load])
-            if cumulative.size and cumulative[-1] > 0.0:
-                count = int(np.searchsorted(cumulative, self.kept_share * cumulative[-1])) + 1
-                keep[order[:count]] = True
+            if cumulative.size and cumulative[-1, load] > 0.0:
+                count = int(np.searchsorted(cumulative[:, load], self.kept_share * cumulative[-1, load])) + 1
+                keep |= weight[:, load] >= descending[count - 1, load]
         constant = contribution[~keep].sum(axis=0)
         # components of one frequency beat at zero difference frequency: added into one, exactly
         sums, count = np.zeros((self._phasors.omega.size, 6), dtype=complex), np.zeros(self._phasors.omega.size, int)

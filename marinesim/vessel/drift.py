@@ -20,6 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
+from marinesim.compiled import compiled
 from marinesim.errors import FileFormatError, ParameterError
 from marinesim.vessel.rao import MAX_HEADING_GAP
 
@@ -85,13 +86,26 @@ class DriftTable:
         if rows.size != b.size or (rows.size and (rows.min() < 0 or rows.max() >= by_frequency.shape[0])):
             raise ParameterError(f"at_headings: {b.size} headings need as many rows of the {by_frequency.shape[0]} "
                                  f"frequencies' coefficients, got {rows.size}")
-        ring = np.append(self.beta, self.beta[0] + 2.0 * math.pi)
-        q = self.beta[0] + np.mod(b - self.beta[0], 2.0 * math.pi)
-        j = np.clip(np.searchsorted(ring, q, side="right") - 1, 0, self.beta.size - 1)
-        tb = ((q - ring[j]) / (ring[j + 1] - ring[j]))[:, None]
-        j1 = np.where(j + 1 == self.beta.size, 0, j + 1)
-        flat, first = by_frequency.reshape(-1, 3), rows * self.beta.size   # np.take: a third of fancy indexing's time
-        return (1.0 - tb) * np.take(flat, first + j, axis=0) + tb * np.take(flat, first + j1, axis=0)
+        out = np.empty((b.size, 3))
+        _between_headings(np.ascontiguousarray(by_frequency, dtype=float).reshape(-1, 3),
+                          np.append(self.beta, self.beta[0] + 2.0 * math.pi), b, rows.astype(np.int64), out)
+        return out
+
+
+@compiled
+def _between_headings(flat: np.ndarray, ring: np.ndarray, beta: np.ndarray, rows: np.ndarray, out: np.ndarray) -> None:
+    """:meth:`DriftTable.at_headings`' interpolation into ``out`` (n, 3): heading ``beta[i]`` (rad) wrapped onto the
+    table's circle ``ring`` (its n_b headings, then the first plus 2 pi), linear between the two table headings
+    around it, on frequency row ``rows[i]`` of ``flat`` (m n_b, 3: row r's heading k at r n_b + k)."""
+    n_b = ring.size - 1
+    for i in range(beta.size):
+        q = ring[0] + (beta[i] - ring[0]) % (2.0 * math.pi)
+        j = min(max(np.searchsorted(ring, q, side="right") - 1, 0), n_b - 1)
+        t = (q - ring[j]) / (ring[j + 1] - ring[j])
+        first = rows[i] * n_b
+        lo, hi = first + j, first + (0 if j + 1 == n_b else j + 1)
+        for load in range(3):
+            out[i, load] = (1.0 - t) * flat[lo, load] + t * flat[hi, load]
 
 
 def make_drift_table(omega: np.ndarray, beta: np.ndarray, coefficients: np.ndarray, *, source: str = "",
