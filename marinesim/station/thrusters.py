@@ -22,6 +22,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from scipy.optimize import lsq_linear
 
+from marinesim.compiled import compiled
 from marinesim.errors import ParameterError
 
 KINDS = ("tunnel", "main", "azimuth")
@@ -153,10 +154,10 @@ class Thrusters:
                 and self._within_circles(f, free, least):
             f[free] = least
             return f
-        a, scale, top = self._bounded_problem(key, hi)
+        a, scale, top, inverses = self._bounded_problem(key, hi)
         target = np.concatenate([rest * scale / top, np.zeros(a.shape[1])])
         f[free], self._bounded[key] = bounded_least_squares(a, target, lo, np.maximum(hi, lo + 1e-12),
-                                                            self._bounded.get(key))
+                                                            self._bounded.get(key), inverses)
         return self._onto_circles(f)
 
     def forget(self) -> None:
@@ -174,17 +175,19 @@ class Thrusters:
             self._least[free] = b.T @ np.linalg.inv(b @ b.T) if full else np.full((b.shape[1], 3), np.nan)
         return self._least[free]
 
-    def _bounded_problem(self, free: tuple[bool, ...], hi: np.ndarray) -> tuple[np.ndarray, np.ndarray, float]:
+    def _bounded_problem(self, free: tuple[bool, ...], hi: np.ndarray
+                         ) -> tuple[np.ndarray, np.ndarray, float, dict[bytes, np.ndarray]]:
         """The bounded problem of the ``free`` virtual forces (their upper bounds ``hi``): its matrix ``a``
-        ((3 + k, k): the scaled columns over the penalty's rows), the rows' scale (3,) and the largest rating
-        (N) both are divided by. Kept per set of free forces: a free force's bound is its thruster's rating (a lost
-        or stuck thruster's forces are not free)."""
+        ((3 + k, k): the scaled columns over the penalty's rows), the rows' scale (3,), the largest rating (N) both
+        are divided by, and the pseudo-inverses of its columns left free by each set of bounds held, as met
+        (:func:`bounded_least_squares`). Kept per set of free forces: a free force's bound is its thruster's rating
+        (a lost or stuck thruster's forces are not free)."""
         if free not in self._problems:
             b = self.b[:, np.array(free)]
             scale = np.array([1.0, 1.0, 1.0 / self.length])
             top = max(float(np.max(hi)), 1.0)
             a = np.vstack([b * scale[:, None] / top, math.sqrt(PENALTY) * np.eye(b.shape[1]) / top])
-            self._problems[free] = a, scale, top
+            self._problems[free] = a, scale, top, {}
         return self._problems[free]
 
     def _within_circles(self, f: np.ndarray, free: np.ndarray, values: np.ndarray) -> bool:
@@ -225,7 +228,8 @@ class Thrusters:
 
 
 def bounded_least_squares(a: np.ndarray, target: np.ndarray, lower: np.ndarray, upper: np.ndarray,
-                          hint: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+                          hint: np.ndarray | None = None, inverses: dict[bytes, np.ndarray] | None = None
+                          ) -> tuple[np.ndarray, np.ndarray]:
     """``x`` minimising ``|a x - target|^2`` over ``lower <= x <= upper`` (``a`` (k, m) of rank m: one answer), and
     which bounds it holds ((m,): -1 at ``lower``, 1 at ``upper``, 0 between).
 
@@ -234,29 +238,71 @@ def bounded_least_squares(a: np.ndarray, target: np.ndarray, lower: np.ndarray, 
     bounds; the gradient ``g = a^T (a x - target)`` at least 0 at a held lower bound and at most 0 at an upper
     one, so that moving any held value inwards would not help). Else scipy's BVLS finds the bounds (its active
     set), and its free values are solved in the same way, so that the answer's bits follow from its bounds alone,
-    not from whether the hint held."""
+    not from whether the hint held. The free values are the pseudo-inverse of ``a``'s free columns times what the
+    held ones leave of ``target``; ``inverses`` (by the bounds held, for this ``a``) keeps them for the next call."""
+    inverses = {} if inverses is None else inverses
     if hint is not None:
-        x = _with_bounds_held(a, target, lower, upper, hint)
+        x = _with_bounds_held(a, target, lower, upper, hint, inverses)
         if x is not None:
             return x, hint
     result = lsq_linear(a, target, bounds=(lower, upper), method="bvls")
     held = result.active_mask.astype(int)
-    solved = _with_bounds_held(a, target, lower, upper, held)
+    solved = _with_bounds_held(a, target, lower, upper, held, inverses)
     return (np.clip(result.x, lower, upper) if solved is None else solved), held
 
 
 def _with_bounds_held(a: np.ndarray, target: np.ndarray, lower: np.ndarray, upper: np.ndarray,
-                      held: np.ndarray) -> np.ndarray | None:
+                      held: np.ndarray, inverses: dict[bytes, np.ndarray]) -> np.ndarray | None:
     """The least squares answer with the bounds ``held`` (as :func:`bounded_least_squares` gives them) and the other
     values free; None where it breaks a bound or a held value would rather move inwards."""
-    x = np.where(held < 0, lower, upper)
-    free = held == 0
-    if free.any():
-        x[free] = np.linalg.lstsq(a[:, free], target - a[:, ~free] @ x[~free], rcond=None)[0]
-        if (x[free] <= lower[free]).any() or (x[free] >= upper[free]).any():
-            return None
-    gradient = a.T @ (a @ x - target)
-    tolerance = 1e-9 * float(np.abs(a.T @ target).max() + np.abs(a.T @ (a @ x)).max())
-    if (gradient[held < 0] < -tolerance).any() or (gradient[held > 0] > tolerance).any():
-        return None
-    return x
+    held = np.ascontiguousarray(held, dtype=np.int64)
+    key = held.tobytes()
+    inverse = inverses.get(key)
+    if inverse is None:
+        free = held == 0
+        inverse = np.linalg.pinv(a[:, free]) if free.any() else np.zeros((0, a.shape[0]))
+        inverses[key] = inverse
+    x = np.empty(a.shape[1])
+    return x if _held_solution(a, target, lower, upper, held, inverse, x) else None
+
+
+@compiled
+def _held_solution(a: np.ndarray, target: np.ndarray, lower: np.ndarray, upper: np.ndarray, held: np.ndarray,
+                   inverse: np.ndarray, x: np.ndarray) -> bool:
+    """:func:`_with_bounds_held`'s answer into ``x`` (m,): the held values at their bounds, the free ones
+    ``inverse`` ((free, k): the pseudo-inverse of ``a``'s free columns) times ``target`` less the held columns'
+    part; whether it stays within its bounds and no held value would rather move inwards."""
+    rows, m = a.shape
+    rest = target.copy()
+    for j in range(m):
+        if held[j] != 0:
+            x[j] = lower[j] if held[j] < 0 else upper[j]
+            for i in range(rows):
+                rest[i] -= a[i, j] * x[j]
+    k = 0
+    for j in range(m):
+        if held[j] == 0:
+            value = 0.0
+            for i in range(rows):
+                value += inverse[k, i] * rest[i]
+            if value <= lower[j] or value >= upper[j]:
+                return False
+            x[j] = value
+            k += 1
+    fitted = np.zeros(rows)                                      # a x
+    for i in range(rows):
+        for j in range(m):
+            fitted[i] += a[i, j] * x[j]
+    largest_pull, largest_fit, gradient = 0.0, 0.0, np.zeros(m)  # |a^T target|, |a^T a x|, a^T (a x - target)
+    for j in range(m):
+        pull, fit = 0.0, 0.0
+        for i in range(rows):
+            pull += a[i, j] * target[i]
+            fit += a[i, j] * fitted[i]
+            gradient[j] += a[i, j] * (fitted[i] - target[i])
+        largest_pull, largest_fit = max(largest_pull, abs(pull)), max(largest_fit, abs(fit))
+    tolerance = 1e-9 * (largest_pull + largest_fit)
+    for j in range(m):
+        if (held[j] < 0 and gradient[j] < -tolerance) or (held[j] > 0 and gradient[j] > tolerance):
+            return False
+    return True
