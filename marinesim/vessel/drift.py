@@ -97,10 +97,25 @@ def _between_headings(flat: np.ndarray, ring: np.ndarray, beta: np.ndarray, rows
     """:meth:`DriftTable.at_headings`' interpolation into ``out`` (n, 3): heading ``beta[i]`` (rad) wrapped onto the
     table's circle ``ring`` (its n_b headings, then the first plus 2 pi), linear between the two table headings
     around it, on frequency row ``rows[i]`` of ``flat`` (m n_b, 3: row r's heading k at r n_b + k)."""
-    n_b = ring.size - 1
+    n_b, turn = ring.size - 1, 2.0 * math.pi
+    per_radian = n_b / (ring[n_b] - ring[0])
     for i in range(beta.size):
-        q = ring[0] + (beta[i] - ring[0]) % (2.0 * math.pi)
-        j = min(max(np.searchsorted(ring, q, side="right") - 1, 0), n_b - 1)
+        v = beta[i] - ring[0]
+        if 0.0 <= v < turn:            # Python's % where it needs no division, to the bit
+            q = ring[0] + v
+        elif -turn < v < 0.0:
+            q = ring[0] + (v + turn)
+        else:
+            q = ring[0] + v % turn
+        if q != q:
+            j = n_b - 1
+        else:                          # the last table heading at or before q (from a guess on even spacing)
+            j = min(max(int((q - ring[0]) * per_radian), 0), n_b)
+            while j > 0 and ring[j] > q:
+                j -= 1
+            while j < n_b and ring[j + 1] <= q:
+                j += 1
+            j = min(j, n_b - 1)
         t = (q - ring[j]) / (ring[j + 1] - ring[j])
         first = rows[i] * n_b
         lo, hi = first + j, first + (0 if j + 1 == n_b else j + 1)
