@@ -194,9 +194,7 @@ class SlowDrift:
             grown = h.window.shape[0] * 2 if 0 <= offset <= h.window.shape[0] + _BLOCK else _BLOCK * 2
             h.fill(first, min(max(grown, _BLOCK * 2), FORCE_WINDOW))
             offset = 0
-        a, b, c = s + 1.0, s - 1.0, s - 2.0
-        v = h.window[offset:offset + 4]
-        load = (-s * b * c * v[0] + 3.0 * a * b * c * v[1] - 3.0 * a * s * c * v[2] + a * s * b * v[3]) / 6.0
+        load = _lagrange(h.window, offset, s)
         load.flags.writeable = False
         if len(self._last) >= LAST_KEPT:
             self._last.pop(next(iter(self._last)))
@@ -266,6 +264,17 @@ def _sign_group_sums(d: np.ndarray, amplitude: np.ndarray, of_frequency: np.ndar
             value = d[i, load]
             sums[f, 2 * load + (0 if value > 0.0 else 1)] += amplitude[i] * math.sqrt(abs(value))
 
+
+@compiled
+def _lagrange(window: np.ndarray, offset: int, s: float) -> np.ndarray:
+    """The cubic through rows ``offset`` to ``offset + 3`` of ``window`` (W, 3), at ``s`` (0 to 1) between the middle
+    two: :meth:`SlowDrift.force`'s interpolation, (3,)."""
+    a, b, c = s + 1.0, s - 1.0, s - 2.0
+    out = np.empty(3)
+    for k in range(3):
+        out[k] = (-s * b * c * window[offset, k] + 3.0 * a * b * c * window[offset + 1, k]
+                  - 3.0 * a * s * c * window[offset + 2, k] + a * s * b * window[offset + 3, k]) / 6.0
+    return out
 
 _GROUPS = np.kron(np.eye(3), [[1.0], [-1.0]])
 """(6, 3): the squared sums of the sign groups (X+, X-, Y+, Y-, N+, N-) -> the loads X, Y, N."""
