@@ -29,6 +29,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from marinesim.compiled import compiled
 from marinesim.constants import G, KNOT
 from marinesim.errors import HeadingError, ParameterError, require_positive
 from marinesim.sea.dispersion import k_from_omega
@@ -310,26 +311,27 @@ def _bilinear(omega_grid: np.ndarray, beta_grid: np.ndarray, table: np.ndarray,
     A one-frequency table holds its value at every frequency."""
     iw, fw = _locate(omega_grid, omega)
     ib, fb = _locate(beta_grid, beta)
-    iw1 = np.minimum(iw + 1, omega_grid.size - 1)
-    fw, fb = fw[:, None], fb[:, None]
-    # the complex values as (re, im) pairs of floats, weighed in place: real products, no temporaries (the values
-    # of (1 - fb) ((1 - fw) a + fw b) + fb ((1 - fw) c + fw d) in complex arithmetic; only a zero's sign may differ)
     flat = np.ascontiguousarray(table, dtype=np.complex128).view(np.float64).reshape(-1, 2 * table.shape[2])
-
-    def along_frequency(row: np.ndarray) -> np.ndarray:
-        """(1 - fw) a + fw b between the frequencies of the headings at ``row`` (n,), (n, 2 dofs)."""
-        side = np.take(flat, row + iw, axis=0)
-        side *= 1 - fw
-        other = np.take(flat, row + iw1, axis=0)
-        other *= fw
-        side += other
-        return side
-    out = along_frequency(ib * omega_grid.size)
-    out *= 1 - fb
-    other = along_frequency((ib + 1) * omega_grid.size)
-    other *= fb
-    out += other
+    out = np.empty((omega.size, flat.shape[1]))
+    _bilinear_pairs(flat, omega_grid.size, iw, fw, ib, fb, out)
     return out.view(np.complex128)
+
+
+@compiled
+def _bilinear_pairs(flat: np.ndarray, n_w: int, iw: np.ndarray, fw: np.ndarray, ib: np.ndarray, fb: np.ndarray,
+                    out: np.ndarray) -> None:
+    """:func:`_bilinear` on the complex values as (re, im) pairs of floats: ``(1 - fb) ((1 - fw) a + fw b) + fb ((1 -
+    fw) c + fw d)`` into ``out`` (n, 2 dofs), from ``flat`` (headings x frequencies, 2 dofs), each point's cells
+    ``iw``, ``ib`` and fractions ``fw``, ``fb`` (n,)."""
+    for k in range(out.shape[0]):
+        i0 = iw[k]
+        i1 = min(i0 + 1, n_w - 1)
+        near, far = ib[k] * n_w, (ib[k] + 1) * n_w
+        w, b = fw[k], fb[k]
+        for c in range(out.shape[1]):
+            side = flat[near + i0, c] * (1 - w) + flat[near + i1, c] * w
+            other = flat[far + i0, c] * (1 - w) + flat[far + i1, c] * w
+            out[k, c] = side * (1 - b) + other * b
 
 
 def _locate(grid: np.ndarray, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
