@@ -1,6 +1,7 @@
-"""The one way loops over components and time steps, and the few functions of plain floats a run calls a million
-times (a ship's accelerations, a point's rotation), are compiled: numba, the GIL released, the machine code cached on
-disk beside the module (or, where numba finds no writable place for it, compiled afresh in every process)."""
+"""The one way loops over components and time steps, and the few small functions a run calls a million times (a
+ship's accelerations, a point's rotation, the DP computer's cycle), are compiled: numba, the GIL released, the machine
+code cached on disk beside the module (or, where numba finds no writable place for it, compiled afresh in every
+process)."""
 
 from __future__ import annotations
 

@@ -204,7 +204,8 @@ def test_the_series_sums_the_largest_components_holding_the_kept_share(table):
     for load in range(3):
         w = weight[:, load]
         descending = np.sort(w)[::-1]
-        count = int(np.argmax(np.cumsum(descending) >= KEPT_SHARE * w.sum())) + 1
+        cumulative = np.cumsum(descending)
+        count = int(np.argmax(cumulative >= KEPT_SHARE * cumulative[-1])) + 1
         needed |= w >= descending[count - 1]
         assert w[kept].sum() >= KEPT_SHARE * w.sum() * (1.0 - 1e-12)
     assert np.array_equal(kept, needed), (int(kept.sum()), int(needed.sum()))

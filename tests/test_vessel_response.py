@@ -95,6 +95,16 @@ def test_regular_wave_response_of_a_synthetic_table_between_grid_points(tmp_path
     assert_transfer(measured_transfer(response, c.omega[0]), expected, "synthetic")
 
 
+def test_the_table_asked_at_one_heading_for_many_frequencies_answers_each():
+    """Frequencies and headings broadcast as numpy's do: one heading with five frequencies is the same heading five
+    times, one frequency with five headings five answers (the interpolation reads one heading per frequency: a
+    short list of headings would read past it)."""
+    table = read_rao(TANKER)
+    omega, beta = np.linspace(0.3, 1.5, 5), np.radians([0.0, 40.0, 95.0, 180.0, 270.0])
+    assert np.array_equal(table(omega, np.array([1.0])), table(omega, np.full(5, 1.0)))
+    assert np.array_equal(table(np.array([0.6]), beta), table(np.full(5, 0.6), beta))
+
+
 def test_irregular_variance_equals_the_discrete_sum_over_components():
     # Long-crested, so distinct components have well-separated frequencies and a 4 h record
     # averages their cross terms out: var(x_j) = sum |H_j a|^2 / 2 within 0.5 % (a component lost,

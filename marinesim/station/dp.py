@@ -66,7 +66,7 @@ class Dp:
     """The DP computer for a vessel of low-frequency mass ``m`` and damping ``d`` (3, 3) with ``tuning``."""
 
     def __init__(self, m: np.ndarray, d: np.ndarray, tuning: Tuning) -> None:
-        self.m, self.d, self.tuning = np.asarray(m, float), np.asarray(d, float), tuning
+        self.m, self.d, self.tuning = np.ascontiguousarray(m, float), np.ascontiguousarray(d, float), tuning
         self.m_inv = np.linalg.inv(self.m)
         wn = np.array([2.0 * math.pi / p for p in tuning.periods_s])
         mdiag = np.diag(self.m)
@@ -82,13 +82,14 @@ class Dp:
         self.k4 = mdiag * band**2
         self.k3 = self.k4 / 10.0
         self._observer_gains = np.array([self.k1a, self.k1b, self.k2, self.k3, self.k4])
-        """(5, 3): K1a, K1b, K2, K3, K4 as :func:`_observed` reads them."""
+        """(5, 3): K1a, K1b, K2, K3, K4 as :func:`_observed` reads them (read-only: set once from the tuning)."""
+        self._observer_gains.flags.writeable = False
 
     def observe(self, est: np.ndarray, y: np.ndarray, tau: np.ndarray, h: float) -> np.ndarray:
         """The observer's state (15,: xi_1 (3), xi_2 (3), eta_hat (3), nu_hat (3), b (3)) ``h`` s after ``est``,
         given the measured position ``y`` (north m, east m, psi rad) and the thrust ``tau`` (3,) acting."""
         return _observed(np.asarray(est, float), np.asarray(y, float), np.asarray(tau, float), float(h),
-                         self.tuning.wave_omega, self.tuning.bias_time_s, self._observer_gains, self.m_inv, self.d)
+                         float(self.tuning.wave_omega), float(self.tuning.bias_time_s), self._observer_gains, self.m_inv, self.d)
 
     def reference(self, ref: np.ndarray, target: tuple[float, float, float], h: float) -> np.ndarray:
         """The set point (north, east, psi) ``h`` s after ``ref``, moving towards ``target`` within the limits."""

@@ -240,6 +240,9 @@ def bounded_least_squares(a: np.ndarray, target: np.ndarray, lower: np.ndarray, 
     set), and its free values are solved in the same way, so that the answer's bits follow from its bounds alone,
     not from whether the hint held. The free values are the pseudo-inverse of ``a``'s free columns times what the
     held ones leave of ``target``; ``inverses`` (by the bounds held, for this ``a``) keeps them for the next call."""
+    m = a.shape[1]
+    if lower.shape != (m,) or upper.shape != (m,) or (hint is not None and np.shape(hint) != (m,)):
+        raise ParameterError(f"bounded least squares: {m} unknowns need {m} lower and upper bounds (and held ones)")
     inverses = {} if inverses is None else inverses
     if hint is not None:
         x = _with_bounds_held(a, target, lower, upper, hint, inverses)

@@ -83,12 +83,13 @@ class DriftTable:
         if by_frequency.ndim != 3 or by_frequency.shape[1:] != (self.beta.size, 3):
             raise ParameterError(f"at_headings: the frequencies' coefficients must be (m, {self.beta.size}, 3), got "
                                  f"{by_frequency.shape}")
-        if rows.size != b.size or (rows.size and (rows.min() < 0 or rows.max() >= by_frequency.shape[0])):
+        if rows.dtype.kind not in "iu" or rows.size != b.size or (
+                rows.size and (rows.min() < 0 or rows.max() >= by_frequency.shape[0])):
             raise ParameterError(f"at_headings: {b.size} headings need as many rows of the {by_frequency.shape[0]} "
                                  f"frequencies' coefficients, got {rows.size}")
         out = np.empty((b.size, 3))
         _between_headings(np.ascontiguousarray(by_frequency, dtype=float).reshape(-1, 3),
-                          np.append(self.beta, self.beta[0] + 2.0 * math.pi), b, rows.astype(np.int64), out)
+                          np.append(self.beta, self.beta[0] + 2.0 * math.pi), b, np.asarray(rows, dtype=np.int64), out)
         return out
 
 

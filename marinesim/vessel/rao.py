@@ -159,8 +159,8 @@ class RaoTable:
     def __call__(self, omega: np.ndarray, beta: np.ndarray, speed: float = 0.0) -> np.ndarray:
         """Interpolated RAOs, shape (n, 6), at wave frequencies ``omega`` (rad/s, > 0) and
         relative headings ``beta`` (rad, any range) for forward speed ``speed`` (m/s)."""
-        omega = np.asarray(omega, dtype=float).ravel()
-        beta = np.mod(np.asarray(beta, dtype=float).ravel(), 2.0 * math.pi)
+        omega, beta = np.broadcast_arrays(np.asarray(omega, dtype=float).ravel(), np.asarray(beta, dtype=float).ravel())
+        beta = np.mod(beta, 2.0 * math.pi)
         table = self._at_speed(speed)
         w_lo, w_hi = self.omega[0], self.omega[-1]
         if self.covered is not None:
@@ -337,7 +337,7 @@ def _bilinear_pairs(flat: np.ndarray, n_w: int, iw: np.ndarray, fw: np.ndarray, 
 def _locate(grid: np.ndarray, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Cell index and fraction of each ``x`` in the increasing ``grid`` (x within its range)."""
     if grid.size == 1:
-        return np.zeros(x.size, dtype=int), np.zeros(x.size)
+        return np.zeros(x.size, dtype=np.intp), np.zeros(x.size)
     i = np.clip(np.searchsorted(grid, x, side="right") - 1, 0, grid.size - 2)
     return i, (x - grid[i]) / (grid[i + 1] - grid[i])
 

@@ -48,8 +48,8 @@ BLOCKS_PER_PASS = 16
 FRAME_STEPS = 16
 """A call of at most this many steps (a viewer frame's one to three, a headless session's second of ten) keeps its
 phasor table for the next frames ..."""
-FRAME_TABLES_KEPT = 2
-"""... the newest this many, by time step and steps: at most 32 rows of every component, 26 MB at 50,000."""
+FRAME_TABLES_KEPT = 3
+"""... the newest this many, by time step and steps: at most 48 rows of every component, 38 MB at 50,000."""
 SHARED_ROWS = 32
 """Rows of a phasor table shared by responses at rest (:class:`Response`'s ``tables``): a call of at most
 :data:`BLOCK` steps is summed in blocks of this many, so that the short runs of a vessel keeping station on a
