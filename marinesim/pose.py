@@ -99,6 +99,8 @@ class RotationKinematics:
         out = tuple(np.empty((steps, p.shape[0], 3)) for _ in range(3))
         _points(self._cos, self._sin, self._rates, self._accelerations, p, *translations, *out)
         return out
+
+
 @compiled
 def _turn(axis: int, order: int, c: float, s: float, v: tuple[float, float, float]) -> tuple[float, float, float]:
     """The ``order``-th derivative with respect to the angle of the rotation about ``axis`` (0 x, 1 y, 2 z) with

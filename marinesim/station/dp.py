@@ -89,7 +89,8 @@ class Dp:
         """The observer's state (15,: xi_1 (3), xi_2 (3), eta_hat (3), nu_hat (3), b (3)) ``h`` s after ``est``,
         given the measured position ``y`` (north m, east m, psi rad) and the thrust ``tau`` (3,) acting."""
         return _observed(np.asarray(est, float), np.asarray(y, float), np.asarray(tau, float), float(h),
-                         float(self.tuning.wave_omega), float(self.tuning.bias_time_s), self._observer_gains, self.m_inv, self.d)
+                         float(self.tuning.wave_omega), float(self.tuning.bias_time_s), self._observer_gains,
+                         self.m_inv, self.d)
 
     def reference(self, ref: np.ndarray, target: tuple[float, float, float], h: float) -> np.ndarray:
         """The set point (north, east, psi) ``h`` s after ``ref``, moving towards ``target`` within the limits."""
@@ -132,10 +133,9 @@ class Dp:
 # The observer's and the controller's arithmetic (the module docstring's equations), compiled: the DP computer runs
 # every 0.1 s step of a station-keeping vessel. Within 1e-15 relative of numpy's products (their sums' order differs).
 
-@compiled
-def _wrapped(angle: float) -> float:
-    """:func:`~marinesim.manoeuvring.autopilot.wrap`: ``angle`` (rad) to [-pi, pi)."""
-    return (angle + math.pi) % (2.0 * math.pi) - math.pi
+_wrapped = compiled(wrap)
+"""The autopilot's :func:`~marinesim.manoeuvring.autopilot.wrap` (``angle`` rad to [-pi, pi)), compiled from its own
+code for the functions below."""
 
 
 @compiled

@@ -134,8 +134,7 @@ class SlowDrift:
     :data:`HEADING_STEP`, the last :data:`CACHED_HEADINGS` kept) the table is looked up once, components of equal
     frequency are added together (exact), and only the largest components holding ``kept_share``
     (:data:`KEPT_SHARE`) of ``sum |a_j|^2 |D_j|`` (each load; those equal to the smallest of them too) are summed in
-    time; the others add their mean
-    ``|a_j|^2 D_j`` as a constant, so the time mean stays exactly :meth:`mean`.
+    time; the others add their mean ``|a_j|^2 D_j`` as a constant, so the time mean stays exactly :meth:`mean`.
     """
 
     def __init__(self, omega: np.ndarray, direction: np.ndarray, amplitude: np.ndarray, table: DriftTable, *,
@@ -275,6 +274,7 @@ def _lagrange(window: np.ndarray, offset: int, s: float) -> np.ndarray:
         out[k] = (-s * b * c * window[offset, k] + 3.0 * a * b * c * window[offset + 1, k]
                   - 3.0 * a * s * c * window[offset + 2, k] + a * s * b * window[offset + 3, k]) / 6.0
     return out
+
 
 _GROUPS = np.kron(np.eye(3), [[1.0], [-1.0]])
 """(6, 3): the squared sums of the sign groups (X+, X-, Y+, Y-, N+, N-) -> the loads X, Y, N."""
