@@ -15,8 +15,10 @@ from marinesim.constants import KNOT
 from marinesim.manoeuvring.voyage import SHIP_COLUMNS
 from marinesim.scenario import load_scenario, with_run
 from marinesim.session.assembly import Assembly
+from marinesim.session.exercise import AHEAD, BLOCK, Exercise
 from marinesim.session.export import export_motions
 from marinesim.session.sidecar import column_units, sha256
+from marinesim.session.timeline import Simulation
 from marinesim.vessel import motion_columns
 
 
@@ -46,6 +48,20 @@ def test_csv_round_trip_equals_the_in_memory_series_and_is_reproducible(tmp_path
     assert a_meta["vessel"]["speed_kn"] == pytest.approx(6.0) and a_meta["columns"] == first.columns
     other_seed = export_motions(Assembly(with_run(scenario, seed=12)), tmp_path / "c.csv")
     assert pd.read_csv(other_seed.table)["heave_m"].std() != pytest.approx(frame["heave_m"].std(), rel=1e-6)
+
+
+def test_a_day_streams_out_a_block_at_a_time(tmp_path):
+    """A day at 10 Hz (864,001 rows) with no criterion to evaluate: its first block of rows is out, to be written,
+    once at most :data:`AHEAD` rows have been computed. What would be wrong: the whole day computed before the first
+    row reaches the file (gigabytes held in memory, the progress bar still until the end, and an interrupt landing
+    before anything is written)."""
+    scenario = with_run(load_scenario(write(tmp_path, SCENARIO)), duration=86400.0)
+    exercise = Exercise(Simulation(scenario, wake=False))
+    assert exercise.monitor is None
+    first = next(exercise.blocks())
+    assert BLOCK <= first["time_s"].size <= AHEAD and exercise.row <= AHEAD
+    assert exercise.sim.time == pytest.approx(first["time_s"][-1])
+    exercise.sim.close()
 
 
 def test_parquet_holds_the_same_table(tmp_path):

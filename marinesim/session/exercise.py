@@ -339,10 +339,10 @@ class Exercise:
         recording = rows or self.monitor is not None
         out: list[dict[str, np.ndarray]] = []
         while recording and self.row <= last:
-            stop_row = last
+            stop_row = min(last, self.row + AHEAD - 1)  # memory bounded whatever the run's length
             if self.monitor is not None:
                 stride = self.monitor.stride
-                stop_row = min(last, -(-self.row // stride) * stride)  # the next evaluation
+                stop_row = min(stop_row, -(-self.row // stride) * stride)  # the next evaluation
             stop = min(stop_row * self.dt, target)  # the last row's time may round past the target
             self._ask_timed(stop)
             self._move_clock(stop, step_solver)
