@@ -880,7 +880,7 @@ class Trigger:  # SIGTERM to this process when trimesh imports scipy, inside its
             os.kill(os.getpid(), signal.SIGTERM)
 sys.meta_path.insert(0, Trigger())
 try:
-    import {module}
+    {statement}
 except Stop:
     sys.exit(143)
 print("the signal was swallowed")
@@ -890,9 +890,9 @@ print("the signal was swallowed")
 def test_a_signal_while_trimesh_imports_is_not_lost():
     """Regression (found by the campaign): a SIGTERM or Ctrl-C while trimesh loaded was swallowed by its
     ``except BaseException`` around optional imports, and the export ran on for minutes. marinesim imports trimesh
-    in one place, ``marinesim.hull.trimesh_held``."""
-    result = subprocess.run([sys.executable, "-c",
-                             SIGNAL_DURING_TRIMESH_IMPORT.format(module="marinesim.hull.trimesh_held")],
+    in one place, ``marinesim.hull.trimesh_held``, when a mesh is first read or built."""
+    statement = "from marinesim.hull.trimesh_held import trimesh; trimesh.Trimesh"
+    result = subprocess.run([sys.executable, "-c", SIGNAL_DURING_TRIMESH_IMPORT.format(statement=statement)],
                             capture_output=True, text=True, env=environment(), timeout=HANG_S)
     assert result.returncode == 143, result.stdout + result.stderr
 

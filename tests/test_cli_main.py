@@ -9,7 +9,7 @@ import sys
 import pytest
 
 import marinesim
-from conftest import HANG_S, VESSEL_SCENARIO, cli, cli_process, wait_for, write
+from conftest import HANG_S, ROOT, VESSEL_SCENARIO, cli, cli_process, wait_for, write
 
 
 def test_version_and_help():
@@ -73,6 +73,25 @@ def test_the_command_line_itself_imports_no_numerics():
             "{'numpy', 'scipy', 'pandas', 'trimesh', 'xarray', 'moderngl', 'pyglet'}))")
     result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert result.stdout.strip() == "[]"
+
+
+def test_a_command_imports_the_mesh_and_fft_libraries_only_when_it_needs_them(tmp_path):
+    """``export`` of a scenario refused for a bad value (what most user mistakes meet): the command's modules and
+    the scenario's are loaded, but trimesh (with networkx) and pyfftw (which imports dask.array and xarray) are not,
+    a second of the refusal's start. A valid scenario then reads its hull with trimesh and plans its ocean's FFTs with
+    pyfftw. What would be wrong: a module's top importing them again, for a constant or a type."""
+    bad = write(tmp_path, VESSEL_SCENARIO.replace("hs_m = 4.0", "hs_m = -4.0"), "bad.toml")
+    good = write(tmp_path, VESSEL_SCENARIO, "good.toml")
+    code = ("import sys\n"
+            "from marinesim.cli import main\n"
+            "heavy = {'trimesh', 'networkx', 'pyfftw', 'dask', 'xarray'}\n"
+            f"print(main(['export', {str(bad)!r}, '--out', 'm.csv', '--quiet']))\n"
+            "print(sorted({m.split('.')[0] for m in sys.modules} & heavy))\n"
+            f"print(main(['export', {str(good)!r}, '--out', 'm.csv', '--quiet', '--duration', '1']))\n"
+            "print(sorted({m.split('.')[0] for m in sys.modules} & heavy))\n")
+    result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=tmp_path)
+    lines = [line for line in result.stdout.splitlines() if not line.startswith("wrote ")]
+    assert lines == ["2", "[]", "0", "['dask', 'networkx', 'pyfftw', 'trimesh', 'xarray']"], result.stdout + result.stderr
 
 
 @pytest.mark.parametrize("library", ["numpy", "scipy", "numba"])

@@ -15,9 +15,11 @@ and the number of threads, for what is written to files.
 from __future__ import annotations
 
 import contextlib
+import functools
 import json
 import os
 from pathlib import Path
+from types import ModuleType
 
 import numpy as np
 
@@ -25,14 +27,20 @@ from marinesim.atomic import atomic_path
 from marinesim.cache import cache_root, store
 from marinesim.errors import ParameterError
 
-try:
-    import pyfftw
-except ImportError:  # pragma: no cover - exercised by the numpy-fallback benchmark
-    pyfftw = None
-
 BACKENDS = ("auto", "pyfftw", "numpy")
 _WISDOM_KINDS = ("double", "single", "long double")
 _wisdom_read = False
+
+
+@functools.cache
+def _pyfftw() -> ModuleType | None:
+    """pyfftw, imported when first planned (it imports dask.array where dask is installed: 0.6 s that a command
+    without a CPU-synthesised sea does not wait for), or None where it is not installed."""
+    try:
+        import pyfftw
+    except ImportError:  # pragma: no cover - exercised by the numpy-fallback benchmark
+        return None
+    return pyfftw
 
 
 def _wisdom_file() -> Path:
@@ -47,12 +55,12 @@ def _read_wisdom() -> None:
     _wisdom_read = True
     with contextlib.suppress(OSError, ValueError, KeyError, TypeError):
         saved = json.loads(_wisdom_file().read_text())
-        pyfftw.import_wisdom(tuple(saved[kind].encode("ascii") for kind in _WISDOM_KINDS))
+        _pyfftw().import_wisdom(tuple(saved[kind].encode("ascii") for kind in _WISDOM_KINDS))
 
 
 def _save_wisdom() -> None:
     """Store the plans made so far if they differ from the saved ones (atomically; warned about if unwritable)."""
-    wisdom = {kind: blob.decode("ascii") for kind, blob in zip(_WISDOM_KINDS, pyfftw.export_wisdom(), strict=True)}
+    wisdom = {kind: blob.decode("ascii") for kind, blob in zip(_WISDOM_KINDS, _pyfftw().export_wisdom(), strict=True)}
     path = _wisdom_file()
     with contextlib.suppress(OSError, ValueError):
         if json.loads(path.read_text()) == wisdom:
@@ -80,9 +88,10 @@ class InverseFFT2:
     def __init__(self, shape: tuple[int, ...], backend: str = "auto", threads: int | None = None):
         if backend not in BACKENDS:
             raise ParameterError(f"fft backend must be one of {', '.join(BACKENDS)}, got {backend!r}")
+        pyfftw = None if backend == "numpy" else _pyfftw()
         if backend == "pyfftw" and pyfftw is None:
             raise ParameterError("fft backend 'pyfftw' requested but pyfftw is not installed")
-        self.backend = "numpy" if backend == "numpy" or pyfftw is None else "pyfftw"
+        self.backend = "numpy" if pyfftw is None else "pyfftw"
         axes = self._axes = (len(shape) - 2, len(shape) - 1)
         if self.backend == "pyfftw":
             self.input = pyfftw.empty_aligned(shape, dtype=np.complex64)
