@@ -23,7 +23,7 @@ from types import ModuleType
 
 import numpy as np
 
-from marinesim.atomic import atomic_path
+from marinesim.atomic import atomic_path, signals_held
 from marinesim.cache import cache_root, store
 from marinesim.errors import ParameterError
 
@@ -35,9 +35,11 @@ _wisdom_read = False
 @functools.cache
 def _pyfftw() -> ModuleType | None:
     """pyfftw, imported when first planned (it imports dask.array where dask is installed: 0.6 s that a command
-    without a CPU-synthesised sea does not wait for), or None where it is not installed."""
+    without a CPU-synthesised sea does not wait for) with Ctrl-C held as the command's first imports are, or None
+    where it is not installed."""
     try:
-        import pyfftw
+        with signals_held():
+            import pyfftw
     except ImportError:  # pragma: no cover - exercised by the numpy-fallback benchmark
         return None
     return pyfftw
