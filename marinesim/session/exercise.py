@@ -313,8 +313,9 @@ class Exercise:
             pass
 
     def seek(self, t: float) -> None:
-        """Jump forward to ``t`` (s), recording and evaluating on the way; the solver restarts there."""
-        for _ in self._steps(t, rows=False, step_solver=False):
+        """Jump forward to ``t`` (s), recording and evaluating on the way (the record computed ahead, as ``assess``
+        computes it: nothing can change the run on the way); the solver restarts there."""
+        for _ in self._steps(t, rows=False, step_solver=False, ahead=True):
             pass
         self.sim.seek(t)
 
@@ -329,10 +330,11 @@ class Exercise:
         """Go through the whole run, yielding its record (the vessel's motion columns) in blocks of rows."""
         return self._steps(self.duration_s, rows=True)
 
-    def _steps(self, target: float, rows: bool, step_solver: bool = True) -> Iterator[dict[str, np.ndarray]]:
+    def _steps(self, target: float, rows: bool, step_solver: bool = True, ahead: bool = False
+               ) -> Iterator[dict[str, np.ndarray]]:
         """Move the clock to ``target`` (s): record the rows up to it if the monitor needs them (and
         yield them, :data:`BLOCK` rows or more at a time, if ``rows``), stopping the clock at each
-        evaluation to evaluate and let events happen. With ``rows`` the record is computed up to
+        evaluation to evaluate and let events happen. With ``rows`` or ``ahead`` the record is computed up to
         :data:`AHEAD` rows at a time (the response's fast path; fewer before a scripted change); a change of
         the timeline drops what was computed ahead."""
         last = self._last_row(target)
@@ -346,7 +348,7 @@ class Exercise:
             stop = min(stop_row * self.dt, target)  # the last row's time may round past the target
             self._ask_timed(stop)
             self._move_clock(stop, step_solver)
-            block = self._record(self.row, stop_row, last if rows else stop_row)
+            block = self._record(self.row, stop_row, last if rows or ahead else stop_row)
             if self.monitor is not None:
                 self.monitor.append(block)
             self.row = stop_row + 1
