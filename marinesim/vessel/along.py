@@ -150,18 +150,19 @@ def _sum(t, knot, weights, x, y, vx, vy, ax, ay, px, py, omega, kx, ky, amplitud
             fr, fi = -we * se, we * ce                                  # i w_e e^{i phi}
             gr, gi = -we * we * ce - wd * se, -we * we * se + wd * ce   # (i dw_e/dt - w_e^2) e^{i phi}
             for d in range(6):
-                h = 0j
-                dh = 0j
-                ddh = 0j
+                hr = hi = dhr = dhi = ddhr = ddhi = 0.0  # the knots' sums, real and imaginary parts apart
                 for m in range(4):
                     q = motion[k + m, i, d]
-                    h += w[0, m] * q
-                    dh += w[1, m] * q
-                    ddh += w[2, m] * q
-                acc[d] += h.real * ce - h.imag * se
-                acc[6 + d] += dh.real * ce - dh.imag * se + h.real * fr - h.imag * fi
-                acc[12 + d] += (ddh.real * ce - ddh.imag * se + 2.0 * (dh.real * fr - dh.imag * fi)
-                                + h.real * gr - h.imag * gi)
+                    qr, qi = q.real, q.imag
+                    hr += w[0, m] * qr
+                    hi += w[0, m] * qi
+                    dhr += w[1, m] * qr
+                    dhi += w[1, m] * qi
+                    ddhr += w[2, m] * qr
+                    ddhi += w[2, m] * qi
+                acc[d] += hr * ce - hi * se
+                acc[6 + d] += dhr * ce - dhi * se + hr * fr - hi * fi
+                acc[12 + d] += ddhr * ce - ddhi * se + 2.0 * (dhr * fr - dhi * fi) + hr * gr - hi * gi
             a = amplitude[i]
             acc[18] += a.real * ce - a.imag * se
             for p in range(points):
