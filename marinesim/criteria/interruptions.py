@@ -16,6 +16,7 @@ for the person's own rotational inertia, which is left out here (it needs h itse
 from __future__ import annotations
 
 import numpy as np
+from scipy.spatial.transform import Rotation
 
 from marinesim.constants import G
 from marinesim.pose import RotationKinematics
@@ -29,8 +30,6 @@ def deck_specific_force(angles_deg: np.ndarray, rates_deg_s: np.ndarray, acceler
     """(lateral, normal) specific force (m/s^2, each (T,)) along the deck's y and z axes at the body
     point ``offset`` (3,) (m), from the roll, pitch, yaw angles, rates and accelerations (T, 3)
     (deg, deg/s, deg/s^2) and the surge, sway, heave accelerations (T, 3) (m/s^2)."""
-    from scipy.spatial.transform import Rotation  # a quarter of a second to import: only where a deck is judged
-
     angles = np.radians(angles_deg)
     kinematics = RotationKinematics(angles, np.radians(rates_deg_s), np.radians(accelerations_deg_s2))
     zeros = np.zeros_like(translational_acc_m_s2)

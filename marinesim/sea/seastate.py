@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 from functools import cached_property
 
 import numpy as np
+from scipy import optimize
 
 from marinesim.constants import G
 from marinesim.errors import ParameterError, require_finite, require_positive
@@ -130,8 +131,6 @@ class SeaState:
         grid = np.linspace(0.3 * min(peaks), 2.0 * max(peaks), 4000)
         i = int(np.argmax(self.density(grid)))
         lo, hi = grid[max(i - 1, 0)], grid[min(i + 1, grid.size - 1)]
-        from scipy import optimize  # a fifth of a second to import: only where a sea is fitted
-
         best = optimize.minimize_scalar(
             lambda w: -float(self.density(np.array([w]))[0]), bounds=(lo, hi), method="bounded",
             options={"xatol": 1e-10},

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from typing import Callable, Protocol
 
 import numpy as np
+from scipy import integrate
 
 from marinesim.constants import G
 from marinesim.errors import ParameterError, require_at_least, require_positive
@@ -34,7 +35,6 @@ class Spectrum(Protocol):
 
 def spectral_moment(density: Callable[[np.ndarray], np.ndarray], n: int, omega_peak: float) -> float:
     """``m_n = integral_0^inf w^n S(w) dw`` by adaptive quadrature (breakpoints around the peak)."""
-    from scipy import integrate  # with scipy.optimize, a fifth of a second: not for a scenario refused as read
 
     def integrand(w: float) -> float:
         return float(w**n * density(np.array([w]))[0])

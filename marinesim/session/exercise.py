@@ -49,7 +49,7 @@ from marinesim.session.timeline import PREPARE_S, Simulation
 BLOCK = 512
 """The fewest rows :meth:`Exercise.blocks` yields at once (the last block excepted)."""
 AHEAD = 8192
-"""Rows of the record computed at once by ``assess``, the export and the headless run (the viewer
+"""Rows of the record computed at once by ``assess``, the export, the headless run and a seek (the viewer
 computes only the rows up to its clock, a few a frame)."""
 AHEAD_ON_CONDITION_S = 60.0
 """While an event that changes the run waits on its condition, the record is computed at most this far ahead (s):
@@ -314,7 +314,7 @@ class Exercise:
 
     def seek(self, t: float) -> None:
         """Jump forward to ``t`` (s), recording and evaluating on the way (the record computed ahead, as ``assess``
-        computes it: nothing can change the run on the way); the solver restarts there."""
+        computes it: an event that changes the run drops what lies beyond it); the solver restarts there."""
         for _ in self._steps(t, rows=False, step_solver=False, ahead=True):
             pass
         self.sim.seek(t)
@@ -334,7 +334,8 @@ class Exercise:
                ) -> Iterator[dict[str, np.ndarray]]:
         """Move the clock to ``target`` (s): record the rows up to it if the monitor needs them (and
         yield them, :data:`BLOCK` rows or more at a time, if ``rows``), stopping the clock at each
-        evaluation to evaluate and let events happen. With ``rows`` or ``ahead`` the record is computed up to
+        evaluation to evaluate and let events happen (without a monitor, at each timed event's first row: a weather
+        change acts from the clock's time). With ``rows`` or ``ahead`` the record is computed up to
         :data:`AHEAD` rows at a time (the response's fast path; fewer before a scripted change); a change of
         the timeline drops what was computed ahead."""
         last = self._last_row(target)
@@ -345,6 +346,9 @@ class Exercise:
             if self.monitor is not None:
                 stride = self.monitor.stride
                 stop_row = min(stop_row, -(-self.row // stride) * stride)  # the next evaluation
+            elif self._announced < len(self._timed):
+                at_s = self.events[self._timed[self._announced]].at_s
+                stop_row = min(stop_row, max(self.row, math.ceil(at_s / self.dt - 1e-9)))  # the next timed event
             stop = min(stop_row * self.dt, target)  # the last row's time may round past the target
             self._ask_timed(stop)
             self._move_clock(stop, step_solver)

@@ -32,6 +32,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+from scipy.interpolate import CubicSpline
 
 from marinesim.errors import ParameterError, require_memory
 from marinesim.hull import Surface
@@ -108,8 +109,6 @@ def wake_spectrum(surface: Surface, k0: float, xi_max: float, eta_max: float, sp
 
 def _amplitude_spline(surface: Surface, k0: float, sec_max: float, reach: float) -> CubicSpline:
     """A(sec) sampled exactly on a uniform sec grid and interpolated."""
-    from scipy.interpolate import CubicSpline  # imported where a wake is computed, not where a scenario is read
-
     step = 2.0 * math.pi / (k0 * max(reach, 1e-9)) / SAMPLES_PER_PERIOD
     count = max(16, math.ceil((sec_max - 1.0) / step) + 1)
     samples = np.linspace(1.0, sec_max, count)

@@ -22,6 +22,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from scipy.ndimage import uniform_filter
 
 from marinesim.errors import MarinesimError
 
@@ -38,8 +39,6 @@ def kelvin_half_angle_deg(elevation: np.ndarray, x: np.ndarray, y: np.ndarray, w
 
     ``along``: envelope window along the track, in transverse wavelengths (shorter for a compact
     source seen over a few wavelengths, whose cusp moves sideways across a long window)."""
-    from scipy.ndimage import uniform_filter  # imported where a wake is measured, not where a scenario is read
-
     spacing = x[1] - x[0]
     upper = y > 0
     energy = uniform_filter(elevation[upper] ** 2, size=(max(1, round(ENVELOPE_ACROSS * wavelength / spacing)),
