@@ -92,12 +92,14 @@ def cli(*args: str, cwd: Path | str | None = None, env: dict[str, str] | None = 
     """``marinesim *args`` run in this process (:func:`marinesim.cli.main`, the entry point a user's command calls)
     in the folder ``cwd`` with the environment ``env`` (default: this one), as a finished process: its exit status,
     and what it printed on stdout and stderr (warnings logged by marinesim included, as a user's terminal shows
-    them). Without a new interpreter's start-up it costs only the command's own work. Where a test needs a real
-    process (signals, locks held across processes, start-up imports, a pipe for a stream, state kept once per
-    process), it uses :func:`cli_process`."""
+    them, and Python warnings under Python's own default filters, as a process of its own prints them). Without a new
+    interpreter's start-up it costs only the command's own work. Where a test needs a real process (signals, locks
+    held across processes, start-up imports, a pipe for a stream, state kept once per process), it uses
+    :func:`cli_process`."""
     import io
     import logging
     import os
+    import warnings
     from contextlib import chdir, redirect_stderr, redirect_stdout
 
     from marinesim.cli import main
@@ -112,11 +114,16 @@ def cli(*args: str, cwd: Path | str | None = None, env: dict[str, str] | None = 
     logger.addHandler(handler)
     logger.propagate = False
     try:
-        with chdir(cwd or os.getcwd()), redirect_stdout(out), redirect_stderr(err):
+        with chdir(cwd or os.getcwd()), redirect_stdout(out), redirect_stderr(err), \
+                warnings.catch_warnings(record=True) as caught:
+            _python_warning_filters()
             try:
                 status = main([str(arg) for arg in args])
             except SystemExit as exit:  # argparse: --help, --version, a usage error
                 status = exit.code if isinstance(exit.code, int) else (0 if exit.code is None else 2)
+            finally:
+                for w in caught:
+                    err.write(warnings.formatwarning(w.message, w.category, w.filename, w.lineno, w.line))
     finally:
         logger.removeHandler(handler)
         logger.propagate = propagate
@@ -124,6 +131,18 @@ def cli(*args: str, cwd: Path | str | None = None, env: dict[str, str] | None = 
             os.environ.clear()
             os.environ.update(saved_env)
     return subprocess.CompletedProcess(["marinesim", *args], status, out.getvalue(), err.getvalue())
+
+
+def _python_warning_filters() -> None:
+    """The warning filters a Python process starts with (no ``-W``): each warning shown once per place, deprecations
+    only from ``__main__``, import and resource warnings never (pytest's own filters replaced)."""
+    import warnings
+
+    warnings.resetwarnings()
+    warnings.simplefilter("default")
+    for category in (DeprecationWarning, PendingDeprecationWarning, ImportWarning, ResourceWarning):
+        warnings.simplefilter("ignore", category)
+    warnings.filterwarnings("default", category=DeprecationWarning, module="__main__")
 
 
 def cli_process(*args: str, cwd=None, timeout: float = 600, **kwargs) -> subprocess.CompletedProcess:

@@ -1,7 +1,8 @@
-"""The hardening campaign re-run as a user meets it: ``python -m marinesim ...`` in processes of its own on
-mutated RAO files and meshes, mutated scenarios, bad options, signals, two writers of one file, a damaged
-wake cache and outputs that are not regular files. Six cases per category, seeded, so every run tries the
-same ones.
+"""The hardening campaign re-run as a user meets it: ``marinesim ...`` on mutated RAO files and meshes, mutated
+scenarios, bad options, signals, two writers of one file, a damaged wake cache and outputs that are not regular
+files. Six cases per category, seeded, so every run tries the same ones. Signals and two writers need processes of
+their own (``python -m marinesim``, run side by side); every other case calls the entry point in this process
+(conftest's :func:`~conftest.cli`, one after another), under a hang guard.
 
 Each case is classified: clean (exit 0 with valid outputs, or exit 2/130/143 with exactly one line on
 stderr; a process killed by the signal before Python could handle it, with nothing on stderr, counts as
@@ -14,6 +15,7 @@ bytes, a leftover ``.part`` or ``.lock`` file, an input written over). The table
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import json
 import os
@@ -32,21 +34,24 @@ from pathlib import Path
 import pytest
 import trimesh
 
-from conftest import HANG_S, ROOT, mapped, until
+from conftest import HANG_S, ROOT, Hang, cli, hang_guard, mapped, until
 
 PROGRESS = re.compile(r"\d+%\||: (\d+% \(\d+/\d+ \w+\)|done \(\d+ \w+, [\d.]+ s\)"
                       r"|stopped at \d+% \(\d+/\d+ \w+, [\d.]+ s\))$")
 """A progress line, not a message: a bar's (tqdm, on a terminal) or a plain one (stderr not a terminal)."""
 VOLATILE = {"seconds", "seconds_computing", "cached"}  # what a wake's JSON may say differently from the cache
 WORKERS = 3
+"""How many cases with processes of their own run side by side."""
 PER_CATEGORY = 6
 """Cases run per category: a seeded choice among those built (the fuzz tests try many more in one process)."""
 COLUMNS = ("clean", "traceback", "hang", "silent", "data lost")
 HOSTILE = ["nan", "inf", "-inf", "1e308", "-1e308", "0", "-1", "x", "", "99999999999", "1e-300", "[", "\""]
 
 
+@functools.cache
 def environment() -> dict[str, str]:
-    """The processes' environment: this one's as the tests set it (their cache and configuration folders)."""
+    """The processes' environment: this one's as the tests set it (their cache and configuration folders), taken
+    once, before any case runs in this process (a case run here swaps ``os.environ`` while it runs)."""
     return dict(os.environ, PYTHONPATH=str(ROOT))
 
 
@@ -57,14 +62,17 @@ class Case:
     category: str
     name: str
     run: Callable[[Path], tuple[str, str]]
+    own_process: bool = False
+    """Whether its commands run in processes of their own (signals, two writers): such cases run side by side."""
 
 
-def cli(args: list[str], cwd: Path, env: dict[str, str] | None = None) -> subprocess.CompletedProcess | None:
-    """``python -m marinesim *args`` in ``cwd``; None if it did not end within :data:`HANG_S`."""
+def here(args: list[str], cwd: Path, env: dict[str, str] | None = None) -> subprocess.CompletedProcess | None:
+    """``marinesim *args`` in ``cwd``, in this process (conftest's :func:`~conftest.cli`); None if it did not end
+    within :data:`HANG_S`."""
     try:
-        return subprocess.run([sys.executable, "-m", "marinesim", *args], cwd=cwd, capture_output=True, text=True,
-                              env=env or environment(), timeout=HANG_S, stdin=subprocess.DEVNULL)
-    except subprocess.TimeoutExpired:
+        with hang_guard(f"marinesim {' '.join(args)}"):
+            return cli(*args, cwd=cwd, env=env)
+    except Hang:
         return None
 
 
@@ -186,7 +194,7 @@ def mutated_file_cases(category: str, sources: dict[str, Path], command: Callabl
                     path.write_bytes(mutate_bytes(data, rng))
                 else:
                     path.write_text(mutate_text(data.decode(), rng))
-                result = cli(command(path), folder)
+                result = here(command(path), folder)
                 return verdict(result, lambda: leftovers(folder) or json_error(result))
             cases.append(Case(category, f"{name} #{seed}", run))
     return cases
@@ -227,7 +235,7 @@ def scenario_cases() -> list[Case]:
         def run(folder: Path, seed: int = seed) -> tuple[str, str]:
             path = folder / "s.toml"
             path.write_text(mutate_text(scenario_text(), random.Random(f"scenario-{seed}")))
-            result = cli(["export", str(path), "--out", "m.csv", "--duration", "2", "--quiet"], folder)
+            result = here(["export", str(path), "--out", "m.csv", "--duration", "2", "--quiet"], folder)
             return verdict(result, lambda: leftovers(folder) or exported(folder, result))
         cases.append(Case("scenarios", f"#{seed}", run))
     return cases
@@ -267,7 +275,7 @@ def option_cases() -> list[Case]:
         def run(folder: Path, args: list[str] = args) -> tuple[str, str]:
             scenario = folder / "s.toml"
             scenario.write_text(scenario_text())
-            result = cli([a.replace("{scenario}", str(scenario)) for a in args], folder)
+            result = here([a.replace("{scenario}", str(scenario)) for a in args], folder)
             if result is not None and result.returncode == 0:
                 return "traceback", "a bad option was accepted (exit 0)"
             return verdict(result, lambda: leftovers(folder))
@@ -334,7 +342,7 @@ def signal_cases() -> list[Case]:
                             and (folder / "m.csv.json").read_bytes() == OLD_SIDECAR)
                     return ("" if same else "the old pair changed") or leftovers(folder)
                 return verdict(result, untouched)
-            cases.append(Case("signals", f"{sig.name} {label}", run))
+            cases.append(Case("signals", f"{sig.name} {label}", run, own_process=True))
     return cases
 
 
@@ -370,7 +378,7 @@ def writer_cases() -> list[Case]:
                 if outcome[0] != "clean":
                     return outcome
             return "clean", ""
-        cases.append(Case("concurrent writers", f"second after {delay:g} s", run))
+        cases.append(Case("concurrent writers", f"second after {delay:g} s", run, own_process=True))
     return cases
 
 
@@ -380,7 +388,7 @@ WAKE = ["wake", str(ROOT / "hulls" / "wigley.stl"), "--speed-kn", "10", "--nx", 
 def cache_cases(folder: Path) -> list[Case]:
     """A wake computed once into a cache; each case damages a copy of the entry and asks again."""
     cache = folder / "cache"
-    result = cli(WAKE, folder, dict(environment(), MARINESIM_CACHE_DIR=str(cache)))
+    result = here(WAKE, folder, dict(environment(), MARINESIM_CACHE_DIR=str(cache)))
     assert result is not None and result.returncode == 0, result and result.stderr
     reference = json.loads(result.stdout)
     entry = next(cache.rglob("*.npz"))
@@ -417,7 +425,7 @@ def cache_cases(folder: Path) -> list[Case]:
             own = case_folder / "cache"
             shutil.copytree(cache, own)
             damage(how, own / entry.relative_to(cache), random.Random(f"cache-{how}-{case_folder.name}"))
-            answer = cli(WAKE, case_folder, dict(environment(), MARINESIM_CACHE_DIR=str(own)))
+            answer = here(WAKE, case_folder, dict(environment(), MARINESIM_CACHE_DIR=str(own)))
 
             def same_wake() -> str:
                 if answer is None or answer.returncode != 0:
@@ -475,7 +483,7 @@ def output_cases() -> list[Case]:
                     "sea": ["sea", "--resolution", "32", "--spectrum-csv", out],
                     "hull": ["hull", out]}[command]
             before = state(folder)
-            result = cli(args, folder)
+            result = here(args, folder)
             if result is not None and result.returncode == 0 and kind != "device":
                 return "data lost", f"exit 0 writing to a {kind}"
             return verdict(result, lambda: ("" if state(folder) == before else f"{kind} changed") or leftovers(folder))
@@ -563,7 +571,7 @@ def self_overwrite_cases(sources: Path) -> list[Case]:
             shutil.copy(ROOT / "rao" / "s175" / "input.re1", folder / "s175.re1")
             shutil.copy(ROOT / "hulls" / "box_barge.stl", folder / "box.stl")
             before = snapshot(folder)
-            return refusal(cli(args, folder), folder, before)
+            return refusal(here(args, folder), folder, before)
         cases.append(Case("self-overwrite", " ".join(args), run))
     return cases
 
@@ -609,8 +617,9 @@ def forged_log_cases(sources: Path) -> list[Case]:
                 forge(folder / "l.jsonl", how)
                 before = snapshot(folder)
                 if command == "replay":
-                    return refusal(cli(["replay", "l.jsonl", "--export", "m.csv", "--quiet"], folder), folder, before)
-                result = cli(["report", "l.jsonl", "--out", "r.html", "--quiet"], folder)
+                    result = here(["replay", "l.jsonl", "--export", "m.csv", "--quiet"], folder)
+                    return refusal(result, folder, before)
+                result = here(["report", "l.jsonl", "--out", "r.html", "--quiet"], folder)
                 if result is not None and result.returncode == 0:
                     marked = "UNVERIFIED LOG" in (folder / "r.html").read_text(encoding="utf-8")
                     return ("clean", "marked UNVERIFIED LOG") if marked else ("silent", "a debrief with no mark")
@@ -659,7 +668,7 @@ def cut_wamit_cases() -> list[Case]:
                 shutil.copy(ROOT / "rao" / "tanker" / name, folder / name)
             cut(folder, how)
             before = snapshot(folder)
-            return refusal(cli(["rao", "tanker.3", "--json"], folder), folder, before)
+            return refusal(here(["rao", "tanker.3", "--json"], folder), folder, before)
         cases.append(Case("cut WAMIT sets", how, run))
     return cases
 
@@ -684,7 +693,7 @@ def multi_body_cases() -> list[Case]:
             volume = hydrostatics(load_hull(tanker / "tanker.gdf")).volume_m3
         raised(folder)
         two_body_pot(folder, "run.pot", "barge.gdf", (50.0, 60.0, -2.0, 0.0))
-        result = cli(["hull", "barge.gdf", "--json"], folder)
+        result = here(["hull", "barge.gdf", "--json"], folder)
         if result is None or result.returncode != 0:
             return verdict(result)
         found = json.loads(result.stdout)["volume_m3"]
@@ -694,7 +703,7 @@ def multi_body_cases() -> list[Case]:
         raised(folder)
         two_body_pot(folder, "run.pot", "barge.gdf", (50.0, 60.0, -2.0, 0.0))
         two_body_pot(folder, "old.pot", "barge.gdf", (50.0, 60.0, -3.0, 0.0))
-        return refusal(cli(["hull", "barge.gdf", "--json"], folder), folder, snapshot(folder))
+        return refusal(here(["hull", "barge.gdf", "--json"], folder), folder, snapshot(folder))
 
     def two_body_4(folder: Path, body: str | None) -> tuple[str, str]:
         rows = [line.split() for line in (tanker / "tanker.4").read_text().splitlines() if line.split()]
@@ -705,8 +714,8 @@ def multi_body_cases() -> list[Case]:
         (folder / "run.4").write_text("\n".join(merged) + "\n")
         two_body_pot(folder, "run.pot", "barge.gdf", (0.0, 0.0, 0.0, 0.0))
         if body is None:
-            return refusal(cli(["rao", "run.4", "--json"], folder), folder, snapshot(folder))
-        return verdict(cli(["rao", "run.4", "--body", body, "--json"], folder))
+            return refusal(here(["rao", "run.4", "--json"], folder), folder, snapshot(folder))
+        return verdict(here(["rao", "run.4", "--body", body, "--json"], folder))
 
     def two_body_set(folder: Path) -> tuple[str, str]:
         for suffix, columns in ((".1", (1, 2)), (".3", (2,)), (".hst", (0, 1))):
@@ -717,7 +726,7 @@ def multi_body_cases() -> list[Case]:
             (folder / f"tanker{suffix}").write_text("\n".join(" ".join(row) for row in rows) + "\n")
         shutil.copy(tanker / "tanker.frc", folder / "tanker.frc")
         two_body_pot(folder, "tanker.pot", "tanker2.gdf", (0.0, 0.0, 0.0, 0.0))
-        return refusal(cli(["rao", "tanker.3", "--body", "2", "--json"], folder), folder, snapshot(folder))
+        return refusal(here(["rao", "tanker.3", "--body", "2", "--json"], folder), folder, snapshot(folder))
 
     return [Case("multi-body .pot", "a body placed by the run's .pot", placed),
             Case("multi-body .pot", "two .pot placing one body apart", two_places),
@@ -792,12 +801,12 @@ def physics_cases() -> list[Case]:
         for name, command in table.items():
             def run(folder: Path, command: Callable[[Path], list[str]] = command) -> tuple[str, str]:
                 args = command(folder)
-                return refusal(cli(args, folder), folder, snapshot(folder))
+                return refusal(here(args, folder), folder, snapshot(folder))
             cases.append(Case(category, name, run))
 
     def repeated_speed(folder: Path) -> tuple[str, str]:
         """1,000 copies of one speed in ``wake --speed-kn``: each was computed again, for minutes; now once."""
-        result = cli(["wake", str(ROOT / "hulls" / "wigley.stl"), "--nx", "64", "--ny", "32", "--speed-kn",
+        result = here(["wake", str(ROOT / "hulls" / "wigley.stl"), "--nx", "64", "--ny", "32", "--speed-kn",
                       ",".join(["12"] * 1000), "--json"], folder)
         if result is None or result.returncode != 0:
             return verdict(result)
@@ -849,8 +858,12 @@ def test_the_campaign_finds_no_traceback_hang_or_lost_data(tmp_path):
         return case, outcome, detail
 
     started = time.monotonic()
-    with ThreadPoolExecutor(WORKERS) as pool:
-        results = list(pool.map(attempt, enumerate(cases)))
+    environment()  # the processes' environment, taken before a case here swaps this one's
+    numbered = list(enumerate(cases))
+    with ThreadPoolExecutor(WORKERS) as pool:  # the processes side by side, while the other cases run here
+        apart = {n: pool.submit(attempt, (n, case)) for n, case in numbered if case.own_process}
+        here_ = {n: attempt((n, case)) for n, case in numbered if not case.own_process}
+    results = [apart[n].result() if n in apart else here_[n] for n, _ in numbered]
     report = table(results)
     print(f"\n{report}\n{len(cases)} cases in {time.monotonic() - started:.0f} s")
     if os.environ.get("MARINESIM_CAMPAIGN_REPORT"):
@@ -863,7 +876,7 @@ def test_the_campaign_finds_no_traceback_hang_or_lost_data(tmp_path):
 def test_a_usage_mistake_is_one_line():
     """Regression (found by the campaign): argparse printed its whole usage block above the error, so a
     mistyped option gave many lines on stderr instead of one."""
-    result = cli(["sea", "--spectrum", "storm"], ROOT)
+    result = here(["sea", "--spectrum", "storm"], ROOT)
     assert result is not None and result.returncode == 2
     assert len(result.stderr.strip().splitlines()) == 1 and "--spectrum" in result.stderr, result.stderr
 
@@ -903,6 +916,6 @@ def test_a_refused_sidecar_leaves_no_temporary_table(tmp_path):
     scenario = tmp_path / "s.toml"
     scenario.write_text(scenario_text())
     os.mkfifo(tmp_path / "m.csv.json")
-    result = cli(["export", str(scenario), "--out", "m.csv", "--duration", "2", "--quiet"], tmp_path)
+    result = here(["export", str(scenario), "--out", "m.csv", "--duration", "2", "--quiet"], tmp_path)
     assert result is not None and result.returncode == 2, result and result.stderr
     assert not leftovers(tmp_path) and not (tmp_path / "m.csv").exists()
