@@ -122,5 +122,11 @@ class InverseFFT2:
 
 
 def mirrored(field: np.ndarray) -> np.ndarray:
-    """``field(-k)`` for fields in FFT index order on their last two axes (index ``-i`` is ``(n - i) % n``)."""
-    return np.roll(np.flip(field, axis=(-2, -1)), 1, axis=(-2, -1))
+    """``field(-k)`` for fields in FFT index order on their last two axes (index ``-i`` is ``(n - i) % n``: index 0
+    stays, the others reversed)."""
+    out = np.empty_like(field)
+    out[..., :1, :1] = field[..., :1, :1]
+    out[..., :1, 1:] = field[..., :1, :0:-1]
+    out[..., 1:, :1] = field[..., :0:-1, :1]
+    out[..., 1:, 1:] = field[..., :0:-1, :0:-1]
+    return out

@@ -1,4 +1,4 @@
-"""The NumPy reference of the local solver: the numerics of the GPU shaders, in float64.
+"""The NumPy reference of the local solver: the numerics of the GPU shaders, in float64 (the transforms scipy.fft's).
 
 Each sub-step: ``u = h + d``; ``Z = FFT(u + i phi)``; ``Z' = A Z + B conj Z(-k)``;
 ``u + i phi = IFFT Z'``; ``h = u - d``; both fields times the sponge/obstacle factor; non-finite
@@ -8,6 +8,7 @@ values zeroed and counted (spectral.py, footprint.py, local.py).
 from __future__ import annotations
 
 import numpy as np
+import scipy.fft
 
 from marinesim.sea.fft import mirrored
 from marinesim.solver.footprint import Placement, displaced_depth, hull_triangles
@@ -38,10 +39,10 @@ class ReferenceSolver(LocalSolver):
     def _advance(self, placements: list[Placement] | None) -> None:
         a, b = self.coefficients
         self._depth = self._depth_of(placements)
-        spectrum = np.fft.fft2(self._z + self._depth)
-        z = np.fft.ifft2(a * spectrum + b * np.conj(mirrored(spectrum)))
+        spectrum = scipy.fft.fft2(self._z + self._depth)
+        z = scipy.fft.ifft2(a * spectrum + b * np.conj(mirrored(spectrum)))
         z = (z - self._depth) * self._keep
-        bad = ~(np.isfinite(z.real) & np.isfinite(z.imag))
+        bad = ~np.isfinite(z)  # a complex value is finite where both its parts are
         if bad.any():
             z[bad] = 0.0
             self._nonfinite += int(bad.sum())
