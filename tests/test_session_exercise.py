@@ -288,3 +288,38 @@ def test_a_vessel_on_dp_is_stepped_once_past_a_scripted_change(change):
     again = len(stepped) - len(set(stepped))
     assert again <= CHUNK_STEPS + horizon, f"{again} steps taken twice (the voyage steps {CHUNK_STEPS} ahead)"
     assert max(stepped) <= round(180.0 / STEP_S) + CHUNK_STEPS
+
+
+def test_an_assessment_computes_only_the_columns_its_criteria_read_and_the_same_criteria():
+    """The offshore loading's tanker keeps station beside the FPSO: an assessment's run computes her motions and her
+    ship's columns and, of the rest, only what its criteria read (none of the station's, nor the FPSO's), while an
+    export's run computes every column; the criteria and the alarms are the same bits either way. What would be
+    wrong: an assessment paying for columns nobody reads (the FPSO's response, the station's wind and thrust each
+    tenth of a second), or a criterion reading a column the record left out."""
+    scenario = with_run(load_scenario(ROOT / "configs" / "training" / "offshore_loading.toml"), 120.0, seed=3)
+    runs = {}
+    for how in ("assess", "export"):
+        with Simulation(scenario, wake=False) as simulation:
+            computed: list[set[str]] = []
+            record = simulation.frame_steps
+
+            def frame_steps(*args, record=record, computed=computed):  # the real record, its columns noted
+                out = record(*args)
+                computed.append(set(out))
+                return out
+            simulation.frame_steps = frame_steps
+            exercise = Exercise(simulation)
+            if how == "assess":
+                exercise.run()
+            else:
+                for _ in exercise.blocks():
+                    pass
+            runs[how] = (exercise.values, list(exercise.alarms), computed)
+    (values, alarms, assessed), (export_values, export_alarms, exported) = runs["assess"], runs["export"]
+    assert values == export_values and alarms == export_alarms
+    assert any(value is not None for row in values for value in row), "the criteria have values"
+    left_out = {"fpso_heave_m", "set_point_offset_m", "wind_speed_m_s", "thruster_bow_tunnel_1_pct",
+                "line_hawser_tension_kn"}
+    assert assessed and all(not left_out & columns and {"heave_m", "manifold_vz_m_s"} <= columns
+                            for columns in assessed)
+    assert exported and all(left_out <= columns for columns in exported)

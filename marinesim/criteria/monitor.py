@@ -238,6 +238,14 @@ class Monitor:
                     rows[name] = max(rows.get(name, 0), n)
         self._histories = {name: _History(n) for name, n in rows.items()}
         self._doses = {i: c.measure.dose(self.dt) for i, c in enumerate(self.criteria) if c.measure.dose}
+        dosed = (self.criteria[i] for i in self._doses)
+        self._needed = frozenset(self._histories).union(*(c.measure.columns(c.point) for c in dosed))
+
+    @property
+    def columns(self) -> frozenset[str]:
+        """The record's columns the criteria read (a point's deck-frame forces, derived from the motions' columns,
+        named as :data:`LATERAL` and :data:`NORMAL` say)."""
+        return self._needed
 
     def window_rows(self, criterion: Criterion) -> int:
         return max(1, round(criterion.window / self.dt))
@@ -290,8 +298,7 @@ class Monitor:
 
     def _series(self, block: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
         """The block's columns and the derived deck-frame forces of the points that need them."""
-        needed = set(self._histories) | {name for i in self._doses
-                                         for name in self.criteria[i].measure.columns(self.criteria[i].point)}
+        needed = self._needed
         series = {name: block[name] for name in needed if name in block}
         for point, offset in self.points.items():
             lateral, normal = LATERAL.format(p=point), NORMAL.format(p=point)

@@ -295,8 +295,8 @@ class Exercise:
         """The events that change the timeline (its sea, orders or weather)."""
         self.row = 0
         """The next grid row to record."""
-        self._ahead: tuple[int, int, int, dict[str, np.ndarray]] | None = None
-        """(first row, the timeline's version then, rows, their columns) computed ahead."""
+        self._ahead: tuple[int, int, int, frozenset[str] | None, dict[str, np.ndarray]] | None = None
+        """(first row, the timeline's version then, rows, the columns wanted, the columns) computed ahead."""
         self.expectations = Expectations(simulation, self.criteria) if self.monitor is not None else None
         """What the sea the vessel meets makes of each criterion (computed when asked)."""
         self._expected_now: dict[int, tuple[float, Expected | None]] = {}
@@ -309,13 +309,13 @@ class Exercise:
 
     def advance_to(self, t: float) -> None:
         """Move the clock on to exactly ``t`` (s), as :meth:`advance`."""
-        for _ in self._steps(t, rows=False):
+        for _ in self._steps(t, rows=False, wanted=self._watched_columns()):
             pass
 
     def seek(self, t: float) -> None:
         """Jump forward to ``t`` (s), recording and evaluating on the way (the record computed ahead, as ``assess``
         computes it: an event that changes the run drops what lies beyond it); the solver restarts there."""
-        for _ in self._steps(t, rows=False, step_solver=False, ahead=True):
+        for _ in self._steps(t, rows=False, step_solver=False, ahead=True, wanted=self._watched_columns()):
             pass
         self.sim.seek(t)
 
@@ -323,21 +323,27 @@ class Exercise:
         """Go on to ``until`` (s; default the run's end), as ``assess`` does: events happen, criteria are evaluated."""
         until = self.duration_s if until is None else until
         with task("exercise", max(self._last_row(until) + 1 - self.row, 0)) as bar:
-            for block in self._steps(until, rows=True):
+            for block in self._steps(until, rows=True, wanted=self._watched_columns()):
                 bar.update(block["time_s"].size)
 
     def blocks(self) -> Iterator[dict[str, np.ndarray]]:
-        """Go through the whole run, yielding its record (the vessel's motion columns) in blocks of rows."""
+        """Go through the whole run, yielding its record (every column) in blocks of rows."""
         return self._steps(self.duration_s, rows=True)
 
-    def _steps(self, target: float, rows: bool, step_solver: bool = True, ahead: bool = False
-               ) -> Iterator[dict[str, np.ndarray]]:
+    def _watched_columns(self) -> frozenset[str]:
+        """The record's columns the monitor reads (none without one): all a run that keeps no record computes of the
+        columns other than the motions' and the ship's (:meth:`Simulation.frame_steps`)."""
+        return self.monitor.columns if self.monitor is not None else frozenset()
+
+    def _steps(self, target: float, rows: bool, step_solver: bool = True, ahead: bool = False,
+               wanted: frozenset[str] | None = None) -> Iterator[dict[str, np.ndarray]]:
         """Move the clock to ``target`` (s): record the rows up to it if the monitor needs them (and
         yield them, :data:`BLOCK` rows or more at a time, if ``rows``), stopping the clock at each
         evaluation to evaluate and let events happen (without a monitor, at each timed event's first row: a weather
         change acts from the clock's time). With ``rows`` or ``ahead`` the record is computed up to
         :data:`AHEAD` rows at a time (the response's fast path; fewer before a scripted change); a change of
-        the timeline drops what was computed ahead."""
+        the timeline drops what was computed ahead. ``wanted``: the columns computed beyond the motions' and the
+        ship's (None: all)."""
         last = self._last_row(target)
         recording = rows or self.monitor is not None
         out: list[dict[str, np.ndarray]] = []
@@ -352,7 +358,7 @@ class Exercise:
             stop = min(stop_row * self.dt, target)  # the last row's time may round past the target
             self._ask_timed(stop)
             self._move_clock(stop, step_solver)
-            block = self._record(self.row, stop_row, last if rows or ahead else stop_row)
+            block = self._record(self.row, stop_row, last if rows or ahead else stop_row, wanted)
             if self.monitor is not None:
                 self.monitor.append(block)
             self.row = stop_row + 1
@@ -372,17 +378,19 @@ class Exercise:
         self._move_clock(target, step_solver)
         self._announce_timed(target)
 
-    def _record(self, first: int, last: int, ahead_to: int) -> dict[str, np.ndarray]:
-        """Rows ``first..last`` of the record: from what was computed ahead while the timeline has not
-        changed since, else computed now with up to :data:`AHEAD` rows (not beyond ``ahead_to``, nor into the next
-        scripted change) ahead."""
+    def _record(self, first: int, last: int, ahead_to: int, wanted: frozenset[str] | None
+                ) -> dict[str, np.ndarray]:
+        """Rows ``first..last`` of the record (``wanted``: as :meth:`Simulation.frame_steps`): from what was computed
+        ahead while the timeline has not changed since (with those columns), else computed now with up to
+        :data:`AHEAD` rows (not beyond ``ahead_to``, nor into the next scripted change) ahead."""
         ahead = self._ahead
-        if ahead is None or ahead[1] != self.sim.version or not ahead[0] <= first <= last < ahead[0] + ahead[2]:
+        if (ahead is None or ahead[1] != self.sim.version or not ahead[0] <= first <= last < ahead[0] + ahead[2]
+                or not (ahead[3] is None or (wanted is not None and wanted <= ahead[3]))):
             count = max(last, min(ahead_to, first + AHEAD - 1, self._before_next_change(first))) - first + 1
-            self._ahead = ahead = (first, self.sim.version, count,
-                                   self.sim.frame_steps(first * self.dt, self.dt, count))
+            self._ahead = ahead = (first, self.sim.version, count, wanted,
+                                   self.sim.frame_steps(first * self.dt, self.dt, count, wanted))
         lo, hi = first - ahead[0], last + 1 - ahead[0]
-        return {name: column[lo:hi] for name, column in ahead[3].items()}
+        return {name: column[lo:hi] for name, column in ahead[4].items()}
 
     def _before_next_change(self, first: int) -> int | float:
         """The last row from ``first`` the record may be computed ahead to: before the next timed event that changes

@@ -24,7 +24,7 @@ from __future__ import annotations
 import contextvars
 import dataclasses
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from concurrent.futures import Future, ThreadPoolExecutor
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
@@ -489,21 +489,27 @@ class Simulation:
             raise ParameterError("the scenario has no vessel: no motions to record")
         return self._record(times, self._linear(times), None)
 
-    def frame_steps(self, start: float, dt: float, steps: int) -> dict[str, np.ndarray]:
+    def frame_steps(self, start: float, dt: float, steps: int, wanted: frozenset[str] | None = None
+                    ) -> dict[str, np.ndarray]:
         """:meth:`frame` at ``start + dt * arange(steps)``; straight runs through their response's block product
-        (:meth:`Response.linear_steps`, tables reused across blocks)."""
+        (:meth:`Response.linear_steps`, tables reused across blocks). ``wanted``: the columns asked for (None: all);
+        the motions' and the ship's columns always come, the others' groups (a station-keeping vessel's, the crane's,
+        the helicopter's, the other bodies') only where one of their columns is wanted."""
         times = start + dt * np.arange(steps)
-        return self._record(times, self._linear(times, dt), dt)
+        return self._record(times, self._linear(times, dt), dt, wanted)
 
-    def _record(self, times: np.ndarray, linear: np.ndarray, dt: float | None) -> dict[str, np.ndarray]:
+    def _record(self, times: np.ndarray, linear: np.ndarray, dt: float | None,
+                wanted: frozenset[str] | None = None) -> dict[str, np.ndarray]:
+        def asked(columns: Iterable[str]) -> bool:
+            return wanted is None or not wanted.isdisjoint(columns)
         out = self.assembly.response.frame(times, linear) | self.voyage.record(times, linear[:, 5])
-        if self.station is not None:
+        if self.station is not None and asked(station_columns(self.voyage.ship)):
             out |= station_record(self.voyage.ship, self.voyage, times)
-        if self.lift is not None:
+        if self.lift is not None and asked(lifting.columns()):
             out |= lifting.record(self.lift, times)
-        if self.helicopter is not None:
+        if self.helicopter is not None and asked(helideck.COLUMNS):
             out |= helideck.record(self.helicopter, times)
-        if self.bodies:
+        if self.bodies and asked(others.columns(self.scenario.others)):
             out |= others.record(self.bodies, [self._blended(body.along, others.WIDTH, times, dt)
                                                for body in self.bodies], self.voyage.path(times))
         return out
