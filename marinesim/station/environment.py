@@ -57,11 +57,14 @@ class Weather:
         self._current = current
         self._drift, self._wave_motion = drift, wave_motion
         self._gust_block = functools.lru_cache(maxsize=4)(self._gust_block)
+        self._last_load: tuple[tuple[float, float, float, float], np.ndarray] | None = None
+        """The newest wind load and its (t, psi, u, v): a step's DP cycle and its first stage ask the same."""
 
     def change(self, start: float, ramp_s: float, speed: float | None = None, from_rad: float | None = None) -> None:
         """The mean wind changes from ``start`` (s) over ``ramp_s`` (s) to ``speed`` (m/s) and/or ``from_rad``
         (rad), from the wind of that moment; later changes than ``start`` are dropped (asked again if wanted)."""
         self.changes = [c for c in self.changes if c.start < start] or self.changes[:1]
+        self._last_load = None
         speed0, from0 = self.mean_wind(start)
         self.changes.append(WindChange(start, ramp_s, speed0, from0, speed0 if speed is None else speed,
                                        from0 if from_rad is None else from_rad))
@@ -95,10 +98,16 @@ class Weather:
         return self.gusts.speeds(np.minimum(times, self.gusts.duration))
 
     def wind_load(self, t: float, psi: float, u: float, v: float) -> np.ndarray:
+        """The wind's load (X N, Y N, N N m; (3,), read-only) at ``t`` (s) on the vessel heading ``psi`` (rad) at
+        (``u``, ``v``) (m/s, body axes)."""
+        key = (t, psi, u, v)
+        if self._last_load is not None and self._last_load[0] == key:
+            return self._last_load[1]
         speed, direction = self.wind(t)
-        if speed <= 0.0:
-            return np.zeros(3)
-        return self.wind_loads.force(u, v, psi, speed, direction)
+        load = np.zeros(3) if speed <= 0.0 else np.asarray(self.wind_loads.force(u, v, psi, speed, direction))
+        load.flags.writeable = False
+        self._last_load = (key, load)
+        return load
 
     def loads(self, t: float, north: float, east: float, psi: float, u: float, v: float, r: float) -> np.ndarray:
         out = self.wind_load(t, psi, u, v)
