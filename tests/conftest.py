@@ -114,7 +114,7 @@ def cli(*args: str, cwd: Path | str | None = None, env: dict[str, str] | None = 
     logger.addHandler(handler)
     logger.propagate = False
     try:
-        with chdir(cwd or os.getcwd()), redirect_stdout(out), redirect_stderr(err), \
+        with chdir(cwd or os.getcwd()), redirect_stdout(out), redirect_stderr(err), _as_a_new_process(), \
                 warnings.catch_warnings(record=True) as caught:
             _python_warning_filters()
             try:
@@ -131,6 +131,21 @@ def cli(*args: str, cwd: Path | str | None = None, env: dict[str, str] | None = 
             os.environ.clear()
             os.environ.update(saved_env)
     return subprocess.CompletedProcess(["marinesim", *args], status, out.getvalue(), err.getvalue())
+
+
+@contextlib.contextmanager
+def _as_a_new_process() -> Iterator[None]:
+    """What marinesim does once per process set as a new process has it (the cache's one warning not yet given, the
+    FFTW wisdom not yet read) for the block, and as it was after: a command run in-process warns as a user's would."""
+    import marinesim.cache
+    import marinesim.sea.fft
+
+    saved = marinesim.cache._warned, marinesim.sea.fft._wisdom_read
+    marinesim.cache._warned = marinesim.sea.fft._wisdom_read = False
+    try:
+        yield
+    finally:
+        marinesim.cache._warned, marinesim.sea.fft._wisdom_read = saved
 
 
 def _python_warning_filters() -> None:

@@ -100,9 +100,9 @@ class Weather:
     def wind_load(self, t: float, psi: float, u: float, v: float) -> np.ndarray:
         """The wind's load (X N, Y N, N N m; (3,), read-only) at ``t`` (s) on the vessel heading ``psi`` (rad) at
         (``u``, ``v``) (m/s, body axes)."""
-        key = (t, psi, u, v)
-        if self._last_load is not None and self._last_load[0] == key:
-            return self._last_load[1]
+        key, last = (t, psi, u, v), self._last_load
+        if last is not None and last[0] == key:
+            return last[1]
         speed, direction = self.wind(t)
         load = np.zeros(3) if speed <= 0.0 else np.asarray(self.wind_loads.force(u, v, psi, speed, direction))
         load.flags.writeable = False
