@@ -862,8 +862,8 @@ def test_the_campaign_finds_no_traceback_hang_or_lost_data(tmp_path):
     numbered = list(enumerate(cases))
     with ThreadPoolExecutor(WORKERS) as pool:  # the processes side by side, while the other cases run here
         apart = {n: pool.submit(attempt, (n, case)) for n, case in numbered if case.own_process}
-        here_ = {n: attempt((n, case)) for n, case in numbered if not case.own_process}
-    results = [apart[n].result() if n in apart else here_[n] for n, _ in numbered]
+        in_this_process = {n: attempt((n, case)) for n, case in numbered if not case.own_process}
+    results = [apart[n].result() if n in apart else in_this_process[n] for n, _ in numbered]
     report = table(results)
     print(f"\n{report}\n{len(cases)} cases in {time.monotonic() - started:.0f} s")
     if os.environ.get("MARINESIM_CAMPAIGN_REPORT"):

@@ -331,8 +331,8 @@ class Exercise:
         return self._steps(self.duration_s, rows=True)
 
     def _watched_columns(self) -> frozenset[str]:
-        """The record's columns the monitor reads (none without one): all a run that keeps no record computes of the
-        columns other than the motions' and the ship's (:meth:`Simulation.frame_steps`)."""
+        """The record's columns the monitor reads (none without one): of the columns beyond the motions' and the
+        ship's, all that a run keeping no record computes (:meth:`Simulation.frame_steps`)."""
         return self.monitor.columns if self.monitor is not None else frozenset()
 
     def _steps(self, target: float, rows: bool, step_solver: bool = True, ahead: bool = False,
@@ -385,7 +385,7 @@ class Exercise:
         :data:`AHEAD` rows (not beyond ``ahead_to``, nor into the next scripted change) ahead."""
         ahead = self._ahead
         if (ahead is None or ahead[1] != self.sim.version or not ahead[0] <= first <= last < ahead[0] + ahead[2]
-                or not (ahead[3] is None or (wanted is not None and wanted <= ahead[3]))):
+                or not _holds(ahead[3], wanted)):
             count = max(last, min(ahead_to, first + AHEAD - 1, self._before_next_change(first))) - first + 1
             self._ahead = ahead = (first, self.sim.version, count, wanted,
                                    self.sim.frame_steps(first * self.dt, self.dt, count, wanted))
@@ -603,6 +603,11 @@ class Exercise:
                    else "within limits")
         return Assessment(str(self.scenario.path), self.scenario.run.seed, self.sim.time, self.duration_s, complete,
                           self.dt, criteria, events, alarms, verdict)
+
+
+def _holds(computed: frozenset[str] | None, wanted: frozenset[str] | None) -> bool:
+    """Whether a record computed with the columns ``computed`` holds those ``wanted`` (None: every column)."""
+    return computed is None or (wanted is not None and wanted <= computed)
 
 
 def run_exercise(scenario: Scenario, *, duration_s: float | None = None, log: Callable[[str], None] = quiet,
