@@ -16,6 +16,7 @@ from marinesim.manoeuvring.voyage import Voyage
 from marinesim.scenario import load_scenario
 from marinesim.session.assembly import Assembly
 from marinesim.session.timeline import Simulation
+from marinesim.vessel import along
 from marinesim.vessel.along import Knots
 from marinesim.vessel.response import motion_columns
 
@@ -80,11 +81,15 @@ def test_through_a_hard_over_turn_the_velocities_are_the_motions_derivatives(tra
 def test_in_a_turn_the_motions_asked_one_time_at_a_time_are_those_asked_at_once(transit):
     """A sea change ramping from 20 s over 30 s, hard to starboard at 30 s: the motions over the next minute at
     5 Hz, asked one time at a time (as frames ask, each reading the transfer functions kept at the knots before
-    it, of both sea legs while they blend) and in one call from a fresh simulation, are the same bits. What would
-    be wrong: the two sets' knots kept in one store (frames ask them in turn), or a knot kept from another time."""
+    it, of both sea legs while they blend; each summed on one core) and in one call from a fresh simulation (its
+    passes of 80 steps summed on every core), are the same bits. What would be wrong: the two sets' knots kept in
+    one store (frames ask them in turn), a knot kept from another time, or a step summed differently on one core
+    and on many."""
     records = []
     for one_by_one in (True, False):
         sim = Simulation(transit, wake=False)
+        n = sim.components(0).omega.size
+        assert n < along.EVERY_CORE_FROM <= along.KNOTS_PER_PASS * 5 * n, "a time on one core, a pass on every core"
         sim.advance_to(20.0)
         sim.change(hs_factor=1.3, ramp_s=30.0)
         sim.advance_to(30.0)

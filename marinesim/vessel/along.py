@@ -14,7 +14,7 @@ turn faster than that. The derivatives follow the product rule (exact for that i
   p`` in the Earth frame.
 
 On a straight track this is :class:`~marinesim.vessel.response.Response`'s sum, to rounding. The sum runs in a
-compiled loop over time steps and components (numba, the time steps on every core).
+compiled loop over time steps and components (numba; a long pass's time steps on every core).
 """
 
 from __future__ import annotations
@@ -45,6 +45,10 @@ asked one by one (a frame's pose) and the next pass of :func:`linear_along` find
 each: 19 MB at 50,000 components)."""
 KNOT_SETS_KEPT = 2
 """Component sets whose :class:`Knots` a body keeps, the newest asked: a sea change blends two."""
+EVERY_CORE_FROM = 200_000
+"""Time steps times components from which a pass is summed on every core (about 40 ms of one core's work): a
+smaller one, as a frame's few steps or a recorder's one, costs less on one core than waking the others, which a
+busy machine may not have free. Each step is summed the same way on either path, to the same bits."""
 
 
 @dataclass(frozen=True)
@@ -114,7 +118,8 @@ def linear_along(knots: Knots, points: dict[str, tuple[float, float, float]],
         at = path_at(np.maximum(np.arange(lo_knot - 1, hi_knot + 2) * KNOT_S, 0.0))
         motion = np.stack([knots.motion(psi, speed) for psi, speed in zip(at.heading, at.speed)])  # (knots, n, 6)
         rows = np.flatnonzero((interval >= lo_knot) & (interval < hi_knot))
-        _sum(times[rows], interval[rows] - lo_knot, weights[rows], path.x[rows], path.y[rows], path.vx[rows],
+        summed = _sum_on_every_core if rows.size * c.omega.size >= EVERY_CORE_FROM else _sum
+        summed(times[rows], interval[rows] - lo_knot, weights[rows], path.x[rows], path.y[rows], path.vx[rows],
              path.vy[rows], path.ax[rows], path.ay[rows], np.ascontiguousarray(px[rows]),
              np.ascontiguousarray(py[rows]), c.omega, c.kx, c.ky, c.amplitude, motion, out, rows)
     return out
@@ -132,40 +137,53 @@ def _catmull_rom(s: np.ndarray) -> np.ndarray:
     return np.stack([value, slope / KNOT_S, curve / KNOT_S**2], axis=1)
 
 
-@compiled(parallel=True)
-def _sum(t, knot, weights, x, y, vx, vy, ax, ay, px, py, omega, kx, ky, amplitude, motion, out, rows):
-    """The sums of the module for each time step (row ``rows[j]`` of ``out``): 6 motions, their rates and
+@compiled
+def _row(j, t, knot, weights, x, y, vx, vy, ax, ay, px, py, omega, kx, ky, amplitude, motion, out, rows):
+    """The sums of the module for time step ``j`` into row ``rows[j]`` of ``out``: 6 motions, their rates and
     accelerations, the elevation at the reference point and at each point. ``motion[knot[j] + m]`` for m in 0..3
     are the knots around step j, ``weights[j]`` their Catmull-Rom weights."""
     points = px.shape[1]
-    for j in numba.prange(t.size):
-        k = knot[j]
-        w = weights[j]
-        acc = np.zeros(19 + points)
-        for i in range(omega.size):
-            phase = omega[i] * t[j] - kx[i] * x[j] - ky[i] * y[j]
-            ce, se = math.cos(phase), math.sin(phase)
-            we = omega[i] - kx[i] * vx[j] - ky[i] * vy[j]
-            wd = -(kx[i] * ax[j] + ky[i] * ay[j])
-            fr, fi = -we * se, we * ce                                  # i w_e e^{i phi}
-            gr, gi = -we * we * ce - wd * se, -we * we * se + wd * ce   # (i dw_e/dt - w_e^2) e^{i phi}
-            for d in range(6):
-                hr = hi = dhr = dhi = ddhr = ddhi = 0.0  # the knots' sums, real and imaginary parts apart
-                for m in range(4):
-                    q = motion[k + m, i, d]
-                    qr, qi = q.real, q.imag
-                    hr += w[0, m] * qr
-                    hi += w[0, m] * qi
-                    dhr += w[1, m] * qr
-                    dhi += w[1, m] * qi
-                    ddhr += w[2, m] * qr
-                    ddhi += w[2, m] * qi
-                acc[d] += hr * ce - hi * se
-                acc[6 + d] += dhr * ce - dhi * se + hr * fr - hi * fi
-                acc[12 + d] += ddhr * ce - ddhi * se + 2.0 * (dhr * fr - dhi * fi) + hr * gr - hi * gi
-            a = amplitude[i]
-            acc[18] += a.real * ce - a.imag * se
-            for p in range(points):
-                shifted = phase - kx[i] * px[j, p] - ky[i] * py[j, p]
-                acc[19 + p] += a.real * math.cos(shifted) - a.imag * math.sin(shifted)
-        out[rows[j], :] = acc
+    k = knot[j]
+    w = weights[j]
+    acc = np.zeros(19 + points)
+    for i in range(omega.size):
+        phase = omega[i] * t[j] - kx[i] * x[j] - ky[i] * y[j]
+        ce, se = math.cos(phase), math.sin(phase)
+        we = omega[i] - kx[i] * vx[j] - ky[i] * vy[j]
+        wd = -(kx[i] * ax[j] + ky[i] * ay[j])
+        fr, fi = -we * se, we * ce                                  # i w_e e^{i phi}
+        gr, gi = -we * we * ce - wd * se, -we * we * se + wd * ce   # (i dw_e/dt - w_e^2) e^{i phi}
+        for d in range(6):
+            hr = hi = dhr = dhi = ddhr = ddhi = 0.0  # the knots' sums, real and imaginary parts apart
+            for m in range(4):
+                q = motion[k + m, i, d]
+                qr, qi = q.real, q.imag
+                hr += w[0, m] * qr
+                hi += w[0, m] * qi
+                dhr += w[1, m] * qr
+                dhi += w[1, m] * qi
+                ddhr += w[2, m] * qr
+                ddhi += w[2, m] * qi
+            acc[d] += hr * ce - hi * se
+            acc[6 + d] += dhr * ce - dhi * se + hr * fr - hi * fi
+            acc[12 + d] += ddhr * ce - ddhi * se + 2.0 * (dhr * fr - dhi * fi) + hr * gr - hi * gi
+        a = amplitude[i]
+        acc[18] += a.real * ce - a.imag * se
+        for p in range(points):
+            shifted = phase - kx[i] * px[j, p] - ky[i] * py[j, p]
+            acc[19 + p] += a.real * math.cos(shifted) - a.imag * math.sin(shifted)
+    out[rows[j], :] = acc
+
+
+@compiled
+def _sum(*args):
+    """:func:`_row` for each time step, one after another."""
+    for j in range(args[0].size):
+        _row(j, *args)
+
+
+@compiled(parallel=True)
+def _sum_on_every_core(*args):
+    """:func:`_row` for each time step, the steps on every core."""
+    for j in numba.prange(args[0].size):
+        _row(j, *args)
