@@ -74,23 +74,28 @@ class Ship:
             rudder, r_ref = self.autopilot.command(s.psi, s.r, orders.course, math.hypot(s.u, s.v))
         else:
             rudder, r_ref = orders.rudder, 0.0
-        gear, engine, model = self.steering, self.engine, self.model
+        gear, engine, accelerations = self.steering, self.engine, self.model.accelerations
         rudder, rps = gear.held(rudder), engine.held(orders.rps)
         d0, n0 = s.delta, s.n
+        half, sixth = 0.5 * h, h / 6.0
+        # the rudder and the propeller at the stages' times (the step's start, middle and end), exact
+        actuators = [(gear.angle(d0, rudder, tau), engine.rps(n0, rps, tau)) for tau in (0.0, half, h)]
 
-        def f(tau: float, y: tuple[float, ...]) -> tuple[float, ...]:
-            _, _, psi, u, v, r, p, phi = y
-            du, dv, dr, dp = model.accelerations(u, v, r, p, phi, gear.angle(d0, rudder, tau), engine.rps(n0, rps, tau))
-            return _kinematics(psi, u, v, r, phi) + (du, dv, dr, dp, p)
+        def f(stage: int, north: float, east: float, psi: float, u: float, v: float, r: float, p: float,
+              phi: float) -> tuple[float, ...]:
+            """The derivatives of (north, east, psi, u, v, r, p, phi) at the time of ``stage`` (0, 1, 2)."""
+            du, dv, dr, dp = accelerations(u, v, r, p, phi, *actuators[stage])
+            c, sn, cphi = math.cos(psi), math.sin(psi), math.cos(phi)
+            return u * c - v * cphi * sn, u * sn + v * cphi * c, r * cphi, du, dv, dr, dp, p
 
         y0 = (s.north, s.east, s.psi, s.u, s.v, s.r, s.p, s.phi)
-        k1 = f(0.0, y0)
-        k2 = f(0.5 * h, tuple(a + 0.5 * h * b for a, b in zip(y0, k1)))
-        k3 = f(0.5 * h, tuple(a + 0.5 * h * b for a, b in zip(y0, k2)))
-        k4 = f(h, tuple(a + h * b for a, b in zip(y0, k3)))
-        y = tuple(a + h / 6.0 * (b1 + 2.0 * b2 + 2.0 * b3 + b4) for a, b1, b2, b3, b4 in zip(y0, k1, k2, k3, k4))
-        return ShipState(*y, delta=gear.angle(d0, rudder, h), n=engine.rps(n0, rps, h), rudder_order=rudder,
-                         r_ref=r_ref), k1
+        k1 = f(0, *y0)
+        k2 = f(1, *[a + half * b for a, b in zip(y0, k1)])
+        k3 = f(1, *[a + half * b for a, b in zip(y0, k2)])
+        k4 = f(2, *[a + h * b for a, b in zip(y0, k3)])
+        y = [a + sixth * (b1 + 2.0 * b2 + 2.0 * b3 + b4) for a, b1, b2, b3, b4 in zip(y0, k1, k2, k3, k4)]
+        delta, n = actuators[2]
+        return ShipState(*y, delta=delta, n=n, rudder_order=rudder, r_ref=r_ref), k1
 
     def settled(self, s: ShipState, orders: Orders, rates: tuple[float, ...]) -> bool:
         """Whether ``s`` is a straight run at constant speed under ``orders`` to within what no output shows
@@ -209,8 +214,3 @@ class Ship:
     def with_autopilot(self, autopilot: Autopilot) -> Ship:
         return replace(self, autopilot=autopilot)
 
-
-def _kinematics(psi: float, u: float, v: float, r: float, phi: float) -> tuple[float, float, float]:
-    """(d north/dt, d east/dt, d psi/dt) (m/s, rad/s)."""
-    c, s, cphi = math.cos(psi), math.sin(psi), math.cos(phi)
-    return (u * c - v * cphi * s, u * s + v * cphi * c, r * cphi)

@@ -170,9 +170,8 @@ def _interpolated(record: Record, name: str, index: int, level: float) -> float:
 
 def turning_circle(ship: Ship, speed: float, side: int) -> Turning:
     """The hard-over turning circle to starboard (``side`` +1) or port (-1) from ``speed`` (m/s)."""
-    rudder = side * ship.steering.max_angle
-    record = _run(ship, speed, lambda s, c: Orders(rudder=rudder, rps=ship.rps_for_speed(speed)),
-                  lambda s, c: abs(c) >= 720.0)
+    rudder, rps = side * ship.steering.max_angle, ship.rps_for_speed(speed)
+    record = _run(ship, speed, lambda s, c: Orders(rudder=rudder, rps=rps), lambda s, c: abs(c) >= 720.0)
     i90, i180 = _at(record, record.heading, 90.0), _at(record, record.heading, 180.0)
     i540, i720 = _at(record, record.heading, 540.0), len(record.time) - 1
 
