@@ -34,15 +34,18 @@ def cache_root() -> Path:
     raise MarinesimError("no home folder to keep the cache in: set MARINESIM_CACHE_DIR")
 
 
-def store(path: Path, save: Callable[[Path], None]) -> None:
-    """Write the cache file ``path`` with ``save(path)`` (an atomic writer, as all of marinesim's are); if it
-    cannot be written, the process's first such failure is logged as a one-line warning and nothing raised."""
+def store(path: Path, save: Callable[[Path], None]) -> bool:
+    """Write the cache file ``path`` with ``save(path)`` (an atomic writer, as all of marinesim's are); whether it
+    was written. If it cannot be, the process's first such failure is logged as a one-line warning and nothing
+    raised."""
     global _warned
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
         save(path)
+        return True
     except (OSError, MarinesimError) as error:
         if not _warned:
             _warned = True
             failure = f"cannot write {error.filename}: {error.strerror}" if isinstance(error, OSError) else error
             log.warning("marinesim: warning: %s; going on without the cache", failure)
+        return False

@@ -136,16 +136,20 @@ def cli(*args: str, cwd: Path | str | None = None, env: dict[str, str] | None = 
 @contextlib.contextmanager
 def _as_a_new_process() -> Iterator[None]:
     """What marinesim does once per process set as a new process has it (the cache's one warning not yet given, the
-    FFTW wisdom not yet read) for the block, and as it was after: a command run in-process warns as a user's would."""
+    FFTW wisdom not yet read, no wake kept for want of a cache) for the block, and as it was after: a command run
+    in-process warns, and computes, as a user's would."""
     import marinesim.cache
     import marinesim.sea.fft
+    import marinesim.wake.cache
+    from marinesim.recent import Newest
 
-    saved = marinesim.cache._warned, marinesim.sea.fft._wisdom_read
+    saved = marinesim.cache._warned, marinesim.sea.fft._wisdom_read, marinesim.wake.cache._unstored
     marinesim.cache._warned = marinesim.sea.fft._wisdom_read = False
+    marinesim.wake.cache._unstored = Newest(marinesim.wake.cache.UNSTORED_KEPT)
     try:
         yield
     finally:
-        marinesim.cache._warned, marinesim.sea.fft._wisdom_read = saved
+        marinesim.cache._warned, marinesim.sea.fft._wisdom_read, marinesim.wake.cache._unstored = saved
 
 
 def _python_warning_filters() -> None:

@@ -6,13 +6,17 @@ and WAKE_FORMAT (bumped whenever the numerics change). The folder is ``wake`` in
 :func:`~marinesim.cache.cache_root`. Entries are written atomically. An entry is used only if it
 is the wake its key names (format, hull, speed, rho, g, refinement, grid, array shapes and axes):
 an unreadable or mismatched one is recomputed and replaced. A cache that cannot be written is
-warned about once and done without (:func:`~marinesim.cache.store`).
+warned about once and done without (:func:`~marinesim.cache.store`); the wakes it could not take are kept in the
+process instead (the newest :data:`UNSTORED_KEPT`), so that a command asking twice (a run's pictures, then its
+video) computes each once.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import hashlib
 import json
+import threading
 from pathlib import Path
 from typing import Iterable
 
@@ -23,7 +27,15 @@ from marinesim.constants import RHO_SEAWATER, G
 from marinesim.errors import FileFormatError
 from marinesim.hull import Hull
 from marinesim.progress import task
+from marinesim.recent import Newest
 from marinesim.wake.compute import WAKE_FORMAT, Wake, WakeGrid, compute_wake
+
+
+UNSTORED_KEPT = 2
+"""Wakes kept in the process where the cache could not store them (about 4 MB each on the default grid)."""
+_unstored: Newest[Path, Wake] = Newest(UNSTORED_KEPT)
+"""By the file the cache could not write."""
+_unstored_lock = threading.Lock()  # a simulation asks for its wakes on a worker thread
 
 
 def cache_dir() -> Path:
@@ -39,8 +51,13 @@ def cache_key(hull: Hull, speed_m_s: float, grid: WakeGrid, rho: float, g: float
 
 def cached_wake(hull: Hull, speed_m_s: float, grid: WakeGrid = WakeGrid(), *, rho: float = RHO_SEAWATER,
                 g: float = G, refinement: float = 1.0, folder: Path | None = None) -> tuple[Wake, bool]:
-    """The wake from the cache, or computed and stored; and whether it came from the cache."""
+    """The wake from the cache (or kept in the process where the cache could not store it), or computed and stored;
+    and whether it came from either."""
     path = (folder or cache_dir()) / f"{cache_key(hull, speed_m_s, grid, rho, g, refinement)}.npz"
+    with _unstored_lock:
+        kept = _unstored.get(path, lambda: None) if path in _unstored else None
+    if kept is not None:
+        return dataclasses.replace(kept, info={**kept.info, "hull_source": hull.source}), True
     if path.is_file():
         try:
             wake = Wake.load(path)
@@ -50,7 +67,9 @@ def cached_wake(hull: Hull, speed_m_s: float, grid: WakeGrid = WakeGrid(), *, rh
             wake.info["hull_source"] = hull.source  # the same geometry may come from another file
             return wake, True
     wake = compute_wake(hull, speed_m_s, grid, rho=rho, g=g, refinement=refinement)
-    store(path, wake.save)
+    if not store(path, wake.save):
+        with _unstored_lock:
+            _unstored.get(path, lambda: dataclasses.replace(wake, info=dict(wake.info)))
     return wake, False
 
 
