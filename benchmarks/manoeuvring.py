@@ -9,6 +9,10 @@
    against the bare straight-track response in the same blocks (what the export computed before the dynamics),
    timed in the same run; and ten minutes of it through a hard-over turn (the manoeuvre's compiled sum), per
    simulated second.
+3. The motions of one time in a turn, as a frame or the live recorder asks for them (one row through the compiled
+   sum): on one core, as marinesim sums so small a call, against the same call woken on every core, timed in the
+   same run, on a quiet machine and with every other core kept busy (a second process spinning per core, as
+   another test worker or the renderer does).
 
 Run: ``python benchmarks/manoeuvring.py``.
 """
@@ -16,6 +20,7 @@ Run: ``python benchmarks/manoeuvring.py``.
 from __future__ import annotations
 
 import math
+import multiprocessing
 import os
 import platform
 import sys
@@ -33,6 +38,7 @@ from marinesim.scenario import load_scenario  # noqa: E402
 from marinesim.scenario.ship_file import load_ship  # noqa: E402
 from marinesim.session.assembly import Assembly  # noqa: E402
 from marinesim.session.timeline import Simulation  # noqa: E402
+from marinesim.vessel import along  # noqa: E402
 from response import best_of  # noqa: E402  (benchmarks/response.py, beside this one)
 
 
@@ -64,6 +70,28 @@ def bare_step() -> float:
         for _ in range(4):
             evaluate(1.0001, 0.9999)
     return (time.perf_counter() - start) / count
+
+
+def one_time_motions(scenario, every_core_from: int, count: int = 600) -> float:
+    """Mean seconds of the motions at one time (``Simulation.frame``) through a hard-over turn, 1/60 s apart, with
+    calls of ``every_core_from`` steps times components or more summed on every core."""
+    sim = Simulation(scenario, wake=False)
+    sim.order(rudder_deg=35.0)
+    sim.frame(np.array([30.0]))  # the knots' transfer functions of the turn's start
+    kept, along.EVERY_CORE_FROM = along.EVERY_CORE_FROM, every_core_from
+    try:
+        start = time.perf_counter()
+        for k in range(count):
+            sim.frame(np.array([30.0 + k / 60.0]))
+        return (time.perf_counter() - start) / count
+    finally:
+        along.EVERY_CORE_FROM = kept
+        sim.close()
+
+
+def _spin() -> None:
+    while True:
+        pass
 
 
 def main() -> None:
@@ -103,6 +131,18 @@ def main() -> None:
     t_turn = best_of(turn, 1)
     print(f"ten minutes at 20 Hz through a hard-over turn: {t_turn:.1f} s ({t_turn / 600.0 * 1000:.0f} ms per "
           f"simulated second, {t_turn / 12_000 * 1e3:.2f} ms a row)")
+
+    for load in ("quiet", "every other core busy"):
+        spinning = [multiprocessing.Process(target=_spin, daemon=True)
+                    for _ in range((os.cpu_count() or 1) - 1 if load != "quiet" else 0)]
+        for process in spinning:
+            process.start()
+        one = one_time_motions(scenario, along.EVERY_CORE_FROM)
+        every = one_time_motions(scenario, 0)
+        for process in spinning:
+            process.terminate()
+        print(f"the motions of one time in a turn, {load}: on one core {1e3 * one:.2f} ms, woken on every core "
+              f"{1e3 * every:.2f} ms: {every / one:.2f} x")
 
 
 if __name__ == "__main__":

@@ -31,8 +31,8 @@ IN_FLIGHT_PER_WORKER = 64
 """Tasks handed to the scheduler ahead of the results, per worker (a whole study is never submitted at once)."""
 ROWS_PER_CHUNK = 4096
 ONE_THREAD = {name: "1" for name in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS",
-                                     "NUMBA_NUM_THREADS", "MARINESIM_FFT_THREADS")}
-"""Environment of a worker process: one thread for every numeric library."""
+                                     "NUMBA_NUM_THREADS")}
+"""Environment of a worker process: one thread for every numeric library (a task's ocean asks FFTW for one itself)."""
 
 
 def _import_cluster():
