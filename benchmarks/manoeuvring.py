@@ -34,7 +34,7 @@ sys.path.insert(0, str(ROOT))
 
 from marinesim.constants import KNOT  # noqa: E402
 from marinesim.manoeuvring.voyage import Voyage  # noqa: E402
-from marinesim.scenario import load_scenario  # noqa: E402
+from marinesim.scenario import Scenario, load_scenario  # noqa: E402
 from marinesim.scenario.ship_file import load_ship  # noqa: E402
 from marinesim.session.assembly import Assembly  # noqa: E402
 from marinesim.session.timeline import Simulation  # noqa: E402
@@ -72,7 +72,7 @@ def bare_step() -> float:
     return (time.perf_counter() - start) / count
 
 
-def one_time_motions(scenario, every_core_from: int, count: int = 600) -> float:
+def one_time_motions(scenario: Scenario, every_core_from: int, count: int = 600) -> float:
     """Mean seconds of the motions at one time (``Simulation.frame``) through a hard-over turn, 1/60 s apart, with
     calls of ``every_core_from`` steps times components or more summed on every core."""
     sim = Simulation(scenario, wake=False)
@@ -90,6 +90,7 @@ def one_time_motions(scenario, every_core_from: int, count: int = 600) -> float:
 
 
 def _spin() -> None:
+    """Keep a core busy (a process of its own, until terminated)."""
     while True:
         pass
 
@@ -132,8 +133,9 @@ def main() -> None:
     print(f"ten minutes at 20 Hz through a hard-over turn: {t_turn:.1f} s ({t_turn / 600.0 * 1000:.0f} ms per "
           f"simulated second, {t_turn / 12_000 * 1e3:.2f} ms a row)")
 
+    spawn = multiprocessing.get_context("spawn")  # not a fork of a process whose numba and FFTW threads run
     for load in ("quiet", "every other core busy"):
-        spinning = [multiprocessing.Process(target=_spin, daemon=True)
+        spinning = [spawn.Process(target=_spin, daemon=True)
                     for _ in range((os.cpu_count() or 1) - 1 if load != "quiet" else 0)]
         for process in spinning:
             process.start()
@@ -141,6 +143,7 @@ def main() -> None:
         every = one_time_motions(scenario, 0)
         for process in spinning:
             process.terminate()
+            process.join()
         print(f"the motions of one time in a turn, {load}: on one core {1e3 * one:.2f} ms, woken on every core "
               f"{1e3 * every:.2f} ms: {every / one:.2f} x")
 

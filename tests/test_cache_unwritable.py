@@ -10,10 +10,12 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
+import marinesim.cache
 import marinesim.wake.cache
-from conftest import DEFAULT, HANG_S, ROOT, cli
+from conftest import DEFAULT, HANG_S, ROOT, cli, hang_guard
 from marinesim.constants import KNOT
 from marinesim.wake.compute import compute_wake
 from staging import tmpfs
@@ -36,7 +38,9 @@ def unwritable_cache(request, tmp_path):
 
 
 def _marinesim(args: list[str], cache: Path, cwd: Path) -> subprocess.CompletedProcess:
-    return cli(*args, cwd=cwd, env={**os.environ, "MARINESIM_CACHE_DIR": str(cache)})
+    """``marinesim *args`` in this process with its cache at ``cache``; a hang fails the test after HANG_S."""
+    with hang_guard(f"marinesim {args[0]}"):
+        return cli(*args, cwd=cwd, env={**os.environ, "MARINESIM_CACHE_DIR": str(cache)})
 
 
 def _one_warning(stderr: str) -> None:
@@ -77,6 +81,26 @@ def test_headless_run_goes_on_without_the_cache(unwritable_cache, tmp_path, monk
     _one_warning(done.stderr)
     assert {p.name for p in (tmp_path / "out").iterdir()} == HEADLESS_OUTPUTS
     assert computed == [pytest.approx(12.0 * KNOT)], computed
+
+
+def test_a_wake_the_cache_cannot_take_is_kept_read_only_in_the_process(tmp_path, monkeypatch):
+    """If this fails, a wake the cache could not store is computed again for the process's next request, or served
+    with arrays one caller could change under the next, or with the first computation's timings as if computed."""
+    from marinesim.hull import load_hull
+    from marinesim.recent import Newest
+    from marinesim.wake.cache import UNSTORED_KEPT, cached_wake
+    from marinesim.wake.compute import WakeGrid
+
+    monkeypatch.setattr(marinesim.wake.cache, "_unstored", Newest(UNSTORED_KEPT))
+    monkeypatch.setattr(marinesim.cache, "_warned", False)  # this process's one warning, given back after
+    (tmp_path / "cache").write_text("not a folder\n")
+    hull, grid = load_hull(ROOT / "hulls" / "wigley.stl"), WakeGrid(64, 32)
+    first, hit = cached_wake(hull, 9.0, grid, folder=tmp_path / "cache")
+    assert not hit and first.timings
+    again, hit = cached_wake(hull, 9.0, grid, folder=tmp_path / "cache")
+    assert hit and again.timings == {} and again.info == first.info
+    assert np.array_equal(again.elevation, first.elevation) and not again.elevation.flags.writeable
+    assert not cached_wake(hull, 10.0, grid, folder=tmp_path / "cache")[1], "another speed is another wake"
 
 
 def test_fftw_wisdom_that_cannot_be_saved_is_warned_about_once(tmp_path):

@@ -120,8 +120,8 @@ def linear_along(knots: Knots, points: dict[str, tuple[float, float, float]],
         rows = np.flatnonzero((interval >= lo_knot) & (interval < hi_knot))
         summed = _sum_on_every_core if rows.size * c.omega.size >= EVERY_CORE_FROM else _sum
         summed(times[rows], interval[rows] - lo_knot, weights[rows], path.x[rows], path.y[rows], path.vx[rows],
-             path.vy[rows], path.ax[rows], path.ay[rows], np.ascontiguousarray(px[rows]),
-             np.ascontiguousarray(py[rows]), c.omega, c.kx, c.ky, c.amplitude, motion, out, rows)
+               path.vy[rows], path.ax[rows], path.ay[rows], np.ascontiguousarray(px[rows]),
+               np.ascontiguousarray(py[rows]), c.omega, c.kx, c.ky, c.amplitude, motion, out, rows)
     return out
 
 
@@ -176,14 +176,14 @@ def _row(j, t, knot, weights, x, y, vx, vy, ax, ay, px, py, omega, kx, ky, ampli
 
 
 @compiled
-def _sum(*args):
-    """:func:`_row` for each time step, one after another."""
-    for j in range(args[0].size):
-        _row(j, *args)
+def _sum(t, *rest):
+    """:func:`_row` for each time step ``t`` (T,), one after another."""
+    for j in range(t.size):
+        _row(j, t, *rest)
 
 
 @compiled(parallel=True)
-def _sum_on_every_core(*args):
-    """:func:`_row` for each time step, the steps on every core."""
-    for j in numba.prange(args[0].size):
-        _row(j, *args)
+def _sum_on_every_core(t, *rest):
+    """:func:`_row` for each time step ``t`` (T,), the steps on every core."""
+    for j in numba.prange(t.size):
+        _row(np.int64(j), t, *rest)  # the serial driver's index type: one compiled kernel serves both

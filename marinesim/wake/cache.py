@@ -7,8 +7,9 @@ and WAKE_FORMAT (bumped whenever the numerics change). The folder is ``wake`` in
 is the wake its key names (format, hull, speed, rho, g, refinement, grid, array shapes and axes):
 an unreadable or mismatched one is recomputed and replaced. A cache that cannot be written is
 warned about once and done without (:func:`~marinesim.cache.store`); the wakes it could not take are kept in the
-process instead (the newest :data:`UNSTORED_KEPT`), so that a command asking twice (a run's pictures, then its
-video) computes each once.
+process instead (the newest :data:`UNSTORED_KEPT`, read-only), so that a command asking twice (a run's pictures, then
+its video) computes each once. A kept wake is not offered to the cache again (a disk freed meanwhile stays unused
+until the next process), and two threads asking for the same new wake at once both compute it.
 """
 
 from __future__ import annotations
@@ -32,7 +33,8 @@ from marinesim.wake.compute import WAKE_FORMAT, Wake, WakeGrid, compute_wake
 
 
 UNSTORED_KEPT = 2
-"""Wakes kept in the process where the cache could not store them (about 4 MB each on the default grid)."""
+"""Wakes kept in the process where the cache could not store them (about 17 MB each on the default grid: two
+2048 x 1024 float32 fields)."""
 _unstored: Newest[Path, Wake] = Newest(UNSTORED_KEPT)
 """By the file the cache could not write."""
 _unstored_lock = threading.Lock()  # a simulation asks for its wakes on a worker thread
@@ -57,7 +59,7 @@ def cached_wake(hull: Hull, speed_m_s: float, grid: WakeGrid = WakeGrid(), *, rh
     with _unstored_lock:
         kept = _unstored.get(path, lambda: None) if path in _unstored else None
     if kept is not None:
-        return dataclasses.replace(kept, info={**kept.info, "hull_source": hull.source}), True
+        return dataclasses.replace(kept, info={**kept.info, "hull_source": hull.source}, timings={}), True
     if path.is_file():
         try:
             wake = Wake.load(path)
@@ -69,8 +71,17 @@ def cached_wake(hull: Hull, speed_m_s: float, grid: WakeGrid = WakeGrid(), *, rh
     wake = compute_wake(hull, speed_m_s, grid, rho=rho, g=g, refinement=refinement)
     if not store(path, wake.save):
         with _unstored_lock:
-            _unstored.get(path, lambda: dataclasses.replace(wake, info=dict(wake.info)))
+            _unstored.get(path, lambda: _read_only_copy(wake))
     return wake, False
+
+
+def _read_only_copy(wake: Wake) -> Wake:
+    """``wake`` with copies of its arrays that cannot be written and of its info, and no timings: what the process
+    keeps, shared by every later request for it."""
+    arrays = {name: getattr(wake, name).copy() for name in ("elevation", "local", "x", "y", "sec", "amplitude")}
+    for array in arrays.values():
+        array.flags.writeable = False
+    return dataclasses.replace(wake, **arrays, info=dict(wake.info), timings={})
 
 
 def _is_entry_of(wake: Wake, hull: Hull, speed_m_s: float, grid: WakeGrid, rho: float, g: float,
