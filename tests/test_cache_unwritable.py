@@ -17,7 +17,10 @@ import marinesim.cache
 import marinesim.wake.cache
 from conftest import DEFAULT, HANG_S, ROOT, cli, hang_guard
 from marinesim.constants import KNOT
-from marinesim.wake.compute import compute_wake
+from marinesim.hull import load_hull
+from marinesim.recent import Newest
+from marinesim.wake.cache import UNSTORED_KEPT, cached_wake
+from marinesim.wake.compute import WakeGrid, compute_wake
 from staging import tmpfs
 
 WAKE = ["wake", str(ROOT / "hulls" / "wigley.stl"), "--speed-kn", "20", "--nx", "256", "--ny", "128", "--quiet"]
@@ -86,11 +89,6 @@ def test_headless_run_goes_on_without_the_cache(unwritable_cache, tmp_path, monk
 def test_a_wake_the_cache_cannot_take_is_kept_read_only_in_the_process(tmp_path, monkeypatch):
     """If this fails, a wake the cache could not store is computed again for the process's next request, or served
     with arrays one caller could change under the next, or with the first computation's timings as if computed."""
-    from marinesim.hull import load_hull
-    from marinesim.recent import Newest
-    from marinesim.wake.cache import UNSTORED_KEPT, cached_wake
-    from marinesim.wake.compute import WakeGrid
-
     monkeypatch.setattr(marinesim.wake.cache, "_unstored", Newest(UNSTORED_KEPT))
     monkeypatch.setattr(marinesim.cache, "_warned", False)  # this process's one warning, given back after
     (tmp_path / "cache").write_text("not a folder\n")

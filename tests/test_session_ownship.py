@@ -17,7 +17,6 @@ from marinesim.scenario import load_scenario
 from marinesim.session.assembly import Assembly
 from marinesim.session.timeline import Simulation
 from marinesim.vessel import along
-from marinesim.vessel.along import Knots
 from marinesim.vessel.response import motion_columns
 
 S175 = ROOT / "configs" / "training" / "heavy_weather_transit.toml"
@@ -112,7 +111,7 @@ def test_the_transfer_functions_kept_at_knots_are_those_of_their_own_heading_and
     another heading: each is the RAO table's transfer functions times the amplitudes at that heading and speed, as
     computed afresh. What would be wrong: a kept knot served for another heading or speed."""
     components = Assembly(transit).components()
-    knots = Knots(transit.vessel.rao, components)
+    knots = along.Knots(transit.vessel.rao, components)
     wave_heading = np.arctan2(components.ky, components.kx)
     asked = [(0.3, 5.0), (0.31, 5.0), (0.3, 4.0), (0.32, 4.0), (0.3, 5.0), (0.33, 3.0), (0.31, 4.0), (0.3, 4.0),
              (0.34, 3.0), (0.35, 2.0), (0.3, 5.0)]
