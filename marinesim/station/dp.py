@@ -94,14 +94,8 @@ class Dp:
 
     def reference(self, ref: np.ndarray, target: tuple[float, float, float], h: float) -> np.ndarray:
         """The set point (north, east, psi) ``h`` s after ``ref``, moving towards ``target`` within the limits."""
-        out = ref.copy()
-        gap = np.array([target[0] - ref[0], target[1] - ref[1]])
-        distance = math.hypot(*gap)
-        step = self.tuning.speed_limit * h
-        out[:2] = target[:2] if distance <= step else ref[:2] + gap * step / distance
-        turn = wrap(target[2] - ref[2])
-        out[2] = ref[2] + max(min(turn, self.tuning.rate_limit * h), -self.tuning.rate_limit * h)
-        return out
+        return _referenced(np.asarray(ref, float), float(target[0]), float(target[1]), float(target[2]), float(h),
+                           float(self.tuning.speed_limit), float(self.tuning.rate_limit))
 
     def reference_about(self, ref: np.ndarray, pivot: tuple[float, float, float, float], course: float, h: float
                         ) -> np.ndarray:
@@ -144,6 +138,22 @@ def _error(est: np.ndarray, ref: np.ndarray) -> np.ndarray:
     e = est[6:9] - ref
     e[2] = _wrapped(e[2])
     return e
+
+
+@compiled
+def _referenced(ref: np.ndarray, north: float, east: float, psi: float, h: float, speed_limit: float,
+                rate_limit: float) -> np.ndarray:
+    """:meth:`Dp.reference`: the set point (3,) ``h`` s after ``ref`` towards (``north``, ``east``, ``psi``)."""
+    out = ref.copy()
+    gap_north, gap_east = north - ref[0], east - ref[1]
+    distance = math.hypot(gap_north, gap_east)
+    step = speed_limit * h
+    if distance <= step:
+        out[0], out[1] = north, east
+    else:
+        out[0], out[1] = ref[0] + gap_north * step / distance, ref[1] + gap_east * step / distance
+    out[2] = ref[2] + max(min(_wrapped(psi - ref[2]), rate_limit * h), -rate_limit * h)
+    return out
 
 
 @compiled

@@ -23,6 +23,8 @@ GUST_GRID_S = 0.05
 """The gusts are computed in blocks on this grid (s): the 0.1 s steps and their Runge-Kutta half-steps ..."""
 GUST_BLOCK = 1200
 """... a minute at a time."""
+WINDS_KEPT = 4
+"""How many of the newest winds :meth:`Weather.wind` keeps by time."""
 
 
 @dataclass(frozen=True)
@@ -57,14 +59,15 @@ class Weather:
         self._current = current
         self._drift, self._wave_motion = drift, wave_motion
         self._gust_block = functools.lru_cache(maxsize=4)(self._gust_block)
-        self._last_load: tuple[tuple[float, float, float, float], np.ndarray] | None = None
-        """The newest wind load and its (t, psi, u, v): a step's DP cycle and its first stage ask the same."""
+        self._winds: dict[float, tuple[float, float]] = {}
+        """The newest winds by time (:data:`WINDS_KEPT`): a step asks at its start, middle and end, its end is the
+        next step's start, and the DP's wind sensor reads its start again."""
 
     def change(self, start: float, ramp_s: float, speed: float | None = None, from_rad: float | None = None) -> None:
         """The mean wind changes from ``start`` (s) over ``ramp_s`` (s) to ``speed`` (m/s) and/or ``from_rad``
         (rad), from the wind of that moment; later changes than ``start`` are dropped (asked again if wanted)."""
         self.changes = [c for c in self.changes if c.start < start] or self.changes[:1]
-        self._last_load = None
+        self._winds.clear()
         speed0, from0 = self.mean_wind(start)
         self.changes.append(WindChange(start, ramp_s, speed0, from0, speed0 if speed is None else speed,
                                        from0 if from_rad is None else from_rad))
@@ -79,9 +82,15 @@ class Weather:
 
     def wind(self, t: float) -> tuple[float, float]:
         """The wind at 10 m (m/s, from rad) at ``t`` (s): the mean and its gust."""
+        found = self._winds.get(t)
+        if found is not None:
+            return found
         speed, direction = self.mean_wind(t)
         if self.gusts is not None and speed > 0.0:
             speed = max(self._gust(t) * speed / self.gusts.u0, 0.0)
+        if len(self._winds) >= WINDS_KEPT:
+            del self._winds[next(iter(self._winds))]
+        self._winds[t] = speed, direction
         return speed, direction
 
     def _gust(self, t: float) -> float:
@@ -98,22 +107,17 @@ class Weather:
         return self.gusts.speeds(np.minimum(times, self.gusts.duration))
 
     def wind_load(self, t: float, psi: float, u: float, v: float) -> np.ndarray:
-        """The wind's load (X N, Y N, N N m; (3,), read-only) at ``t`` (s) on the vessel heading ``psi`` (rad) at
-        (``u``, ``v``) (m/s, body axes)."""
-        key, last = (t, psi, u, v), self._last_load
-        if last is not None and last[0] == key:
-            return last[1]
+        """The wind's load (X N, Y N, N N m; (3,)) at ``t`` (s) on the vessel heading ``psi`` (rad) at (``u``,
+        ``v``) (m/s, body axes)."""
         speed, direction = self.wind(t)
-        load = np.zeros(3) if speed <= 0.0 else np.asarray(self.wind_loads.force(u, v, psi, speed, direction))
-        load.flags.writeable = False
-        self._last_load = (key, load)
-        return load
+        return np.zeros(3) if speed <= 0.0 else self.wind_loads.force(u, v, psi, speed, direction)
+
+    def drift(self, t: float, psi: float) -> np.ndarray:
+        """The waves' slowly varying drift (X N, Y N, N N m; (3,)) at ``t`` (s) on heading ``psi`` (rad)."""
+        return np.zeros(3) if self._drift is None else self._drift(t, psi)
 
     def loads(self, t: float, north: float, east: float, psi: float, u: float, v: float, r: float) -> np.ndarray:
-        out = self.wind_load(t, psi, u, v)
-        if self._drift is not None:
-            out = out + self._drift(t, psi)
-        return out
+        return self.wind_load(t, psi, u, v) + self.drift(t, psi)
 
     def current(self, t: float) -> tuple[float, float]:
         return self._current

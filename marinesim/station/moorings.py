@@ -41,6 +41,7 @@ import numpy as np
 from scipy.interpolate import CubicSpline
 
 from marinesim.constants import RHO_SEAWATER, G
+from marinesim.compiled import compiled
 from marinesim.errors import ParameterError, require_finite, require_positive
 
 REACH_FRACTION = 0.15
@@ -197,18 +198,18 @@ class Moorings:
         if twice:
             raise ParameterError(f"line {twice[0]}: two lines of that name (line names must be unique)")
         self.names = tuple(names)
-        self._ends_at = tuple((float(line.anchor[0]), float(line.anchor[1]), float(line.fairlead[0]),
-                               float(line.fairlead[1])) for line in self.lines)
-        """Each line's far end (north m, east m) and fairlead (x m, y m), as plain floats."""
+        self._ends_at = np.array([(line.anchor[0], line.anchor[1], line.fairlead[0], line.fairlead[1])
+                                  for line in self.lines], dtype=float)
+        """Each line's far end (north m, east m) and fairlead (x m, y m), (n_lines, 4)."""
         self.mbl = np.array([line.type.mbl_n for line in self.lines])
         """Each line's minimum breaking load (N), (n_lines,)."""
         self.mbl.flags.writeable = False
-        spans = [span for *_, span in self._spans(0.0, 0.0, self.heading)]
+        spans = _spans(0.0, 0.0, self.heading, self._ends_at)[:, 2].tolist()
         tables = [(self._check_hawser if line.hawser else self._check_and_tabulate)(line, span)
                   for line, span in zip(self.lines, spans)]
         self._tabulate(tables, [line.hawser for line in self.lines])
         self.failed: frozenset[str] = frozenset()
-        self._intact = (1.0,) * len(self.lines)
+        self._intact = np.ones(len(self.lines))
         self._variants: dict[frozenset[str], Moorings] = {}
         if failed:
             self._fail(frozenset(failed))
@@ -304,26 +305,35 @@ class Moorings:
         return spans, hv
 
     def _tabulate(self, tables: list[tuple[np.ndarray, np.ndarray]], hold_slack: Sequence[bool]) -> None:
-        """Each line's cubic pieces of (H, V) against span, as plain floats (a step asks for a handful of lines,
-        where numpy's cost per call would be most of the time): (first span m, last span m, step m, last piece,
-        the pieces' coefficients (H3, V3, H2, V2, H1, V1, H0, V0) by piece, the ends' (H, V, dH/ds, dV/ds) at the
-        first and last span, the least V (N): 0, or none for a hawser); the lines of ``hold_slack`` (hawsers)
+        """Each line's cubic pieces of (H, V) against span, as :func:`_hv` reads them: ``_table`` (n_lines, 13) its
+        first span (m), last span (m), step (m), last piece, least V (N: 0, or none for a hawser) and the ends' (H,
+        V, dH/ds, dV/ds) at the first and last span; ``_pieces`` (all pieces, 8) the pieces' coefficients (H3, V3,
+        H2, V2, H1, V1, H0, V0), line ``i``'s from row ``_first[i]``. The lines of ``hold_slack`` (hawsers) are
         held at their slack end's values below their table."""
-        self._tables = []
+        rows, pieces, first = [], [], [0]
         for (spans, hv), hawser in zip(tables, hold_slack):
             spline = CubicSpline(spans, hv)
             slope = spline.derivative()
-            pieces = tuple(tuple(row) for row in spline.c.transpose(1, 0, 2).reshape(len(spans) - 1, 8).tolist())
+            pieces.append(spline.c.transpose(1, 0, 2).reshape(len(spans) - 1, 8))
+            first.append(first[-1] + len(spans) - 1)
             low = (*spline(spans[0]), *slope(spans[0]))
             high = (*spline(spans[-1]), *slope(spans[-1]))
             ends = (*low[:2], *((0.0, 0.0) if hawser else low[2:]), *high)
-            self._tables.append((float(spans[0]), float(spans[-1]), float(spans[1] - spans[0]), len(spans) - 2,
-                                 pieces, tuple(float(e) for e in ends), -math.inf if hawser else 0.0))
+            rows.append((spans[0], spans[-1], spans[1] - spans[0], len(spans) - 2, -math.inf if hawser else 0.0,
+                         *ends))
+        self._table, self._pieces = np.array(rows, dtype=float), np.ascontiguousarray(np.concatenate(pieces))
+        self._first = np.array(first[:-1], dtype=np.int64)
+
+    @property
+    def packed(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """What :func:`moorings_force` reads after the position: the lines' ends (n_lines, 4), their tables
+        (:meth:`_tabulate`) and which are intact (1.0) or parted (0.0), (n_lines,)."""
+        return self._ends_at, self._table, self._pieces, self._first, self._intact
 
     @property
     def span_range(self) -> np.ndarray:
         """Each line's tabulated horizontal span (m), (n_lines, 2): beyond it the tension is extrapolated."""
-        return np.array([table[:2] for table in self._tables])
+        return self._table[:, :2].copy()
 
     # -- failures -----------------------------------------------------------------------------------------------
 
@@ -349,7 +359,7 @@ class Moorings:
         if unknown:
             raise ParameterError(f"line {unknown[0]}: no such mooring line (lines: {', '.join(self.names)})")
         self.failed = failed
-        self._intact = tuple(0.0 if name in failed else 1.0 for name in self.names)
+        self._intact = np.array([0.0 if name in failed else 1.0 for name in self.names])
 
     def _pretensions(self) -> np.ndarray:
         tensions = self.tensions(0.0, 0.0, self.heading)
@@ -358,50 +368,14 @@ class Moorings:
 
     # -- loads --------------------------------------------------------------------------------------------------
 
-    def _spans(self, north: float, east: float, psi: float) -> list[tuple[float, float, float]]:
-        """From each fairlead to its anchor (or fixed point): north and east (m) and the horizontal span (m), one
-        tuple per line."""
-        c, s = math.cos(psi), math.sin(psi)
-        out = []
-        for anchor_north, anchor_east, x, y in self._ends_at:
-            d_north = anchor_north - (north + x * c - y * s)
-            d_east = anchor_east - (east + x * s + y * c)
-            out.append((d_north, d_east, math.hypot(d_north, d_east)))
-        return out
-
-    def _hv(self, i: int, span: float) -> tuple[float, float]:
-        """Line ``i``'s horizontal tension and vertical pull down (N) at its fairlead at horizontal ``span`` (m):
-        ``H`` >= 0, ``V`` >= 0 but for a hawser; both 0 for a parted line."""
-        lo, hi, step, last, pieces, ends, least = self._tables[i]
-        if math.isnan(span):
-            return math.nan, math.nan
-        if span < lo:
-            h, v = ends[0] + ends[2] * (span - lo), ends[1] + ends[3] * (span - lo)
-        elif span > hi:
-            h, v = ends[4] + ends[6] * (span - hi), ends[5] + ends[7] * (span - hi)
-        else:
-            k = min(max(math.floor((span - lo) / step), 0), last)
-            t = span - (lo + k * step)
-            h3, v3, h2, v2, h1, v1, h0, v0 = pieces[k]
-            h, v = ((h3 * t + h2) * t + h1) * t + h0, ((v3 * t + v2) * t + v1) * t + v0
-        intact = self._intact[i]
-        return max(h, 0.0) * intact, max(v, least) * intact
-
     def force(self, north: float, east: float, psi: float) -> np.ndarray:
         """The intact lines' pull on the vessel at (``north``, ``east``, ``psi``): (X N forward, Y N to starboard,
         N N m bow to starboard) in body axes about her origin, (3,)."""
-        c, s = math.cos(psi), math.sin(psi)
-        x_sum = y_sum = moment = 0.0
-        for i, ((d_north, d_east, span), (*_, x, y)) in enumerate(zip(self._spans(north, east, psi), self._ends_at)):
-            h = self._hv(i, span)[0] / max(span, 1e-9)
-            f_north, f_east = h * d_north, h * d_east
-            x_force, y_force = f_north * c + f_east * s, -f_north * s + f_east * c
-            x_sum, y_sum, moment = x_sum + x_force, y_sum + y_force, moment + (x * y_force - y * x_force)
-        return np.array([x_sum, y_sum, moment])
+        return np.array(moorings_force(north, east, psi, *self.packed))
 
     def tensions(self, north: float, east: float, psi: float) -> np.ndarray:
         """Each line's tension at its fairlead, ``hypot(H, V)`` (N), (n_lines,); 0 for a parted line."""
-        return np.array([math.hypot(*self._hv(i, span)) for i, (*_, span) in enumerate(self._spans(north, east, psi))])
+        return _tensions(north, east, psi, *self.packed)
 
     def stiffness(self, north: float = 0.0, east: float = 0.0, psi: float | None = None) -> np.ndarray:
         """The restoring stiffness ``K = -d(X, Y, N) / d(x, y, psi)`` (3, 3; N/m, N/rad, N m/m, N m/rad) at
@@ -417,6 +391,72 @@ class Moorings:
             minus = self.force(*(np.array([north, east, psi]) - h * move))
             k[:, j] = -(plus - minus) / (2.0 * h)
         return k
+
+
+# The lines' loads at a position, compiled: the simulation asks at each stage of each step.
+
+@compiled
+def _spans(north: float, east: float, psi: float, ends_at: np.ndarray) -> np.ndarray:
+    """From each fairlead to its far end, the vessel at (``north``, ``east``, ``psi``): north and east (m) and the
+    horizontal span (m), (n_lines, 3); ``ends_at`` (n_lines, 4) as :attr:`Moorings.packed`."""
+    c, s = math.cos(psi), math.sin(psi)
+    out = np.empty((ends_at.shape[0], 3))
+    for i in range(ends_at.shape[0]):
+        anchor_north, anchor_east, x, y = ends_at[i, 0], ends_at[i, 1], ends_at[i, 2], ends_at[i, 3]
+        d_north = anchor_north - (north + x * c - y * s)
+        d_east = anchor_east - (east + x * s + y * c)
+        out[i, 0], out[i, 1], out[i, 2] = d_north, d_east, math.hypot(d_north, d_east)
+    return out
+
+
+@compiled
+def _hv(i: int, span: float, table: np.ndarray, pieces: np.ndarray, first: np.ndarray, intact: np.ndarray
+        ) -> tuple[float, float]:
+    """Line ``i``'s horizontal tension and vertical pull down (N) at its fairlead at horizontal ``span`` (m):
+    ``H`` >= 0, ``V`` >= 0 but for a hawser; both 0 for a parted line. The cubic piece of its table, or a straight
+    line on from its ends."""
+    if math.isnan(span):
+        return math.nan, math.nan
+    lo, hi, step, last, least = table[i, 0], table[i, 1], table[i, 2], int(table[i, 3]), table[i, 4]
+    if span < lo:
+        h, v = table[i, 5] + table[i, 7] * (span - lo), table[i, 6] + table[i, 8] * (span - lo)
+    elif span > hi:
+        h, v = table[i, 9] + table[i, 11] * (span - hi), table[i, 10] + table[i, 12] * (span - hi)
+    else:
+        k = min(max(math.floor((span - lo) / step), 0), last)
+        t = span - (lo + k * step)
+        c = pieces[first[i] + k]  # H3, V3, H2, V2, H1, V1, H0, V0
+        h, v = ((c[0] * t + c[2]) * t + c[4]) * t + c[6], ((c[1] * t + c[3]) * t + c[5]) * t + c[7]
+    return max(h, 0.0) * intact[i], max(v, least) * intact[i]
+
+
+@compiled
+def moorings_force(north: float, east: float, psi: float, ends_at: np.ndarray, table: np.ndarray,
+                   pieces: np.ndarray, first: np.ndarray, intact: np.ndarray) -> tuple[float, float, float]:
+    """:meth:`Moorings.force` (X N, Y N, N N m) with the lines packed (:attr:`Moorings.packed`)."""
+    c, s = math.cos(psi), math.sin(psi)
+    spans = _spans(north, east, psi, ends_at)
+    x_sum = y_sum = moment = 0.0
+    for i in range(ends_at.shape[0]):
+        d_north, d_east, span = spans[i, 0], spans[i, 1], spans[i, 2]
+        h = _hv(i, span, table, pieces, first, intact)[0] / max(span, 1e-9)
+        f_north, f_east = h * d_north, h * d_east
+        x_force, y_force = f_north * c + f_east * s, -f_north * s + f_east * c
+        x, y = ends_at[i, 2], ends_at[i, 3]
+        x_sum, y_sum, moment = x_sum + x_force, y_sum + y_force, moment + (x * y_force - y * x_force)
+    return x_sum, y_sum, moment
+
+
+@compiled
+def _tensions(north: float, east: float, psi: float, ends_at: np.ndarray, table: np.ndarray, pieces: np.ndarray,
+              first: np.ndarray, intact: np.ndarray) -> np.ndarray:
+    """:meth:`Moorings.tensions` (N, (n_lines,)) with the lines packed (:attr:`Moorings.packed`)."""
+    spans = _spans(north, east, psi, ends_at)
+    out = np.empty(ends_at.shape[0])
+    for i in range(ends_at.shape[0]):
+        h, v = _hv(i, spans[i, 2], table, pieces, first, intact)
+        out[i] = math.hypot(h, v)
+    return out
 
 
 def _catenary(length: float, ea: float, weight: float, height: float, below: float, depth: float, span: float,

@@ -64,6 +64,9 @@ class Thrusters:
     _slices: tuple[slice, ...] = field(init=False, repr=False, compare=False)
     _lag: np.ndarray = field(init=False, repr=False, compare=False)
     _bounds: dict = field(init=False, repr=False, compare=False)
+    _all_free: tuple[bool, ...] = field(init=False, repr=False, compare=False)
+    _circles: np.ndarray = field(init=False, repr=False, compare=False)
+    """Each azimuth's first virtual force and rating (N), (n_azimuths, 2)."""
 
     def __post_init__(self) -> None:
         if not self.units:
@@ -90,6 +93,9 @@ class Thrusters:
         object.__setattr__(self, "_slices", tuple(slices))
         object.__setattr__(self, "_lag", lag)
         object.__setattr__(self, "_bounds", {})  # per set of lost thrusters (read-only): the DP asks every cycle
+        object.__setattr__(self, "_all_free", (True,) * self.width)
+        object.__setattr__(self, "_circles", np.array([(part.start, t.max_thrust) for t, part in zip(self.units, slices)
+                                                       if t.kind == "azimuth"], dtype=float).reshape(-1, 2))
 
     @property
     def width(self) -> int:
@@ -136,6 +142,10 @@ class Thrusters:
         ``lost`` thrusters give nothing, ``fixed`` ones (name -> their virtual forces) give what they are stuck at."""
         tau = np.asarray(tau, dtype=float)
         lo, hi = self.bounds(lost)
+        if not lost and not fixed:  # every thruster free, as a DP asks every cycle: the least-norm answer first
+            f = np.empty(self.width)
+            if _least_norm_within(self._least_norm(self._all_free), tau, lo, hi, self._circles, f):
+                return f
         free = np.ones(self.width, dtype=bool)
         f = np.zeros(self.width)
         slices = self.slices()
@@ -225,6 +235,27 @@ class Thrusters:
         miss = (self.b @ f - np.asarray(tau, float)) * np.array([1.0, 1.0, 1.0 / self.length])
         top = max(t.max_thrust for t in self.units)
         return bool(np.all(np.abs(miss) <= tolerance * top))
+
+
+@compiled
+def _least_norm_within(least_norm: np.ndarray, tau: np.ndarray, lo: np.ndarray, hi: np.ndarray, circles: np.ndarray,
+                       f: np.ndarray) -> bool:
+    """:meth:`Thrusters.allocate`'s least-norm answer ``least_norm @ tau`` ((m, 3) @ (3,)) into ``f`` (m,) with every
+    thruster free; whether it is the answer: finite, within the bounds ``lo``, ``hi`` (m,) and each azimuth's
+    resultant within its rating (``circles``: (first virtual force, rating N) rows), as np.allclose tells it from
+    the same forces pulled in to their circles."""
+    for i in range(f.size):
+        f[i] = least_norm[i, 0] * tau[0] + least_norm[i, 1] * tau[1] + least_norm[i, 2] * tau[2]
+        if not (math.isfinite(f[i]) and lo[i] - 1e-9 <= f[i] <= hi[i] + 1e-9):
+            return False
+    for row in range(circles.shape[0]):
+        j, rating = int(circles[row, 0]), circles[row, 1]
+        size = math.hypot(f[j], f[j + 1])
+        if size > rating:
+            for k in (j, j + 1):
+                if abs(f[k] * (rating / size) - f[k]) > 1e-8 + 1e-5 * abs(f[k]):
+                    return False
+    return True
 
 
 def bounded_least_squares(a: np.ndarray, target: np.ndarray, lower: np.ndarray, upper: np.ndarray,

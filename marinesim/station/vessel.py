@@ -29,12 +29,14 @@ from typing import Protocol
 
 import numpy as np
 
+from marinesim.compiled import compiled
 from marinesim.errors import ParameterError, require_within
 from marinesim.manoeuvring.autopilot import wrap
 from marinesim.manoeuvring.state import Orders, ShipState
 from marinesim.station.dp import Dp, rotation
-from marinesim.station.moorings import Moorings
+from marinesim.station.moorings import Moorings, moorings_force
 from marinesim.station.thrusters import Thrusters
+from marinesim.station.wind import WindLoads, wind_load_at
 
 EXTRA = ("z_north", "z_east", "z_psi", "xi1_north", "xi1_east", "xi1_psi", "xi2_north", "xi2_east", "xi2_psi",
          "eta_north", "eta_east", "eta_psi", "nu_u", "nu_v", "nu_r", "b_north", "b_east", "b_psi",
@@ -71,6 +73,15 @@ class Environment(Protocol):
     def wind_load(self, t: float, psi: float, u: float, v: float) -> np.ndarray:
         """The wind's load alone (3,): what the DP's wind sensor and the vessel's coefficients make of it."""
 
+    wind_loads: WindLoads | None
+    """The vessel's wind loads (None: no wind)."""
+
+    def wind(self, t: float) -> tuple[float, float]:
+        """The wind at 10 m (m/s, from rad clockwise from north) at ``t``, gusts and all."""
+
+    def drift(self, t: float, psi: float) -> np.ndarray:
+        """The waves' second-order load alone (X N, Y N, N N m; body axes), (3,), on heading ``psi`` (rad)."""
+
     def current(self, t: float) -> tuple[float, float]:
         """The current (north m/s, east m/s) at ``t``."""
 
@@ -82,10 +93,18 @@ class Environment(Protocol):
 class Calm:
     """No wind, no current, no waves."""
 
+    wind_loads = None
+
     def loads(self, t: float, north: float, east: float, psi: float, u: float, v: float, r: float) -> np.ndarray:
         return np.zeros(3)
 
     def wind_load(self, t: float, psi: float, u: float, v: float) -> np.ndarray:
+        return np.zeros(3)
+
+    def wind(self, t: float) -> tuple[float, float]:
+        return 0.0, 0.0
+
+    def drift(self, t: float, psi: float) -> np.ndarray:
         return np.zeros(3)
 
     def current(self, t: float) -> tuple[float, float]:
@@ -219,7 +238,10 @@ class Station:
 
     def step(self, s: ShipState, orders: Orders, h: float, t: float = 0.0) -> tuple[ShipState, tuple[float, ...]]:
         """The state ``h`` s after ``s`` (at ``t`` s) under ``orders``, and the derivatives of (north, east, psi,
-        u, v, r, p, phi) at ``s``."""
+        u, v, r, p, phi) at ``s``. What does not hang on her state is taken at the stages' times (start, middle, end
+        of the step) and handed to the compiled stages (:func:`_runge_kutta`): the thrusters' forces (their lags
+        exact over the step), the current, the wind, and the waves' drift on her heading at the step's start (she
+        turns under 0.02 deg in a step on DP, a fifth of the step the drift's heading is rounded to)."""
         extra = np.array(s.extra)
         n_dp = len(EXTRA)
         lines = self._lines(orders.faults)
@@ -227,39 +249,18 @@ class Station:
         f_order, lag = f_now, None
         if self.dp is not None:
             f_order, lag, extra[:n_dp] = self._dp_cycle(s, orders, extra[:n_dp], f_now, h, t)
-        m_inv, d, env, pull = self._m_inv, self._d, self.environment, self.pull
-        # the thrusters' force at the stages' times (start, middle, end of the step), their lags exact over it
-        thrusts = [np.zeros(3)] * 3 if lag is None else [
-            self.thrusters.b @ (f_order + (f_now - f_order) * np.exp(-tau / lag)) for tau in (0.0, 0.5 * h, h)]
-
-        def rates(stage: int, north: float, east: float, psi: float, u: float, v: float, r: float
-                  ) -> tuple[float, ...]:
-            """The derivatives of (north, east, psi, u, v, r) at the time of ``stage`` (0, 1, 2: the step's start,
-            middle and end)."""
-            at = t + 0.5 * h * stage
-            c, sn = math.cos(psi), math.sin(psi)
-            u_c, v_c = _in_body(env.current(at), psi)
-            relative = np.array([u - u_c, v - v_c, r])  # through the water
-            force = thrusts[stage] + env.loads(at, north, east, psi, u, v, r) - d @ relative
-            if pull:
-                force[0] -= pull
-            if lines is not None:
-                force += lines.force(north, east, psi)
-            du, dv, dr = (m_inv @ force).tolist()
-            return u * c - v * sn, u * sn + v * c, r, du, dv, dr
-
-        y0 = (float(s.north), float(s.east), float(s.psi), float(s.u), float(s.v), float(s.r))
-        half = 0.5 * h
-        k1 = rates(0, *y0)
-        k2 = rates(1, *(y + half * k for y, k in zip(y0, k1)))
-        k3 = rates(1, *(y + half * k for y, k in zip(y0, k2)))
-        k4 = rates(2, *(y + h * k for y, k in zip(y0, k3)))
-        sixth = h / 6.0
-        y = [y + sixth * (a + 2.0 * b + 2.0 * c + e) for y, a, b, c, e in zip(y0, k1, k2, k3, k4)]
+        env = self.environment
+        times = (t, t + 0.5 * h, t + h)
+        thrusts = np.zeros((3, 3))
         if lag is not None:
-            extra[n_dp:] = f_order + (f_now - f_order) * np.exp(-h / lag)
-        after = ShipState(*y, r_ref=0.0, extra=tuple(extra.tolist()))
-        return after, (*k1, 0.0, 0.0)
+            extra[n_dp:] = _lagged(f_order, f_now, lag, self.thrusters.b, h, thrusts)
+        y, k1 = _runge_kutta(np.array([s.north, s.east, s.psi, s.u, s.v, s.r]), h, thrusts,
+                             np.array([env.current(at) for at in times]), np.array([env.wind(at) for at in times]),
+                             np.array([env.drift(at, s.psi) for at in times]), self.pull, self._m_inv, self._d,
+                             *(_NO_WIND if env.wind_loads is None else env.wind_loads.packed),
+                             *(_NO_LINES if lines is None else lines.packed))
+        after = ShipState(*y.tolist(), r_ref=0.0, extra=tuple(extra.tolist()))
+        return after, (*k1.tolist(), 0.0, 0.0)
 
     def _dp_cycle(self, s: ShipState, orders: Orders, dp: np.ndarray, f_now: np.ndarray, h: float, t: float
                   ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -274,7 +275,7 @@ class Station:
         stuck = {name: thrusters.stuck(name)
                  for name in (f.partition(":")[2] for f in orders.faults if f.startswith("drive-off:"))}
         f_order = thrusters.allocate(tau, lost - stuck.keys(), stuck)
-        saturated = (np.abs(thrusters.b @ f_order - tau) > 1e-3 * np.abs(tau).max() + 1.0).any()
+        saturated = _short(thrusters.b, f_order, tau)
         out = dp.copy()
         out[OBSERVER] = computer.observe(est, measured, thrusters.b @ f_now, h)
         if not saturated:
@@ -326,6 +327,88 @@ class Station:
         if self.dp is None:
             return np.zeros((len(extra), 3))
         return extra[:, SET_POINT]
+
+
+_NO_WIND = (np.empty(0), np.empty(0), np.empty((3, 0)), 1.0, 1.0, 1.0, 1.0)
+_NO_LINES = (np.empty((0, 4)), np.empty((0, 13)), np.empty((0, 8)), np.empty(0, dtype=np.int64), np.empty(0))
+"""No wind loads (:attr:`WindLoads.packed`'s shape) and no lines (:attr:`Moorings.packed`'s) for
+:func:`_runge_kutta`."""
+
+
+@compiled
+def _lagged(f_order: np.ndarray, f_now: np.ndarray, lag: np.ndarray, b: np.ndarray, h: float, thrusts: np.ndarray
+            ) -> np.ndarray:
+    """The virtual forces (m,) ``h`` s on from ``f_now`` following their orders ``f_order`` with time constants
+    ``lag`` (s), exactly (first order); their force (X N, Y N, N N m) at the step's start, middle and end into
+    ``thrusts`` (3, 3) through ``b`` (3, m)."""
+    for stage in range(3):
+        f = f_order + (f_now - f_order) * np.exp(-(0.5 * h * stage) / lag)
+        for i in range(3):
+            thrusts[stage, i] = 0.0
+            for j in range(f.size):
+                thrusts[stage, i] += b[i, j] * f[j]
+    return f_order + (f_now - f_order) * np.exp(-h / lag)
+
+
+@compiled
+def _short(b: np.ndarray, f: np.ndarray, tau: np.ndarray) -> bool:
+    """Whether the virtual forces ``f`` (m,) through ``b`` (3, m) fall short of the demand ``tau`` (3,): a component
+    off by more than 1e-3 of the demand's largest and 1 N (the thrusters saturate)."""
+    slack = 1e-3 * max(abs(tau[0]), abs(tau[1]), abs(tau[2])) + 1.0
+    for i in range(3):
+        given = 0.0
+        for j in range(f.size):
+            given += b[i, j] * f[j]
+        if abs(given - tau[i]) > slack:
+            return True
+    return False
+
+
+@compiled
+def _runge_kutta(y0: np.ndarray, h: float, thrusts: np.ndarray, current: np.ndarray, wind: np.ndarray,
+                 drift: np.ndarray, pull: float, m_inv: np.ndarray, d: np.ndarray, params: np.ndarray,
+                 angles: np.ndarray, table: np.ndarray, frontal_area: float, lateral_area: float, length: float,
+                 rho_air: float, ends_at: np.ndarray, lines: np.ndarray, pieces: np.ndarray, first: np.ndarray,
+                 intact: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The classical Runge-Kutta step of (north, east, psi, u, v, r) from ``y0`` (6,) over ``h`` (s), and the
+    derivatives at ``y0`` (6,). At the stages' times (start, middle, end; rows of (3, k)): the thrusters' force
+    ``thrusts`` (N, N, N m), the ``current`` (north, east m/s), the ``wind`` (m/s, from rad) and the waves'
+    ``drift`` (N, N, N m); ``pull`` (N) astern; the wind loads and the lines packed as :attr:`WindLoads.packed`
+    and :attr:`Moorings.packed` (none: empty)."""
+    with_wind = params.size + angles.size > 0
+
+    def rates(stage: int, y: np.ndarray) -> np.ndarray:
+        north, east, psi, u, v, r = y[0], y[1], y[2], y[3], y[4], y[5]
+        c, s = math.cos(psi), math.sin(psi)
+        u_c = current[stage, 0] * c + current[stage, 1] * s
+        v_c = current[stage, 1] * c - current[stage, 0] * s
+        relative = (u - u_c, v - v_c, r)  # through the water
+        load = (0.0, 0.0, 0.0)
+        if with_wind and wind[stage, 0] > 0.0:
+            load = wind_load_at(u, v, psi, wind[stage, 0], wind[stage, 1], params, angles, table, frontal_area,
+                                lateral_area, length, rho_air)
+        force = np.empty(3)
+        for i in range(3):
+            force[i] = thrusts[stage, i] + (load[i] + drift[stage, i]) - (
+                d[i, 0] * relative[0] + d[i, 1] * relative[1] + d[i, 2] * relative[2])
+        if pull:
+            force[0] -= pull
+        if ends_at.shape[0]:
+            x, y_, n = moorings_force(north, east, psi, ends_at, lines, pieces, first, intact)
+            force[0] += x
+            force[1] += y_
+            force[2] += n
+        out = np.empty(6)
+        out[0], out[1], out[2] = u * c - v * s, u * s + v * c, r
+        for i in range(3):
+            out[3 + i] = m_inv[i, 0] * force[0] + m_inv[i, 1] * force[1] + m_inv[i, 2] * force[2]
+        return out
+
+    k1 = rates(0, y0)
+    k2 = rates(1, y0 + 0.5 * h * k1)
+    k3 = rates(1, y0 + 0.5 * h * k2)
+    k4 = rates(2, y0 + h * k3)
+    return y0 + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4), k1
 
 
 def _in_body(current: tuple[float, float], psi: float) -> tuple[float, float]:

@@ -22,7 +22,6 @@ The load (Fossen 2021, sec. 10.1; ``rho_a`` = :data:`RHO_AIR`)::
 
 from __future__ import annotations
 
-import bisect
 import math
 import re
 from dataclasses import dataclass
@@ -30,6 +29,7 @@ from pathlib import Path
 
 import numpy as np
 
+from marinesim.compiled import compiled
 from marinesim.errors import FileFormatError, ParameterError, require_finite, require_positive
 from marinesim.formats import check_file
 
@@ -231,18 +231,18 @@ class WindCoefficients:
         """The yaw coefficient C_N at ``gamma`` (rad)."""
         return self(gamma)[2]
 
+    packed: tuple[np.ndarray, np.ndarray, np.ndarray]
+    """What :func:`coefficients_at` reads: Blendermann's parameters (8,), or a table's angles (n,) and rows (3, n);
+    the others empty."""
+
     def one(self, gamma: float) -> tuple[float, float, float]:
         """``(C_X, C_Y, C_N)`` at one angle ``gamma`` (rad, any real value) in plain floats, as the simulation asks
         at each stage of each step: the same values as ``self(gamma)``."""
-        return self._one(math.pi - (math.pi - gamma) % (2.0 * math.pi))  # _wrap's formula: Python's % is np.mod's
+        return coefficients_at(gamma, *self.packed)
 
     def _evaluate(self, gamma: np.ndarray) -> np.ndarray:
         """The coefficients (3,) + gamma's shape at ``gamma`` wrapped to (-pi, pi]."""
         raise NotImplementedError
-
-    def _one(self, gamma: float) -> tuple[float, float, float]:
-        """:meth:`_evaluate` at one wrapped angle, in plain floats (a subclass gives its own where that is faster)."""
-        return tuple(self._evaluate(np.asarray(gamma, dtype=float)).tolist())
 
 
 @dataclass(frozen=True)
@@ -321,10 +321,13 @@ class BlendermannCoefficients(WindCoefficients):
             raise ParameterError(f"s_l (the lateral area's centroid forward of midship) must lie within half the "
                                  f"length, {self.length / 2.0:g} m, got {s_l!r}")
         self.name = f"Blendermann (1994): {vessel_type}"
+        row = self.row
+        self.packed = (np.array([row.cd_t, row.cd_l_af_bow, row.cd_l_af_stern, row.delta, self.frontal_area,
+                                 self.lateral_area, self.s_l, self.length]), np.empty(0), np.empty((3, 0)))
 
     def _evaluate(self, gamma: np.ndarray) -> np.ndarray:
         if gamma.ndim == 0:
-            return np.array(self._one(float(gamma)))
+            return np.array(_blendermann(float(gamma), self.packed[0]))
         row, off = self.row, np.abs(gamma)
         cd_l_af = np.where(off <= math.pi / 2.0, row.cd_l_af_bow, row.cd_l_af_stern)
         cd_l = cd_l_af * self.frontal_area / self.lateral_area
@@ -333,15 +336,6 @@ class BlendermannCoefficients(WindCoefficients):
         cy = row.cd_t * np.sin(gamma) / den
         cn = (self.s_l / self.length - 0.18 * (off - math.pi / 2.0)) * cy
         return np.stack([cx, cy, cn])
-
-    def _one(self, gamma: float) -> tuple[float, float, float]:
-        """The same formulas in plain floats."""
-        row, off = self.row, abs(gamma)
-        cd_l_af = row.cd_l_af_bow if off <= math.pi / 2.0 else row.cd_l_af_stern
-        cd_l = cd_l_af * self.frontal_area / self.lateral_area
-        den = 1.0 - 0.5 * row.delta * (1.0 - cd_l / row.cd_t) * math.sin(2.0 * gamma) ** 2
-        cy = row.cd_t * math.sin(gamma) / den
-        return (-cd_l_af * math.cos(gamma) / den, cy, (self.s_l / self.length - 0.18 * (off - math.pi / 2.0)) * cy)
 
 
 class TabulatedCoefficients(WindCoefficients):
@@ -383,27 +377,57 @@ class TabulatedCoefficients(WindCoefficients):
         """The table's angles over the full circle 0..2 pi (rad)."""
         self.table = np.stack([cx, cy, cn])
         """C_X, C_Y, C_N at :attr:`angles`, (3, n)."""
-        self._angles, self._rows = self.angles.tolist(), self.table.tolist()
         self.name = name
+        self.packed = (np.empty(0), self.angles, np.ascontiguousarray(self.table))
 
     def _evaluate(self, gamma: np.ndarray) -> np.ndarray:
         if gamma.ndim == 0:
-            return np.array(self._one(float(gamma)))
+            return np.array(_tabulated(float(gamma), self.angles, self.packed[2]))
         turn = np.mod(gamma, 2.0 * math.pi)
         return np.stack([np.interp(turn, self.angles, row) for row in self.table])
 
-    def _one(self, gamma: float) -> tuple[float, float, float]:
-        """``(C_X, C_Y, C_N)`` at one angle ``gamma`` (rad, wrapped, or NaN), as np.interp gives them: np.interp's
-        arithmetic in plain floats."""
-        if math.isnan(gamma):
-            return math.nan, math.nan, math.nan
-        turn = gamma % (2.0 * math.pi)
-        angles, rows = self._angles, self._rows
-        j = bisect.bisect_right(angles, turn) - 1
-        if j >= len(angles) - 1 or angles[j] == turn:
-            return rows[0][j], rows[1][j], rows[2][j]
-        x0, step = angles[j], angles[j + 1] - angles[j]
-        return tuple((row[j + 1] - row[j]) / step * (turn - x0) + row[j] for row in rows)
+
+# One angle at a time, compiled: the simulation asks at each stage of each step (:func:`wind_load_at`).
+
+@compiled
+def coefficients_at(gamma: float, params: np.ndarray, angles: np.ndarray, table: np.ndarray
+                    ) -> tuple[float, float, float]:
+    """``(C_X, C_Y, C_N)`` at one angle ``gamma`` (rad, any real value; wrapped as :func:`_wrap`) of the coefficients
+    packed as :attr:`WindCoefficients.packed`: a table where ``angles`` has any, else Blendermann's."""
+    wrapped = math.pi - (math.pi - gamma) % (2.0 * math.pi)
+    if angles.size:
+        return _tabulated(wrapped, angles, table)
+    return _blendermann(wrapped, params)
+
+
+@compiled
+def _blendermann(gamma: float, params: np.ndarray) -> tuple[float, float, float]:
+    """:class:`BlendermannCoefficients`' formulas at one wrapped ``gamma`` (rad); ``params`` its (CD_t, CD_l_AF
+    bow, CD_l_AF stern, delta, A_F m^2, A_L m^2, s_L m, L m)."""
+    cd_t, bow, stern, delta, frontal, lateral, s_l, length = params[0], params[1], params[2], params[3], \
+        params[4], params[5], params[6], params[7]
+    off = abs(gamma)
+    cd_l_af = bow if off <= math.pi / 2.0 else stern
+    cd_l = cd_l_af * frontal / lateral
+    den = 1.0 - 0.5 * delta * (1.0 - cd_l / cd_t) * math.sin(2.0 * gamma) ** 2
+    cy = cd_t * math.sin(gamma) / den
+    return -cd_l_af * math.cos(gamma) / den, cy, (s_l / length - 0.18 * (off - math.pi / 2.0)) * cy
+
+
+@compiled
+def _tabulated(gamma: float, angles: np.ndarray, table: np.ndarray) -> tuple[float, float, float]:
+    """:class:`TabulatedCoefficients` at one wrapped ``gamma`` (rad, or NaN): np.interp's arithmetic over
+    ``angles`` (n,) and ``table`` (3, n)."""
+    if math.isnan(gamma):
+        return math.nan, math.nan, math.nan
+    turn = gamma % (2.0 * math.pi)
+    j = np.searchsorted(angles, turn, side="right") - 1
+    if j >= angles.size - 1 or angles[j] == turn:
+        return table[0, j], table[1, j], table[2, j]
+    x0, step = angles[j], angles[j + 1] - angles[j]
+    return ((table[0, j + 1] - table[0, j]) / step * (turn - x0) + table[0, j],
+            (table[1, j + 1] - table[1, j]) / step * (turn - x0) + table[1, j],
+            (table[2, j + 1] - table[2, j]) / step * (turn - x0) + table[2, j])
 
 
 def read_wind_coefficients(path: str | Path) -> TabulatedCoefficients:
@@ -495,6 +519,7 @@ def _check_angle(path: Path, line: int, angle: float, previous: float | None) ->
 # --- loads ------------------------------------------------------------------------------------------------------
 
 
+@compiled
 def relative_wind(u: float, v: float, psi: float, wind_speed: float, wind_from: float) -> tuple[float, float]:
     """The apparent wind: its speed ``V_r`` (m/s) and angle of attack ``gamma`` (rad, the module's convention) on a
     vessel heading ``psi`` (rad) at surge ``u`` and sway ``v`` (m/s) in a wind of ``wind_speed`` (m/s) from the
@@ -512,10 +537,20 @@ def wind_force(coefficients: WindCoefficients, frontal_area: float, lateral_area
     (m^2) and length ``length`` (m) heading ``psi`` (rad) at ``u``, ``v`` (m/s), in a wind of ``wind_speed`` (m/s,
     at 10 m) from the compass bearing ``wind_from`` (rad): the module's load formula at the apparent wind
     (:func:`relative_wind`). The areas must be the ones ``coefficients`` were made for."""
+    return np.array(wind_load_at(u, v, psi, wind_speed, wind_from, *coefficients.packed, frontal_area, lateral_area,
+                                 length, rho_air))
+
+
+@compiled
+def wind_load_at(u: float, v: float, psi: float, wind_speed: float, wind_from: float, params: np.ndarray,
+                 angles: np.ndarray, table: np.ndarray, frontal_area: float, lateral_area: float, length: float,
+                 rho_air: float) -> tuple[float, float, float]:
+    """:func:`wind_force` (X N, Y N, N N m) with the coefficients packed (:attr:`WindCoefficients.packed`):
+    compiled, for the stages of a step."""
     speed, gamma = relative_wind(u, v, psi, wind_speed, wind_from)
     q = 0.5 * rho_air * speed**2
-    cx, cy, cn = coefficients.one(gamma)
-    return np.array([q * cx * frontal_area, q * cy * lateral_area, q * cn * lateral_area * length])
+    cx, cy, cn = coefficients_at(gamma, params, angles, table)
+    return q * cx * frontal_area, q * cy * lateral_area, q * cn * lateral_area * length
 
 
 @dataclass(frozen=True)
@@ -547,6 +582,12 @@ class WindLoads:
                   rho_air: float = RHO_AIR) -> WindLoads:
         """A vessel with her coefficients read from ``path`` (:func:`read_wind_coefficients`)."""
         return cls(read_wind_coefficients(path), frontal_area, lateral_area, length, rho_air)
+
+    @property
+    def packed(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, float, float, float, float]:
+        """What :func:`wind_load_at` reads after the wind: the coefficients packed, the areas (m^2), the length (m)
+        and the air's density (kg/m^3)."""
+        return (*self.coefficients.packed, self.frontal_area, self.lateral_area, self.length, self.rho_air)
 
     def force(self, u: float, v: float, psi: float, wind_speed: float, wind_from: float) -> np.ndarray:
         """The load (X N, Y N, N N m), (3,), in a wind of ``wind_speed`` (m/s at 10 m) from the compass bearing
