@@ -202,6 +202,33 @@ def test_the_shuttle_tankers_thrust_balances_wind_current_and_the_waves_drift_on
     np.testing.assert_allclose(drift[:2], expected[:2], rtol=0.35)
 
 
+def test_a_steps_derivatives_are_her_equations_of_motion_with_every_load_the_weather_gives():
+    """The offshore loading exercise (her DP, her hawser, gusting wind, current, the waves' slow drift): at states
+    along her run, the derivatives her compiled step starts from equal her equations of motion assembled here from
+    the weather's and the lines' own loads, ``eta' = R(psi) nu``, ``M nu' = B f + wind + drift + D (nu_c - nu) +
+    lines``. What would be wrong if not: a load left out of the compiled stages or taken at another time, a current
+    or a line's pull in the wrong axes."""
+    from marinesim.scenario.schema import with_run
+    from marinesim.session.timeline import Simulation
+
+    scenario = with_run(load_scenario(ROOT / "configs" / "training" / "offshore_loading.toml"), duration=300.0)
+    sim = Simulation(scenario, wake=False)
+    ship, weather = sim.voyage.ship, sim.station.weather
+    assert ship.moorings is not None and ship.pull == 0.0
+    for t in (40.0, 150.0, 290.0):
+        s = sim.voyage.state(t)
+        _, rates = ship.step(s, sim.voyage.orders_at(t), 0.1, t)
+        cn, ce = weather.current(t)
+        c, sn = math.cos(s.psi), math.sin(s.psi)
+        through_water = np.array([s.u - (cn * c + ce * sn), s.v - (ce * c - cn * sn), s.r])
+        force = (ship.thrusters.b @ np.array(s.extra[len(EXTRA):]) + weather.wind_load(t, s.psi, s.u, s.v)
+                 + weather.drift(t, s.psi) - ship.d @ through_water + ship.moorings.force(s.north, s.east, s.psi))
+        assert np.abs(weather.drift(t, s.psi)).max() > 1e4 and np.abs(ship.moorings.force(s.north, s.east,
+                                                                                           s.psi)).max() > 1e4
+        expected = [s.u * c - s.v * sn, s.u * sn + s.v * c, s.r, *np.linalg.solve(ship.m, force)]
+        np.testing.assert_allclose(rates[:6], expected, rtol=1e-9, atol=1e-12)
+
+
 def test_a_session_log_keeps_the_station_files_and_its_replay_refuses_them_changed(tmp_path):
     """A session of the shuttle tanker on DP: its log keeps the sha256 of her station-keeping file and of the drift
     table beside her RAO set, as of her RAO and hull; once the station file has changed, replaying the log is

@@ -146,6 +146,7 @@ class Thrusters:
             f = np.empty(self.width)
             if _least_norm_within(self._least_norm(self._all_free), tau, lo, hi, self._circles, f):
                 return f
+            return self._bounded_answer(self._all_free, np.zeros(self.width), slice(None), tau, lo, hi)
         free = np.ones(self.width, dtype=bool)
         f = np.zeros(self.width)
         slices = self.slices()
@@ -164,6 +165,12 @@ class Thrusters:
                 and self._within_circles(f, free, least):
             f[free] = least
             return f
+        return self._bounded_answer(key, f, free, rest, lo, hi)
+
+    def _bounded_answer(self, key: tuple[bool, ...], f: np.ndarray, free: np.ndarray | slice, rest: np.ndarray,
+                        lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+        """``f`` (m,) with its ``free`` forces (``key``: which, as a tuple) the bounded problem's answer to ``rest``
+        (X N, Y N, N N m) within their bounds ``lo``, ``hi``, the azimuths then pulled in to their circles."""
         a, scale, top, inverses = self._bounded_problem(key, hi)
         target = np.concatenate([rest * scale / top, np.zeros(a.shape[1])])
         f[free], self._bounded[key] = bounded_least_squares(a, target, lo, np.maximum(hi, lo + 1e-12),
