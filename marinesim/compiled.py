@@ -8,6 +8,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 import numba
+import numpy as np
 
 
 def compiled(function: Callable | None = None, *, parallel: bool = False) -> Callable:
@@ -19,3 +20,11 @@ def compiled(function: Callable | None = None, *, parallel: bool = False) -> Cal
         return numba.njit(nogil=True, cache=True, parallel=parallel)(function)
     except RuntimeError:
         return numba.njit(nogil=True, parallel=parallel)(function)
+
+
+def read_only(*arrays: np.ndarray) -> tuple[np.ndarray, ...]:
+    """``arrays``, made read-only: the constants a compiled function is handed, each of one type (numba compiles a
+    function once per read-only-ness of its arrays)."""
+    for array in arrays:
+        array.flags.writeable = False
+    return arrays

@@ -188,7 +188,7 @@ def test_the_shuttle_tankers_thrust_balances_wind_current_and_the_waves_drift_on
     times = np.arange(300.0, 1500.0, 1.0)
     states = [sim.voyage.state(t) for t in times]
     thrust = np.array([ship.thrusters.b @ np.array(s.extra[len(EXTRA):]) for s in states]).mean(axis=0)
-    loads = np.array([weather.loads(t, s.north, s.east, s.psi, s.u, s.v, s.r) for t, s in zip(times, states)])
+    loads = np.array([weather.wind_load(t, s.psi, s.u, s.v) + weather.drift(t, s.psi) for t, s in zip(times, states)])
     wind = np.array([weather.wind_load(t, s.psi, s.u, s.v) for t, s in zip(times, states)])
     cn, ce = weather.current(0.0)
     current = np.array([ship.d @ np.array([cn * math.cos(s.psi) + ce * math.sin(s.psi),
@@ -202,12 +202,16 @@ def test_the_shuttle_tankers_thrust_balances_wind_current_and_the_waves_drift_on
     np.testing.assert_allclose(drift[:2], expected[:2], rtol=0.35)
 
 
-def test_a_steps_derivatives_are_her_equations_of_motion_with_every_load_the_weather_gives():
+def test_a_step_follows_her_equations_of_motion_with_every_load_the_weather_gives():
     """The offshore loading exercise (her DP, her hawser, gusting wind, current, the waves' slow drift): at states
     along her run, the derivatives her compiled step starts from equal her equations of motion assembled here from
     the weather's and the lines' own loads, ``eta' = R(psi) nu``, ``M nu' = B f + wind + drift + D (nu_c - nu) +
-    lines``. What would be wrong if not: a load left out of the compiled stages or taken at another time, a current
-    or a line's pull in the wrong axes."""
+    lines``; and over the step her state moves as scipy's adaptive Runge-Kutta integrates those equations (the
+    thrusters' forces following their orders, the wind and the drift at each time), to 1e-6 of the move. What
+    would be wrong if not: a load left out of the compiled stages or taken at another time, a current or a line's
+    pull in the wrong axes, a stage at the wrong time or weight."""
+    from scipy.integrate import solve_ivp
+
     from marinesim.scenario.schema import with_run
     from marinesim.session.timeline import Simulation
 
@@ -227,6 +231,27 @@ def test_a_steps_derivatives_are_her_equations_of_motion_with_every_load_the_wea
                                                                                            s.psi)).max() > 1e4
         expected = [s.u * c - s.v * sn, s.u * sn + s.v * c, s.r, *np.linalg.solve(ship.m, force)]
         np.testing.assert_allclose(rates[:6], expected, rtol=1e-9, atol=1e-12)
+
+    t, h = 150.0, 0.1
+    s = sim.voyage.state(t)
+    after, _ = ship.step(s, sim.voyage.orders_at(t), h, t)
+    lag, b = ship.thrusters.lag(), ship.thrusters.b
+    f_now, f_end = np.array(s.extra[len(EXTRA):]), np.array(after.extra[len(EXTRA):])
+    f_order = (f_end - f_now * np.exp(-h / lag)) / (1.0 - np.exp(-h / lag))  # what the DP ordered for the step
+
+    def equations(tau: float, y: np.ndarray) -> list[float]:
+        north, east, psi, u, v, r = y
+        cn, ce = weather.current(t + tau)
+        c, sn = math.cos(psi), math.sin(psi)
+        through_water = np.array([u - (cn * c + ce * sn), v - (ce * c - cn * sn), r])
+        force = (b @ (f_order + (f_now - f_order) * np.exp(-tau / lag)) + weather.wind_load(t + tau, psi, u, v)
+                 + weather.drift(t + tau, s.psi) - ship.d @ through_water + ship.moorings.force(north, east, psi))
+        return [u * c - v * sn, u * sn + v * c, r, *np.linalg.solve(ship.m, force)]
+
+    y0 = np.array([s.north, s.east, s.psi, s.u, s.v, s.r])
+    exact = solve_ivp(equations, (0.0, h), y0, rtol=1e-12, atol=1e-14).y[:, -1]
+    stepped = np.array([after.north, after.east, after.psi, after.u, after.v, after.r])
+    np.testing.assert_allclose(stepped - y0, exact - y0, rtol=1e-6, atol=1e-15)
 
 
 def test_a_session_log_keeps_the_station_files_and_its_replay_refuses_them_changed(tmp_path):

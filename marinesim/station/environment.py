@@ -60,8 +60,8 @@ class Weather:
         self._drift, self._wave_motion = drift, wave_motion
         self._gust_block = functools.lru_cache(maxsize=4)(self._gust_block)
         self._winds: dict[float, tuple[float, float]] = {}
-        """The newest winds by time (:data:`WINDS_KEPT`): a step asks at its start, middle and end, its end is the
-        next step's start, and the DP's wind sensor reads its start again."""
+        """The newest winds by time (:data:`WINDS_KEPT`): a step asks at its start, middle and end, and the DP's wind
+        sensor reads its start again."""
 
     def change(self, start: float, ramp_s: float, speed: float | None = None, from_rad: float | None = None) -> None:
         """The mean wind changes from ``start`` (s) over ``ramp_s`` (s) to ``speed`` (m/s) and/or ``from_rad``
@@ -115,9 +115,6 @@ class Weather:
     def drift(self, t: float, psi: float) -> np.ndarray:
         """The waves' slowly varying drift (X N, Y N, N N m; (3,)) at ``t`` (s) on heading ``psi`` (rad)."""
         return np.zeros(3) if self._drift is None else self._drift(t, psi)
-
-    def loads(self, t: float, north: float, east: float, psi: float, u: float, v: float, r: float) -> np.ndarray:
-        return self.wind_load(t, psi, u, v) + self.drift(t, psi)
 
     def current(self, t: float) -> tuple[float, float]:
         return self._current

@@ -41,7 +41,7 @@ import numpy as np
 from scipy.interpolate import CubicSpline
 
 from marinesim.constants import RHO_SEAWATER, G
-from marinesim.compiled import compiled
+from marinesim.compiled import compiled, read_only
 from marinesim.errors import ParameterError, require_finite, require_positive
 
 REACH_FRACTION = 0.15
@@ -198,8 +198,8 @@ class Moorings:
         if twice:
             raise ParameterError(f"line {twice[0]}: two lines of that name (line names must be unique)")
         self.names = tuple(names)
-        self._ends_at = np.array([(line.anchor[0], line.anchor[1], line.fairlead[0], line.fairlead[1])
-                                  for line in self.lines], dtype=float)
+        self._ends_at, = read_only(np.array([(line.anchor[0], line.anchor[1], line.fairlead[0], line.fairlead[1])
+                                             for line in self.lines], dtype=float))
         """Each line's far end (north m, east m) and fairlead (x m, y m), (n_lines, 4)."""
         self.mbl = np.array([line.type.mbl_n for line in self.lines])
         """Each line's minimum breaking load (N), (n_lines,)."""
@@ -209,7 +209,7 @@ class Moorings:
                   for line, span in zip(self.lines, spans)]
         self._tabulate(tables, [line.hawser for line in self.lines])
         self.failed: frozenset[str] = frozenset()
-        self._intact = np.ones(len(self.lines))
+        self._intact, = read_only(np.ones(len(self.lines)))
         self._variants: dict[frozenset[str], Moorings] = {}
         if failed:
             self._fail(frozenset(failed))
@@ -321,13 +321,14 @@ class Moorings:
             ends = (*low[:2], *((0.0, 0.0) if hawser else low[2:]), *high)
             rows.append((spans[0], spans[-1], spans[1] - spans[0], len(spans) - 2, -math.inf if hawser else 0.0,
                          *ends))
-        self._table, self._pieces = np.array(rows, dtype=float), np.ascontiguousarray(np.concatenate(pieces))
-        self._first = np.array(first[:-1], dtype=np.int64)
+        self._table, self._pieces, self._first = read_only(np.array(rows, dtype=float),
+                                                           np.ascontiguousarray(np.concatenate(pieces)),
+                                                           np.array(first[:-1], dtype=np.int64))
 
     @property
     def packed(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """What :func:`moorings_force` reads after the position: the lines' ends (n_lines, 4), their tables
-        (:meth:`_tabulate`) and which are intact (1.0) or parted (0.0), (n_lines,)."""
+        """What :func:`moorings_force` reads after the position (read-only): the lines' ends (n_lines, 4), their
+        tables (:meth:`_tabulate`) and which are intact (1.0) or parted (0.0), (n_lines,)."""
         return self._ends_at, self._table, self._pieces, self._first, self._intact
 
     @property
@@ -359,7 +360,7 @@ class Moorings:
         if unknown:
             raise ParameterError(f"line {unknown[0]}: no such mooring line (lines: {', '.join(self.names)})")
         self.failed = failed
-        self._intact = np.array([0.0 if name in failed else 1.0 for name in self.names])
+        self._intact, = read_only(np.array([0.0 if name in failed else 1.0 for name in self.names]))
 
     def _pretensions(self) -> np.ndarray:
         tensions = self.tensions(0.0, 0.0, self.heading)

@@ -146,7 +146,7 @@ class Thrusters:
             f = np.empty(self.width)
             if _least_norm_within(self._least_norm(self._all_free), tau, lo, hi, self._circles, f):
                 return f
-            return self._bounded_answer(self._all_free, np.zeros(self.width), slice(None), tau, lo, hi)
+            return self._bounded_answer(self._all_free, np.zeros(self.width), slice(None), tau, lo.copy(), hi.copy())
         free = np.ones(self.width, dtype=bool)
         f = np.zeros(self.width)
         slices = self.slices()

@@ -29,7 +29,7 @@ from typing import Protocol
 
 import numpy as np
 
-from marinesim.compiled import compiled
+from marinesim.compiled import compiled, read_only
 from marinesim.errors import ParameterError, require_within
 from marinesim.manoeuvring.autopilot import wrap
 from marinesim.manoeuvring.state import Orders, ShipState
@@ -67,9 +67,6 @@ FAULTS = ("thruster:NAME", "drive-off:NAME", "reference drift", "line:NAME")
 class Environment(Protocol):
     """What the weather does to a vessel at ``t`` (s), she at (north, east, psi) moving at (u, v, r)."""
 
-    def loads(self, t: float, north: float, east: float, psi: float, u: float, v: float, r: float) -> np.ndarray:
-        """The wind's and the waves' second-order loads (X N, Y N, N N m; body axes), (3,)."""
-
     def wind_load(self, t: float, psi: float, u: float, v: float) -> np.ndarray:
         """The wind's load alone (3,): what the DP's wind sensor and the vessel's coefficients make of it."""
 
@@ -94,9 +91,6 @@ class Calm:
     """No wind, no current, no waves."""
 
     wind_loads = None
-
-    def loads(self, t: float, north: float, east: float, psi: float, u: float, v: float, r: float) -> np.ndarray:
-        return np.zeros(3)
 
     def wind_load(self, t: float, psi: float, u: float, v: float) -> np.ndarray:
         return np.zeros(3)
@@ -180,7 +174,7 @@ class Station:
             self.thrusters.forget()
             env = self.environment
             current = np.asarray(self.d, float) @ np.array([*_in_body(env.current(0.0), psi), 0.0])
-            load = env.loads(0.0, 0.0, 0.0, psi, 0.0, 0.0, 0.0) + current
+            load = env.wind_load(0.0, psi, 0.0, 0.0) + env.drift(0.0, psi) + current
             if self.moorings is not None:
                 load = load + self.moorings.force(0.0, 0.0, psi)
             wind = env.wind_load(0.0, psi, 0.0, 0.0)
@@ -240,8 +234,9 @@ class Station:
         """The state ``h`` s after ``s`` (at ``t`` s) under ``orders``, and the derivatives of (north, east, psi,
         u, v, r, p, phi) at ``s``. What does not hang on her state is taken at the stages' times (start, middle, end
         of the step) and handed to the compiled stages (:func:`_runge_kutta`): the thrusters' forces (their lags
-        exact over the step), the current, the wind, and the waves' drift on her heading at the step's start (she
-        turns under 0.02 deg in a step on DP, a fifth of the step the drift's heading is rounded to)."""
+        exact over the step), the current, the wind, and the waves' drift on her heading at the step's start (at a
+        DP's fastest turn, 10 deg/min, she turns 0.017 deg in a 0.1 s step; the drift's heading is rounded to 0.1
+        deg)."""
         extra = np.array(s.extra)
         n_dp = len(EXTRA)
         lines = self._lines(orders.faults)
@@ -254,9 +249,11 @@ class Station:
         thrusts = np.zeros((3, 3))
         if lag is not None:
             extra[n_dp:] = _lagged(f_order, f_now, lag, self.thrusters.b, h, thrusts)
-        y, k1 = _runge_kutta(np.array([s.north, s.east, s.psi, s.u, s.v, s.r]), h, thrusts,
-                             np.array([env.current(at) for at in times]), np.array([env.wind(at) for at in times]),
-                             np.array([env.drift(at, s.psi) for at in times]), self.pull, self._m_inv, self._d,
+        y, k1 = _runge_kutta(np.array([s.north, s.east, s.psi, s.u, s.v, s.r], dtype=float), float(h), thrusts,
+                             np.array([env.current(at) for at in times], dtype=float),
+                             np.array([env.wind(at) for at in times], dtype=float),
+                             np.array([env.drift(at, s.psi) for at in times], dtype=float), float(self.pull),
+                             self._m_inv, self._d,
                              *(_NO_WIND if env.wind_loads is None else env.wind_loads.packed),
                              *(_NO_LINES if lines is None else lines.packed))
         after = ShipState(*y.tolist(), r_ref=0.0, extra=tuple(extra.tolist()))
@@ -329,10 +326,11 @@ class Station:
         return extra[:, SET_POINT]
 
 
-_NO_WIND = (np.empty(0), np.empty(0), np.empty((3, 0)), 1.0, 1.0, 1.0, 1.0)
-_NO_LINES = (np.empty((0, 4)), np.empty((0, 13)), np.empty((0, 8)), np.empty(0, dtype=np.int64), np.empty(0))
-"""No wind loads (:attr:`WindLoads.packed`'s shape) and no lines (:attr:`Moorings.packed`'s) for
-:func:`_runge_kutta`."""
+_NO_WIND = (*read_only(np.empty(0), np.empty(0), np.empty((3, 0))), 1.0, 1.0, 1.0, 1.0)
+"""No wind loads, packed as :attr:`WindLoads.packed` for :func:`_runge_kutta`."""
+_NO_LINES = read_only(np.empty((0, 4)), np.empty((0, 13)), np.empty((0, 8)), np.empty(0, dtype=np.int64),
+                       np.empty(0))
+"""No mooring lines, packed as :attr:`Moorings.packed`."""
 
 
 @compiled
@@ -384,7 +382,7 @@ def _runge_kutta(y0: np.ndarray, h: float, thrusts: np.ndarray, current: np.ndar
         v_c = current[stage, 1] * c - current[stage, 0] * s
         relative = (u - u_c, v - v_c, r)  # through the water
         load = (0.0, 0.0, 0.0)
-        if with_wind and wind[stage, 0] > 0.0:
+        if with_wind and not wind[stage, 0] <= 0.0:  # as Weather.wind_load: a NaN wind gives a NaN load
             load = wind_load_at(u, v, psi, wind[stage, 0], wind[stage, 1], params, angles, table, frontal_area,
                                 lateral_area, length, rho_air)
         force = np.empty(3)

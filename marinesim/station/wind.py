@@ -29,7 +29,7 @@ from pathlib import Path
 
 import numpy as np
 
-from marinesim.compiled import compiled
+from marinesim.compiled import compiled, read_only
 from marinesim.errors import FileFormatError, ParameterError, require_finite, require_positive
 from marinesim.formats import check_file
 
@@ -203,8 +203,7 @@ class Gusts:
 
 
 def _wrap(angle: float | np.ndarray) -> np.ndarray:
-    """An angle (rad) wrapped to (-pi, pi]; an array of its shape (:meth:`WindCoefficients.one`: the same in
-    floats)."""
+    """An angle (rad) wrapped to (-pi, pi]; an array of its shape (:func:`coefficients_at`: the same in floats)."""
     return np.pi - np.mod(np.pi - np.asarray(angle, dtype=float), 2.0 * np.pi)
 
 
@@ -232,13 +231,8 @@ class WindCoefficients:
         return self(gamma)[2]
 
     packed: tuple[np.ndarray, np.ndarray, np.ndarray]
-    """What :func:`coefficients_at` reads: Blendermann's parameters (8,), or a table's angles (n,) and rows (3, n);
-    the others empty."""
-
-    def one(self, gamma: float) -> tuple[float, float, float]:
-        """``(C_X, C_Y, C_N)`` at one angle ``gamma`` (rad, any real value) in plain floats, as the simulation asks
-        at each stage of each step: the same values as ``self(gamma)``."""
-        return coefficients_at(gamma, *self.packed)
+    """What :func:`coefficients_at` reads (every subclass sets it; read-only): Blendermann's parameters (8,), or a
+    table's angles (n,) and rows (3, n); the others empty."""
 
     def _evaluate(self, gamma: np.ndarray) -> np.ndarray:
         """The coefficients (3,) + gamma's shape at ``gamma`` wrapped to (-pi, pi]."""
@@ -322,8 +316,9 @@ class BlendermannCoefficients(WindCoefficients):
                                  f"length, {self.length / 2.0:g} m, got {s_l!r}")
         self.name = f"Blendermann (1994): {vessel_type}"
         row = self.row
-        self.packed = (np.array([row.cd_t, row.cd_l_af_bow, row.cd_l_af_stern, row.delta, self.frontal_area,
-                                 self.lateral_area, self.s_l, self.length]), np.empty(0), np.empty((3, 0)))
+        self.packed = read_only(np.array([row.cd_t, row.cd_l_af_bow, row.cd_l_af_stern, row.delta,
+                                           self.frontal_area, self.lateral_area, self.s_l, self.length], dtype=float),
+                                 np.empty(0), np.empty((3, 0)))
 
     def _evaluate(self, gamma: np.ndarray) -> np.ndarray:
         if gamma.ndim == 0:
@@ -378,11 +373,11 @@ class TabulatedCoefficients(WindCoefficients):
         self.table = np.stack([cx, cy, cn])
         """C_X, C_Y, C_N at :attr:`angles`, (3, n)."""
         self.name = name
-        self.packed = (np.empty(0), self.angles, np.ascontiguousarray(self.table))
+        self.packed = read_only(np.empty(0), self.angles.copy(), self.table.copy())
 
     def _evaluate(self, gamma: np.ndarray) -> np.ndarray:
         if gamma.ndim == 0:
-            return np.array(_tabulated(float(gamma), self.angles, self.packed[2]))
+            return np.array(_tabulated(float(gamma), *self.packed[1:]))
         turn = np.mod(gamma, 2.0 * math.pi)
         return np.stack([np.interp(turn, self.angles, row) for row in self.table])
 
@@ -537,8 +532,9 @@ def wind_force(coefficients: WindCoefficients, frontal_area: float, lateral_area
     (m^2) and length ``length`` (m) heading ``psi`` (rad) at ``u``, ``v`` (m/s), in a wind of ``wind_speed`` (m/s,
     at 10 m) from the compass bearing ``wind_from`` (rad): the module's load formula at the apparent wind
     (:func:`relative_wind`). The areas must be the ones ``coefficients`` were made for."""
-    return np.array(wind_load_at(u, v, psi, wind_speed, wind_from, *coefficients.packed, frontal_area, lateral_area,
-                                 length, rho_air))
+    return np.array(wind_load_at(float(u), float(v), float(psi), float(wind_speed), float(wind_from),
+                                 *coefficients.packed, float(frontal_area), float(lateral_area), float(length),
+                                 float(rho_air)))
 
 
 @compiled
@@ -587,7 +583,8 @@ class WindLoads:
     def packed(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, float, float, float, float]:
         """What :func:`wind_load_at` reads after the wind: the coefficients packed, the areas (m^2), the length (m)
         and the air's density (kg/m^3)."""
-        return (*self.coefficients.packed, self.frontal_area, self.lateral_area, self.length, self.rho_air)
+        return (*self.coefficients.packed, float(self.frontal_area), float(self.lateral_area), float(self.length),
+                float(self.rho_air))
 
     def force(self, u: float, v: float, psi: float, wind_speed: float, wind_from: float) -> np.ndarray:
         """The load (X N, Y N, N N m), (3,), in a wind of ``wind_speed`` (m/s at 10 m) from the compass bearing
