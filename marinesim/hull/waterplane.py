@@ -14,6 +14,7 @@ import weakref
 import numpy as np
 from matplotlib.path import Path as PolygonPath
 
+from marinesim.compiled import read_only
 from marinesim.hull.mesh import Hull
 from marinesim.hull.trimesh_held import trimesh
 
@@ -32,15 +33,9 @@ def waterline_loops(hull: Hull) -> tuple[np.ndarray, ...]:
     return the same read-only arrays."""
     loops = _LOOPS.get(id(hull))
     if loops is None:
-        loops = _LOOPS[id(hull)] = tuple(_read_only(loop) for loop in _section(hull))
+        loops = _LOOPS[id(hull)] = read_only(*_section(hull))
         weakref.finalize(hull, _LOOPS.pop, id(hull), None)
     return loops
-
-
-def _read_only(array: np.ndarray) -> np.ndarray:
-    """``array``, made read-only: shared by all who ask."""
-    array.flags.writeable = False
-    return array
 
 
 def _section(hull: Hull) -> list[np.ndarray]:

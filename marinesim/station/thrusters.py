@@ -57,7 +57,6 @@ class Thrusters:
     units: tuple[Thruster, ...]
     length: float
     b: np.ndarray = field(init=False, repr=False, compare=False)
-    azimuths: bool = field(init=False, repr=False, compare=False)
     _least: dict = field(init=False, repr=False, compare=False)
     _problems: dict = field(init=False, repr=False, compare=False)
     _bounded: dict = field(init=False, repr=False, compare=False)
@@ -80,7 +79,6 @@ class Thrusters:
             if t.kind in ("tunnel", "azimuth"):
                 columns.append((0.0, 1.0, t.x))
         object.__setattr__(self, "b", np.array(columns, dtype=float).T)
-        object.__setattr__(self, "azimuths", any(t.kind == "azimuth" for t in self.units))
         object.__setattr__(self, "_least", {})
         object.__setattr__(self, "_problems", {})
         object.__setattr__(self, "_bounded", {})  # per set of free forces: the last bounded answer's bounds held
@@ -208,12 +206,9 @@ class Thrusters:
         return self._problems[free]
 
     def _within_circles(self, f: np.ndarray, free: np.ndarray, values: np.ndarray) -> bool:
-        if not self.azimuths:
-            return True
         trial = f.copy()
         trial[free] = values
-        inside = self._onto_circles(trial.copy())
-        return bool((np.abs(inside - trial) <= 1e-8 + 1e-5 * np.abs(trial)).all())  # np.allclose's test, finite
+        return _inside_circles(trial, self._circles)
 
     def _onto_circles(self, f: np.ndarray) -> np.ndarray:
         """``f`` with each azimuth's resultant pulled in to its rating."""
@@ -249,12 +244,18 @@ def _least_norm_within(least_norm: np.ndarray, tau: np.ndarray, lo: np.ndarray, 
                        f: np.ndarray) -> bool:
     """:meth:`Thrusters.allocate`'s least-norm answer ``least_norm @ tau`` ((m, 3) @ (3,)) into ``f`` (m,) with every
     thruster free; whether it is the answer: finite, within the bounds ``lo``, ``hi`` (m,) and each azimuth's
-    resultant within its rating (``circles``: (first virtual force, rating N) rows), as np.allclose tells it from
-    the same forces pulled in to their circles."""
+    resultant within its rating (:func:`_inside_circles`)."""
     for i in range(f.size):
         f[i] = least_norm[i, 0] * tau[0] + least_norm[i, 1] * tau[1] + least_norm[i, 2] * tau[2]
         if not (math.isfinite(f[i]) and lo[i] - 1e-9 <= f[i] <= hi[i] + 1e-9):
             return False
+    return _inside_circles(f, circles)
+
+
+@compiled
+def _inside_circles(f: np.ndarray, circles: np.ndarray) -> bool:
+    """Whether each azimuth's resultant in ``f`` (m,) is within its rating (``circles``: (first virtual force,
+    rating N) rows), as np.allclose tells ``f`` from the same forces pulled in to their circles."""
     for row in range(circles.shape[0]):
         j, rating = int(circles[row, 0]), circles[row, 1]
         size = math.hypot(f[j], f[j + 1])

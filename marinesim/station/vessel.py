@@ -173,11 +173,11 @@ class Station:
         if self.dp is not None:
             self.thrusters.forget()
             env = self.environment
-            current = np.asarray(self.d, float) @ np.array([*_in_body(env.current(0.0), psi), 0.0])
-            load = env.wind_load(0.0, psi, 0.0, 0.0) + env.drift(0.0, psi) + current
+            current = np.asarray(self.d, float) @ np.array([*_in_body(*env.current(0.0), psi), 0.0])
+            wind = env.wind_load(0.0, psi, 0.0, 0.0)
+            load = wind + env.drift(0.0, psi) + current
             if self.moorings is not None:
                 load = load + self.moorings.force(0.0, 0.0, psi)
-            wind = env.wind_load(0.0, psi, 0.0, 0.0)
             turn = rotation(psi)
             extra[BIAS] = turn @ load
             extra[INTEGRAL] = turn @ (load - wind) / self.dp.ki
@@ -378,8 +378,7 @@ def _runge_kutta(y0: np.ndarray, h: float, thrusts: np.ndarray, current: np.ndar
     def rates(stage: int, y: np.ndarray) -> np.ndarray:
         north, east, psi, u, v, r = y[0], y[1], y[2], y[3], y[4], y[5]
         c, s = math.cos(psi), math.sin(psi)
-        u_c = current[stage, 0] * c + current[stage, 1] * s
-        v_c = current[stage, 1] * c - current[stage, 0] * s
+        u_c, v_c = _in_body(current[stage, 0], current[stage, 1], psi)
         relative = (u - u_c, v - v_c, r)  # through the water
         load = (0.0, 0.0, 0.0)
         if with_wind and not wind[stage, 0] <= 0.0:  # as Weather.wind_load: a NaN wind gives a NaN load
@@ -409,10 +408,11 @@ def _runge_kutta(y0: np.ndarray, h: float, thrusts: np.ndarray, current: np.ndar
     return y0 + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4), k1
 
 
-def _in_body(current: tuple[float, float], psi: float) -> tuple[float, float]:
-    """A current (north, east m/s) in body axes on heading ``psi`` (rad): (u_c, v_c) m/s."""
+@compiled
+def _in_body(north: float, east: float, psi: float) -> tuple[float, float]:
+    """A current (``north``, ``east`` m/s) in body axes on heading ``psi`` (rad): (u_c, v_c) m/s."""
     c, s = math.cos(psi), math.sin(psi)
-    return current[0] * c + current[1] * s, current[1] * c - current[0] * s
+    return north * c + east * s, east * c - north * s
 
 
 def _unwrapped(course: float, near: float) -> float:
